@@ -1,0 +1,292 @@
+#include "CurvatureFrames.h"
+
+#include "Parallel.h"
+
+#include <Eigen/Dense>
+
+#include <cmath>
+#include <stdexcept>
+#include <vector>
+
+namespace quadcover
+{
+
+Eigen::MatrixX3d computeFaceNormals(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F,
+  const MeshTopology& topo, int* degenerate)
+{
+  const int nf = static_cast<int>(F.rows());
+  Eigen::MatrixX3d raw(nf, 3); // cross products: direction and twice the area
+  Eigen::VectorXd area2(nf);
+  double maxArea2 = 0.0;
+  for (int f = 0; f < nf; ++f)
+  {
+    const Eigen::Vector3d a = V.row(F(f, 0)), b = V.row(F(f, 1)), c = V.row(F(f, 2));
+    raw.row(f) = (b - a).cross(c - a).transpose();
+    area2[f] = raw.row(f).norm();
+    maxArea2 = std::max(maxArea2, area2[f]);
+  }
+  // Relative threshold: a triangle below 1e-14 of the largest is degenerate in double precision.
+  const double tiny = maxArea2 * 1e-14;
+  Eigen::MatrixX3d N(nf, 3);
+  int count = 0;
+  for (int f = 0; f < nf; ++f)
+  {
+    if (area2[f] > tiny && area2[f] > 0.0)
+    {
+      N.row(f) = raw.row(f) / area2[f];
+      continue;
+    }
+    ++count;
+    Eigen::RowVector3d sum = Eigen::RowVector3d::Zero();
+    for (int k = 0; k < 3; ++k)
+    {
+      const int v = F(f, k);
+      for (int i = topo.ringOffsets[v]; i < topo.ringOffsets[v + 1]; ++i)
+      {
+        const int g = topo.ringFaces[i];
+        if (area2[g] > tiny)
+        {
+          sum += raw.row(g);
+        }
+      }
+    }
+    const double len = sum.norm();
+    N.row(f) = len > 0.0 ? (sum / len).eval() : Eigen::RowVector3d::Zero();
+  }
+  if (degenerate)
+  {
+    *degenerate = count;
+  }
+  return N;
+}
+
+double meanEdgeLength(const Eigen::MatrixX3d& V, const MeshTopology& topo)
+{
+  const int ne = topo.numEdges();
+  if (ne == 0)
+  {
+    return 0.0;
+  }
+  double sum = 0.0;
+  for (int e = 0; e < ne; ++e)
+  {
+    sum += (V.row(topo.edges(e, 0)) - V.row(topo.edges(e, 1))).norm();
+  }
+  return sum / ne;
+}
+
+namespace
+{
+using Tensor = Eigen::Matrix<double, 6, 1>; // xx yy zz xy xz yz
+
+Tensor outer(const Eigen::Vector3d& e, double w)
+{
+  Tensor t;
+  t << w * e.x() * e.x(), w * e.y() * e.y(), w * e.z() * e.z(), w * e.x() * e.y(),
+    w * e.x() * e.z(), w * e.y() * e.z();
+  return t;
+}
+
+double quadratic(const Tensor& t, const Eigen::Vector3d& a, const Eigen::Vector3d& b)
+{
+  return t[0] * a.x() * b.x() + t[1] * a.y() * b.y() + t[2] * a.z() * b.z() +
+    t[3] * (a.x() * b.y() + a.y() * b.x()) + t[4] * (a.x() * b.z() + a.z() * b.x()) +
+    t[5] * (a.y() * b.z() + a.z() * b.y());
+}
+}
+
+CurvatureField computeCurvatureField(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F,
+  const MeshTopology& topo, const CurvatureOptions& options)
+{
+  const int nf = static_cast<int>(F.rows());
+  if (topo.numFaces != nf || topo.numVertices != V.rows())
+  {
+    throw std::invalid_argument("computeCurvatureField: topology does not match the mesh");
+  }
+  if (!V.allFinite())
+  {
+    throw std::invalid_argument("computeCurvatureField: non-finite point coordinates");
+  }
+  if (!(options.radius >= 0.0) || !std::isfinite(options.radius))
+  {
+    throw std::invalid_argument("computeCurvatureField: radius must be finite and >= 0");
+  }
+
+  CurvatureField out;
+  out.normals = computeFaceNormals(V, F, topo, &out.degenerateFaces);
+  out.meanEdgeLength = meanEdgeLength(V, topo);
+  out.radius = options.radius * out.meanEdgeLength;
+  const Eigen::MatrixX3d& N = out.normals;
+
+  // Per-edge contribution beta |e| e e^T, beta > 0 where the edge is convex.
+  const int ne = topo.numEdges();
+  std::vector<Tensor> edgeTensor(ne, Tensor::Zero());
+  for (int e = 0; e < ne; ++e)
+  {
+    if (topo.edgeFaceCount[e] != 2)
+    {
+      continue;
+    }
+    const int f0 = topo.edgeFaces(e, 0), f1 = topo.edgeFaces(e, 1);
+    const Eigen::Vector3d n0 = N.row(f0), n1 = N.row(f1);
+    if (n0.squaredNorm() == 0.0 || n1.squaredNorm() == 0.0)
+    {
+      continue;
+    }
+    // Orient the edge as it runs in f0.
+    const int k0 = MeshTopology::cornerOf(F, f0, topo.edges(e, 0));
+    int from = topo.edges(e, 0), to = topo.edges(e, 1);
+    if (F(f0, (k0 + 1) % 3) != to)
+    {
+      std::swap(from, to);
+    }
+    Eigen::Vector3d d = V.row(to) - V.row(from);
+    const double len = d.norm();
+    if (len == 0.0)
+    {
+      continue;
+    }
+    d /= len;
+    const double beta = std::atan2(n0.cross(n1).dot(d), n0.dot(n1));
+    edgeTensor[e] = outer(d, beta * len);
+  }
+
+  // Per-face half sums and areas, centroids.
+  std::vector<Tensor> faceTensor(nf);
+  Eigen::VectorXd area(nf);
+  Eigen::MatrixX3d centroid(nf, 3);
+  for (int f = 0; f < nf; ++f)
+  {
+    const Eigen::Vector3d a = V.row(F(f, 0)), b = V.row(F(f, 1)), c = V.row(F(f, 2));
+    area[f] = 0.5 * (b - a).cross(c - a).norm();
+    centroid.row(f) = ((a + b + c) / 3.0).transpose();
+    Tensor t = Tensor::Zero();
+    for (int k = 0; k < 3; ++k)
+    {
+      const int e = topo.faceEdges(f, k);
+      if (e >= 0)
+      {
+        t += 0.5 * edgeTensor[e];
+      }
+    }
+    faceTensor[f] = t;
+  }
+
+  out.curvatures.resize(nf, 2);
+  out.direction1.resize(nf, 3);
+  out.direction2.resize(nf, 3);
+  out.frameU.resize(nf, 3);
+  out.frameV.resize(nf, 3);
+  out.weight.resize(nf);
+  const double r2 = out.radius * out.radius;
+  const int threads = options.numThreads > 0 ? options.numThreads : defaultThreadCount();
+
+  parallelFor(nf, threads, [&](int begin, int end, int) {
+    std::vector<int> stamp(nf, -1); // per-block visit marks
+    std::vector<int> queue;
+    for (int f = begin; f < end; ++f)
+    {
+      // Breadth-first over edge neighbours whose centroid lies within the radius.
+      Tensor H = faceTensor[f];
+      double A = area[f];
+      queue.clear();
+      queue.push_back(f);
+      stamp[f] = f;
+      const Eigen::RowVector3d cf = centroid.row(f);
+      for (size_t q = 0; q < queue.size(); ++q)
+      {
+        const int g = queue[q];
+        for (int k = 0; k < 3; ++k)
+        {
+          const int h = topo.faceNeighbors(g, k);
+          if (h < 0 || stamp[h] == f)
+          {
+            continue;
+          }
+          stamp[h] = f;
+          if ((centroid.row(h) - cf).squaredNorm() <= r2)
+          {
+            H += faceTensor[h];
+            A += area[h];
+            queue.push_back(h);
+          }
+        }
+      }
+      if (A > 0.0)
+      {
+        H /= A;
+      }
+
+      const Eigen::Vector3d n = N.row(f);
+      Eigen::Vector3d t1 = V.row(F(f, 1)) - V.row(F(f, 0));
+      t1 -= t1.dot(n) * n;
+      if (t1.squaredNorm() == 0.0 || n.squaredNorm() == 0.0)
+      {
+        // No tangent plane: nothing sensible to say about this triangle.
+        out.curvatures.row(f).setZero();
+        out.direction1.row(f).setZero();
+        out.direction2.row(f).setZero();
+        out.frameU.row(f).setZero();
+        out.frameV.row(f).setZero();
+        out.weight[f] = 0.0;
+        continue;
+      }
+      t1.normalize();
+      const Eigen::Vector3d t2 = n.cross(t1);
+      // The edge tensor's value along t is the curvature across t: rotate by 90 degrees.
+      const double h11 = quadratic(H, t1, t1), h12 = quadratic(H, t1, t2),
+                   h22 = quadratic(H, t2, t2);
+      const double a = h22, b = -h12, c = h11; // curvature tensor [[a b][b c]] in (t1, t2)
+      const double mean = 0.5 * (a + c);
+      const double dev = std::sqrt(0.25 * (a - c) * (a - c) + b * b);
+      const double k1 = mean + dev, k2 = mean - dev;
+      const double theta = 0.5 * std::atan2(2.0 * b, a - c);
+      const Eigen::Vector3d d1 = std::cos(theta) * t1 + std::sin(theta) * t2;
+      const Eigen::Vector3d d2 = n.cross(d1);
+      out.curvatures(f, 0) = k1;
+      out.curvatures(f, 1) = k2;
+      out.direction1.row(f) = d1.transpose();
+      out.direction2.row(f) = d2.transpose();
+      out.frameU.row(f) = d2.transpose();
+      out.frameV.row(f) = n.cross(d2).transpose();
+      const double norm = std::sqrt(k1 * k1 + k2 * k2);
+      out.weight[f] = norm > 0.0 ? std::abs(k1 - k2) / norm : 0.0;
+    }
+  });
+  return out;
+}
+
+int applyInputFrames(CurvatureField& field, const Eigen::MatrixX3d& frameU)
+{
+  const int nf = static_cast<int>(field.normals.rows());
+  if (frameU.rows() != nf)
+  {
+    throw std::invalid_argument("applyInputFrames: one frame vector per triangle expected");
+  }
+  int kept = 0;
+  for (int f = 0; f < nf; ++f)
+  {
+    const Eigen::Vector3d n = field.normals.row(f);
+    Eigen::Vector3d u = frameU.row(f);
+    if (u.allFinite())
+    {
+      u -= u.dot(n) * n;
+    }
+    const double len = u.allFinite() ? u.norm() : 0.0;
+    // Below 1e-9 of the input length (or of 1) the projection carries no direction.
+    const double inputLen = frameU.row(f).allFinite() ? frameU.row(f).norm() : 0.0;
+    if (len > 1e-9 * std::max(1e-300, inputLen) && len > 0.0)
+    {
+      u /= len;
+      field.frameU.row(f) = u.transpose();
+      field.frameV.row(f) = n.cross(u).transpose();
+    }
+    else
+    {
+      ++kept;
+    }
+  }
+  return kept;
+}
+
+}

@@ -1,0 +1,75 @@
+// CurvatureFrames.h: per-triangle curvature tensors and the guidance frame field (stage 1).
+#ifndef quadcover_CurvatureFrames_h
+#define quadcover_CurvatureFrames_h
+
+#include "MeshTopology.h"
+
+#include <Eigen/Core>
+
+namespace quadcover
+{
+
+struct CurvatureOptions
+{
+  /// Radius of the averaging neighbourhood in multiples of the mean edge length. 0 uses each
+  /// triangle's own three edges only.
+  double radius = 2.0;
+  /// Worker threads (0: defaultThreadCount()). Results do not depend on it.
+  int numThreads = 0;
+};
+
+/// Per-triangle curvature and frames. Curvatures are positive where the surface bends away from
+/// its normal (a sphere with outward normals has +1/R).
+struct CurvatureField
+{
+  Eigen::MatrixX3d normals;      ///< #F x 3 unit triangle normals
+  Eigen::MatrixX2d curvatures;   ///< #F x 2 (kappa1, kappa2), kappa1 >= kappa2
+  Eigen::MatrixX3d direction1;   ///< #F x 3 unit, in the triangle's plane, for kappa1
+  Eigen::MatrixX3d direction2;   ///< #F x 3 unit, normal x direction1, for kappa2
+  Eigen::MatrixX3d frameU;       ///< #F x 3 guidance vector (direction2)
+  Eigen::MatrixX3d frameV;       ///< #F x 3 normal x frameU
+  Eigen::VectorXd weight;        ///< #F omega = |k1-k2| / sqrt(k1^2+k2^2), 0 where both vanish
+  double meanEdgeLength = 0.0;
+  double radius = 0.0;           ///< the neighbourhood radius used, world units
+  int degenerateFaces = 0;       ///< zero-area triangles (they take the neighbourhood's normal)
+};
+
+/// Unit normals of the triangles; a zero-area triangle gets the normalized sum of its
+/// neighbours' area-weighted normals (zero if they have none).
+/// @param[in] V #V x 3, @param[in] F #F x 3, @param[in] topo buildTopology(F, #V)
+/// @param[out] degenerate number of zero-area triangles (optional)
+Eigen::MatrixX3d computeFaceNormals(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F,
+  const MeshTopology& topo, int* degenerate = nullptr);
+
+/// Mean length of the mesh's edges.
+double meanEdgeLength(const Eigen::MatrixX3d& V, const MeshTopology& topo);
+
+/**
+ * Principal curvatures and directions per triangle from the normal-cycle curvature measure
+ * (Cohen-Steiner and Morvan 2003): every interior edge e contributes beta(e) |e| e e^T, beta its
+ * signed dihedral angle; a triangle's tensor is the sum over the triangles reachable from it
+ * through edges whose centroids lie within the radius, divided by their area (each edge counted
+ * half from each side). The tensor is projected into the triangle's plane; its eigenvector of the
+ * larger eigenvalue is the direction of the smaller curvature.
+ * Non-manifold edges and edges of zero-area triangles contribute nothing.
+ * @param[in] V    #V x 3 finite positions
+ * @param[in] F    #F x 3 triangles, consistently oriented
+ * @param[in] topo buildTopology(F, #V)
+ * @throws std::invalid_argument on non-finite positions or sizes that do not match
+ */
+CurvatureField computeCurvatureField(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F,
+  const MeshTopology& topo, const CurvatureOptions& options = CurvatureOptions());
+
+/**
+ * Replaces the frames of a curvature field by a user frame field: each vector is projected into
+ * its triangle's plane and normalized, and frameV = normal x frameU. Where the projection
+ * vanishes (the vector was normal to the triangle, zero, or not finite), the curvature frame is
+ * kept. Curvatures, directions and weights are unchanged.
+ * @param[in] frameU #F x 3 user vectors
+ * @return the number of triangles where the curvature frame was kept
+ */
+int applyInputFrames(CurvatureField& field, const Eigen::MatrixX3d& frameU);
+
+}
+
+#endif

@@ -1,0 +1,92 @@
+// MeshTopology.h: connectivity of a triangle mesh, the combinatorial base of every stage.
+#ifndef quadcover_MeshTopology_h
+#define quadcover_MeshTopology_h
+
+#include <Eigen/Core>
+
+#include <string>
+#include <vector>
+
+namespace quadcover
+{
+
+/// Topological figures of one connected component (vertices joined by triangle edges).
+struct ComponentInfo
+{
+  int numVertices = 0;
+  int numEdges = 0;
+  int numFaces = 0;
+  int numBoundaryLoops = 0;
+  int eulerCharacteristic = 0; ///< V - E + F
+  bool manifold = true;        ///< no non-manifold edge or vertex
+  bool oriented = true;        ///< every interior edge is traversed once in each direction
+  /// (2 - chi - b) / 2 for a manifold, consistently oriented component; -1 otherwise.
+  int genus = -1;
+};
+
+/**
+ * Edges, adjacency, ordered one-rings, boundary loops and components of a triangle mesh.
+ *
+ * Conventions (used by every later stage):
+ * - edge k of face f joins F(f,k) and F(f,(k+1)%3);
+ * - edges(e,0) < edges(e,1);
+ * - a one-ring lists the faces around a vertex counterclockwise (seen from the side the
+ *   triangles' orientation points to); for a boundary vertex it starts at the face whose edge
+ *   from v to the face's next corner is a boundary edge, and ends at the other boundary face.
+ */
+struct MeshTopology
+{
+  int numVertices = 0;
+  int numFaces = 0;
+
+  Eigen::MatrixX2i edges;         ///< #E x 2 vertex indices, sorted
+  Eigen::MatrixX3i faceEdges;     ///< #F x 3 edge index of edge k
+  Eigen::MatrixX3i faceNeighbors; ///< #F x 3 face across edge k; -1 on boundary/non-manifold
+  Eigen::MatrixX2i edgeFaces;     ///< #E x 2 the first two faces on the edge (-1 if absent)
+  Eigen::VectorXi edgeFaceCount;  ///< #E number of faces on the edge
+
+  std::vector<int> ringOffsets; ///< #V+1, CSR offsets into ringFaces
+  std::vector<int> ringFaces;   ///< faces around each vertex, counterclockwise
+  std::vector<char> boundaryVertex; ///< #V, 1 on a boundary loop
+
+  std::vector<std::vector<int>> boundaryLoops; ///< vertex loops, following face orientation
+  Eigen::VectorXi vertexComponent; ///< #V component index, -1 for unreferenced vertices
+  Eigen::VectorXi faceComponent;   ///< #F component index
+  std::vector<ComponentInfo> components;
+
+  std::vector<int> degenerateFaces;     ///< faces that repeat a vertex index
+  std::vector<int> nonManifoldEdges;    ///< edges with more than two faces
+  std::vector<int> nonManifoldVertices; ///< vertices whose faces do not form one fan or disk
+  std::vector<int> misorientedEdges;    ///< interior edges traversed twice in the same direction
+  std::vector<int> unreferencedVertices;
+
+  int numEdges() const { return static_cast<int>(edges.rows()); }
+  int numComponents() const { return static_cast<int>(components.size()); }
+  bool isManifold() const
+  {
+    return degenerateFaces.empty() && nonManifoldEdges.empty() && nonManifoldVertices.empty();
+  }
+  bool isOriented() const { return misorientedEdges.empty(); }
+  bool isClosed() const { return boundaryLoops.empty(); }
+  /// Euler characteristic of the whole mesh (unreferenced vertices not counted).
+  int eulerCharacteristic() const;
+  /// Number of faces around v.
+  int valence(int v) const { return ringOffsets[v + 1] - ringOffsets[v]; }
+  /// Position (0..2) of vertex v in face f, -1 if absent.
+  static int cornerOf(const Eigen::MatrixX3i& F, int f, int v)
+  {
+    return F(f, 0) == v ? 0 : (F(f, 1) == v ? 1 : (F(f, 2) == v ? 2 : -1));
+  }
+  /// One line that names what is wrong (non-manifold, misoriented, degenerate), "" if nothing.
+  std::string describeDefects() const;
+};
+
+/// Builds the connectivity of a triangle mesh.
+/// @param[in] F           #F x 3 vertex indices
+/// @param[in] numVertices number of vertices (indices must lie in [0, numVertices))
+/// @throws std::invalid_argument if an index is out of range
+MeshTopology buildTopology(const Eigen::MatrixX3i& F, int numVertices);
+
+}
+
+#endif

@@ -1,0 +1,62 @@
+// Parallel.h: a deterministic parallel loop for the core (no VTK, no OpenMP).
+#ifndef quadcover_Parallel_h
+#define quadcover_Parallel_h
+
+#include <algorithm>
+#include <cstdlib>
+#include <thread>
+#include <vector>
+
+namespace quadcover
+{
+/// Number of worker threads the core uses: QUADCOVER_NUM_THREADS if set (>= 1), else the
+/// hardware concurrency.
+inline int defaultThreadCount()
+{
+  if (const char* env = std::getenv("QUADCOVER_NUM_THREADS"))
+  {
+    const int n = std::atoi(env);
+    if (n >= 1)
+    {
+      return n;
+    }
+  }
+  const unsigned hw = std::thread::hardware_concurrency();
+  return hw == 0 ? 1 : static_cast<int>(hw);
+}
+
+/// Calls body(begin, end, threadIndex) on contiguous blocks covering [0, n). Each index is
+/// visited exactly once; as long as body writes only to its own indices the result does not
+/// depend on the number of threads.
+template <typename Body>
+void parallelFor(int n, int numThreads, Body&& body)
+{
+  if (numThreads <= 0)
+  {
+    numThreads = defaultThreadCount();
+  }
+  const int minBlock = 2048;
+  numThreads = std::max(1, std::min(numThreads, (n + minBlock - 1) / minBlock));
+  if (numThreads == 1)
+  {
+    body(0, n, 0);
+    return;
+  }
+  std::vector<std::thread> workers;
+  workers.reserve(numThreads - 1);
+  const int block = (n + numThreads - 1) / numThreads;
+  for (int t = 1; t < numThreads; ++t)
+  {
+    const int b = std::min(n, t * block);
+    const int e = std::min(n, b + block);
+    workers.emplace_back([&body, b, e, t]() { body(b, e, t); });
+  }
+  body(0, std::min(n, block), 0);
+  for (auto& w : workers)
+  {
+    w.join();
+  }
+}
+}
+
+#endif

@@ -1,0 +1,51 @@
+// Surfaces.h: surfaces the project generates for its tests, benchmarks and Data/, with their
+// analytic principal curvatures where they are known.
+#ifndef quadcover_Surfaces_h
+#define quadcover_Surfaces_h
+
+#include <Eigen/Core>
+
+#include <string>
+
+namespace quadcover
+{
+
+/// A generated triangle surface. kappa and direction1 are per vertex, analytic values of the
+/// exact (noise-free) surface at the vertex's parameters; empty when unknown.
+struct Surface
+{
+  std::string name;
+  Eigen::MatrixX3d V;          ///< #V x 3
+  Eigen::MatrixX3i F;          ///< #F x 3, counterclockwise seen from outside
+  Eigen::MatrixX2d kappa;      ///< #V x 2 (kappa1 >= kappa2), sign as in CurvatureField
+  Eigen::MatrixX3d direction1; ///< #V x 3 unit direction of kappa1
+};
+
+/// Torus around the z axis, radii R > r, nu segments around z, nv around the tube.
+Surface makeTorus(double R, double r, int nu, int nv);
+
+/// Sphere from a subdivided icosahedron (20 * 4^level triangles).
+Surface makeIcosphere(double radius, int level);
+
+/// Open cylinder around the z axis, height h centred at 0: two boundary loops.
+Surface makeCylinder(double r, double h, int nAround, int nAlong);
+
+/// Saddle z = (x^2 - y^2) / (2 a) over [-s, s]^2 with n x n quads (one boundary loop). Its
+/// principal curvatures at the origin are +-1/a.
+Surface makeSaddle(double a, double s, int n);
+
+/// Tube of radius `tube` around the (p, q) torus knot with radii R, rKnot. With jitter > 0 the
+/// parameter grid is displaced at random (jitter in cells, < 0.5) and every quad split along a
+/// random diagonal; with noise > 0 every vertex moves along the tube's normal by a random amount
+/// up to noise * tube. Deterministic for a given seed.
+Surface makeKnotTube(int p, int q, double R, double rKnot, double tube, int nAlong,
+  int nAround, double jitter, double noise, unsigned seed);
+
+/// Axis-aligned cube [-1,1]^3 with edges rounded at radius `round` (0 < round < 1): a closed
+/// surface with flat faces, cylindrical edges and spherical corners, made by pushing an n x n
+/// grid on each face of the cube onto the rounded surface.
+Surface makeRoundedCube(double round, int n);
+
+}
+
+#endif

@@ -1,0 +1,174 @@
+// Connectivity invariants on generated surfaces and on hand-made defects.
+#include "MeshTopology.h"
+#include "Surfaces.h"
+#include "TestSurfaces.h"
+
+#include <gtest/gtest.h>
+
+#include <set>
+
+using namespace quadcover;
+
+namespace
+{
+struct Expect
+{
+  const char* name;
+  int chi;
+  int genus;
+  int loops;
+};
+}
+
+TEST(MeshTopology, EulerGenusAndBoundaryOfGeneratedSurfaces)
+{
+  const Expect expect[] = { { "torus", 0, 1, 0 }, { "sphere", 2, 0, 0 }, { "knot", 0, 1, 0 },
+    { "cylinder", 0, 0, 2 }, { "saddle", 1, 0, 1 }, { "roundedcube", 2, 0, 0 } };
+  for (const Expect& e : expect)
+  {
+    const Surface s = testSurface(e.name);
+    const MeshTopology T = buildTopology(s.F, static_cast<int>(s.V.rows()));
+    SCOPED_TRACE(e.name);
+    EXPECT_TRUE(T.isManifold()) << T.describeDefects();
+    EXPECT_TRUE(T.isOriented());
+    ASSERT_EQ(T.numComponents(), 1);
+    EXPECT_EQ(T.eulerCharacteristic(), e.chi);
+    EXPECT_EQ(T.components[0].genus, e.genus);
+    EXPECT_EQ(static_cast<int>(T.boundaryLoops.size()), e.loops);
+    EXPECT_TRUE(T.unreferencedVertices.empty());
+    // Every face-edge incidence is consistent with the edge list.
+    for (int f = 0; f < T.numFaces; ++f)
+    {
+      for (int k = 0; k < 3; ++k)
+      {
+        const int e = T.faceEdges(f, k);
+        ASSERT_GE(e, 0);
+        const std::set<int> a = { s.F(f, k), s.F(f, (k + 1) % 3) };
+        const std::set<int> b = { T.edges(e, 0), T.edges(e, 1) };
+        EXPECT_EQ(a, b);
+        const int g = T.faceNeighbors(f, k);
+        if (g >= 0)
+        {
+          // Symmetric adjacency.
+          bool back = false;
+          for (int kk = 0; kk < 3; ++kk)
+          {
+            back = back || T.faceNeighbors(g, kk) == f;
+          }
+          EXPECT_TRUE(back);
+        }
+      }
+    }
+  }
+}
+
+TEST(MeshTopology, OneRingsAreOrderedCounterclockwise)
+{
+  for (const char* name : { "sphere", "cylinder", "knot" })
+  {
+    const Surface s = testSurface(name);
+    const MeshTopology T = buildTopology(s.F, static_cast<int>(s.V.rows()));
+    for (int v = 0; v < T.numVertices; ++v)
+    {
+      const int b = T.ringOffsets[v], n = T.valence(v);
+      ASSERT_GT(n, 0);
+      // Consecutive faces share the edge from v to the previous face's last corner.
+      for (int i = 0; i + 1 < n; ++i)
+      {
+        const int f = T.ringFaces[b + i], g = T.ringFaces[b + i + 1];
+        const int k = MeshTopology::cornerOf(s.F, f, v);
+        EXPECT_EQ(T.faceNeighbors(f, (k + 2) % 3), g) << name << " vertex " << v;
+      }
+      if (!T.boundaryVertex[v])
+      {
+        const int f = T.ringFaces[b + n - 1];
+        const int k = MeshTopology::cornerOf(s.F, f, v);
+        EXPECT_EQ(T.faceNeighbors(f, (k + 2) % 3), T.ringFaces[b]);
+      }
+      else
+      {
+        const int f = T.ringFaces[b];
+        EXPECT_EQ(T.faceNeighbors(f, MeshTopology::cornerOf(s.F, f, v)), -1);
+      }
+    }
+  }
+}
+
+TEST(MeshTopology, BoundaryLoopsFollowTheOrientation)
+{
+  const Surface s = testSurface("cylinder");
+  const MeshTopology T = buildTopology(s.F, static_cast<int>(s.V.rows()));
+  ASSERT_EQ(T.boundaryLoops.size(), 2u);
+  for (const auto& loop : T.boundaryLoops)
+  {
+    EXPECT_EQ(loop.size(), 48u); // nAround of the test cylinder
+    // All vertices of a loop lie at one height.
+    for (int v : loop)
+    {
+      EXPECT_NEAR(s.V(v, 2), s.V(loop[0], 2), 1e-12);
+      EXPECT_TRUE(T.boundaryVertex[v]);
+    }
+  }
+}
+
+TEST(MeshTopology, SeveralComponents)
+{
+  const Surface a = testSurface("sphere");
+  const Surface b = testSurface("torus");
+  Eigen::MatrixX3i F(a.F.rows() + b.F.rows(), 3);
+  F << a.F, (b.F.array() + static_cast<int>(a.V.rows())).matrix();
+  const MeshTopology T = buildTopology(F, static_cast<int>(a.V.rows() + b.V.rows()));
+  ASSERT_EQ(T.numComponents(), 2);
+  EXPECT_EQ(T.eulerCharacteristic(), 2);
+  EXPECT_EQ(T.components[0].genus, 0);
+  EXPECT_EQ(T.components[1].genus, 1);
+  EXPECT_EQ(T.faceComponent[0], 0);
+  EXPECT_EQ(T.faceComponent[F.rows() - 1], 1);
+}
+
+TEST(MeshTopology, DetectsNonManifoldEdge)
+{
+  // Three triangles on one edge (0,1).
+  Eigen::MatrixX3i F(3, 3);
+  F << 0, 1, 2, 1, 0, 3, 0, 1, 4;
+  const MeshTopology T = buildTopology(F, 5);
+  EXPECT_FALSE(T.isManifold());
+  EXPECT_EQ(T.nonManifoldEdges.size(), 1u);
+  EXPECT_NE(T.describeDefects().find("non-manifold edges"), std::string::npos);
+}
+
+TEST(MeshTopology, DetectsBowtieVertex)
+{
+  // Two triangles touching only at vertex 0.
+  Eigen::MatrixX3i F(2, 3);
+  F << 0, 1, 2, 0, 3, 4;
+  const MeshTopology T = buildTopology(F, 5);
+  EXPECT_EQ(T.nonManifoldVertices, std::vector<int>{ 0 });
+  EXPECT_EQ(T.numComponents(), 1);
+}
+
+TEST(MeshTopology, DetectsMisorientedAndDegenerateTriangles)
+{
+  Eigen::MatrixX3i F(2, 3);
+  F << 0, 1, 2, 0, 1, 3; // both traverse 0 -> 1
+  EXPECT_EQ(buildTopology(F, 4).misorientedEdges.size(), 1u);
+  Eigen::MatrixX3i G(1, 3);
+  G << 0, 0, 1;
+  const MeshTopology T = buildTopology(G, 2);
+  EXPECT_EQ(T.degenerateFaces.size(), 1u);
+  EXPECT_FALSE(T.isManifold());
+}
+
+TEST(MeshTopology, RejectsOutOfRangeIndices)
+{
+  Eigen::MatrixX3i F(1, 3);
+  F << 0, 1, 7;
+  EXPECT_THROW(buildTopology(F, 3), std::invalid_argument);
+}
+
+TEST(MeshTopology, EmptyMesh)
+{
+  const MeshTopology T = buildTopology(Eigen::MatrixX3i(0, 3), 0);
+  EXPECT_EQ(T.numComponents(), 0);
+  EXPECT_EQ(T.eulerCharacteristic(), 0);
+}
