@@ -1,0 +1,87 @@
+// vtkQuadCoverEigen.h (private): copies between vtkPolyData/vtkDataArray and the core's Eigen
+// matrices. Not wrapped: Eigen types must stay out of the public, wrapped headers.
+#ifndef vtkQuadCoverEigen_h
+#define vtkQuadCoverEigen_h
+
+#include "vtkCellArray.h"
+#include "vtkDataArray.h"
+#include "vtkDoubleArray.h"
+#include "vtkIdList.h"
+#include "vtkNew.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkSmartPointer.h"
+
+#include <Eigen/Core>
+
+#include <string>
+
+namespace vtkQuadCoverEigen
+{
+/// #V x 3 point coordinates.
+inline Eigen::MatrixX3d Points(vtkPolyData* pd)
+{
+  const vtkIdType n = pd->GetNumberOfPoints();
+  Eigen::MatrixX3d V(n, 3);
+  double p[3];
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    pd->GetPoint(i, p);
+    V.row(i) << p[0], p[1], p[2];
+  }
+  return V;
+}
+
+/// #F x 3 from the polys of a polydata holding only triangles (checked by the caller).
+inline Eigen::MatrixX3i Triangles(vtkPolyData* pd)
+{
+  vtkCellArray* polys = pd->GetPolys();
+  Eigen::MatrixX3i F(polys->GetNumberOfCells(), 3);
+  vtkNew<vtkIdList> ids;
+  vtkIdType f = 0;
+  for (polys->InitTraversal(); polys->GetNextCell(ids);)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      F(f, k) = static_cast<int>(ids->GetId(k));
+    }
+    ++f;
+  }
+  return F;
+}
+
+/// A new double array named `name` with the rows of M as tuples.
+template <typename Derived>
+vtkSmartPointer<vtkDoubleArray> ToArray(const Eigen::MatrixBase<Derived>& M, const char* name)
+{
+  auto a = vtkSmartPointer<vtkDoubleArray>::New();
+  a->SetName(name);
+  a->SetNumberOfComponents(static_cast<int>(M.cols()));
+  a->SetNumberOfTuples(M.rows());
+  for (Eigen::Index i = 0; i < M.rows(); ++i)
+  {
+    for (Eigen::Index j = 0; j < M.cols(); ++j)
+    {
+      a->SetTypedComponent(i, static_cast<int>(j), M(i, j));
+    }
+  }
+  return a;
+}
+
+/// #tuples x 3 from a 3-component array.
+inline Eigen::MatrixX3d FromArray3(vtkDataArray* a)
+{
+  Eigen::MatrixX3d M(a->GetNumberOfTuples(), 3);
+  for (vtkIdType i = 0; i < a->GetNumberOfTuples(); ++i)
+  {
+    for (int j = 0; j < 3; ++j)
+    {
+      M(i, j) = a->GetComponent(i, j);
+    }
+  }
+  return M;
+}
+}
+
+#endif
+// VTK-HeaderTest-Exclude: vtkQuadCoverEigen.h
