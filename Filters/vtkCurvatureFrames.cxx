@@ -55,13 +55,21 @@ int vtkCurvatureFrames::RequestData(
     const Eigen::MatrixX3i F = vtkQuadCoverEigen::Triangles(surface);
     const quadcover::MeshTopology topo =
       quadcover::buildTopology(F, static_cast<int>(V.rows()));
-    const std::string defects = topo.describeDefects();
-    if (!defects.empty())
+    // Per-triangle curvature needs manifold edges and one orientation; a vertex where fans of
+    // triangles touch (a bowtie) does not disturb it, so it is only reported.
+    if (!topo.degenerateFaces.empty() || !topo.nonManifoldEdges.empty() ||
+      !topo.misorientedEdges.empty())
     {
-      vtkErrorMacro(<< "Cannot estimate curvature: the surface has " << defects
+      vtkErrorMacro(<< "Cannot estimate curvature: the surface has " << topo.describeDefects()
                     << "; merge duplicate points, remove non-manifold parts and orient the "
                        "triangles consistently first.");
       return 0;
+    }
+    if (!topo.nonManifoldVertices.empty())
+    {
+      vtkWarningMacro(<< topo.nonManifoldVertices.size()
+                      << " non-manifold vertices (fans of triangles touching at one vertex); "
+                         "later stages need them split.");
     }
     this->UpdateProgress(0.2);
     if (this->GetAbortExecute())

@@ -27,7 +27,8 @@
  * neighbours. Merge duplicate points and orient the surface first (vtkCleanPolyData,
  * vtkPolyDataNormals with ConsistencyOn); the quadcover command line does both.
  * Vertices and lines are dropped with a warning. Zero-area triangles are accepted: they take
- * their neighbourhood's normal.
+ * their neighbourhood's normal. Non-manifold vertices (fans touching at one vertex) only give a
+ * warning: they do not disturb a per-triangle estimate.
  *
  * @warning The estimate is cell-centred; vtkCurvatures gives per-vertex Gaussian/mean values.
  * @sa vtkFrameSmoother vtkCurvatures

@@ -47,6 +47,7 @@ struct Repairs
   long long removedCells = 0;       ///< degenerate or non-surface cells removed
   long long triangulatedPolygons = 0; ///< polygons with more than three sides, and strips
   long long flippedTriangles = 0;   ///< triangles reoriented to agree with their neighbours
+  long long splitVertices = 0;      ///< copies added where fans touched at one vertex
 };
 
 /// True when `path` ends in an extension ReadSurface understands (.obj .ply .stl .vtp .vtk).
@@ -61,7 +62,8 @@ vtkSmartPointer<vtkPolyData> ReadSurface(const std::string& path, std::string& e
 /**
  * The command line's documented repairs: merge exactly coincident points (vtkCleanPolyData,
  * which also drops unused points and degenerate cells), drop vertex and line cells, triangulate
- * polygons and strips, and orient the triangles consistently (vtkPolyDataNormals, Consistency).
+ * polygons and strips, orient the triangles consistently (vtkPolyDataNormals, Consistency),
+ * and give each fan of triangles at a non-manifold vertex its own copy of the vertex.
  * Refuses (null, `error` set): no points, non-finite coordinates, no polygons.
  */
 vtkSmartPointer<vtkPolyData> PrepareSurface(vtkPolyData* input, Repairs& repairs,

@@ -62,7 +62,8 @@ void Usage(std::ostream& os)
         "\n"
         "Repaired silently: exactly coincident points are merged, unused points dropped,\n"
         "polygons and strips triangulated, vertex/line cells and degenerate polygons removed,\n"
-        "triangles reoriented to agree with their neighbours (see --stats for counts).\n"
+        "triangles reoriented to agree with their neighbours, and a vertex where separate fans of\n"
+        "triangles touch split into one copy per fan (see --stats for the counts).\n"
         "Refused: missing, unreadable or empty files, unknown extensions, no polygons, NaN or\n"
         "infinite coordinates, non-manifold edges.\n";
 }
@@ -344,7 +345,8 @@ int main(int argc, char* argv[])
     js << "  \"repairs\": {\"merged_points\": " << repairs.mergedPoints
        << ", \"removed_cells\": " << repairs.removedCells
        << ", \"triangulated_polygons\": " << repairs.triangulatedPolygons
-       << ", \"flipped_triangles\": " << repairs.flippedTriangles << "},\n";
+       << ", \"flipped_triangles\": " << repairs.flippedTriangles
+       << ", \"split_vertices\": " << repairs.splitVertices << "},\n";
     js << "  \"stage\": " << JsonString(Stages[lastStage].name) << ",\n";
     js << "  \"seconds\": {";
     for (size_t i = 0; i < timings.size(); ++i)

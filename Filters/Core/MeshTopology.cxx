@@ -18,6 +18,16 @@ int findRoot(std::vector<int>& parent, int x)
   }
   return x;
 }
+
+void unite(std::vector<int>& parent, int a, int b)
+{
+  a = findRoot(parent, a);
+  b = findRoot(parent, b);
+  if (a != b)
+  {
+    parent[std::max(a, b)] = std::min(a, b);
+  }
+}
 }
 
 int MeshTopology::eulerCharacteristic() const
@@ -299,15 +309,8 @@ MeshTopology buildTopology(const Eigen::MatrixX3i& F, int numVertices)
   std::iota(parent.begin(), parent.end(), 0);
   for (int f = 0; f < nf; ++f)
   {
-    const int r0 = findRoot(parent, F(f, 0));
-    for (int k = 1; k < 3; ++k)
-    {
-      const int r = findRoot(parent, F(f, k));
-      if (r != r0)
-      {
-        parent[std::max(r, r0)] = std::min(r, r0);
-      }
-    }
+    unite(parent, F(f, 0), F(f, 1));
+    unite(parent, F(f, 0), F(f, 2));
   }
   T.vertexComponent.setConstant(numVertices, -1);
   std::vector<int> rootToComponent(numVertices, -1);
@@ -372,6 +375,74 @@ MeshTopology buildTopology(const Eigen::MatrixX3i& F, int numVertices)
       : -1;
   }
   return T;
+}
+
+std::vector<int> splitNonManifoldVertices(Eigen::MatrixX3d& V, Eigen::MatrixX3i& F)
+{
+  const MeshTopology T = buildTopology(F, static_cast<int>(V.rows()));
+  std::vector<int> copies;
+  int next = static_cast<int>(V.rows());
+  std::vector<int> parent;
+  for (int v : T.nonManifoldVertices)
+  {
+    const int begin = T.ringOffsets[v], end = T.ringOffsets[v + 1];
+    const int n = end - begin;
+    // Join incident triangles that share an edge at v.
+    parent.resize(n);
+    std::iota(parent.begin(), parent.end(), 0);
+    for (int i = 0; i < n; ++i)
+    {
+      const int f = T.ringFaces[begin + i];
+      const int k = MeshTopology::cornerOf(F, f, v);
+      if (k < 0)
+      {
+        continue;
+      }
+      for (const int edge : { k, (k + 2) % 3 })
+      {
+        const int g = T.faceNeighbors(f, edge);
+        for (int j = 0; g >= 0 && j < n; ++j)
+        {
+          if (T.ringFaces[begin + j] == g)
+          {
+            unite(parent, i, j);
+          }
+        }
+      }
+    }
+    // Fan of the first triangle keeps v; every other fan gets a copy.
+    std::vector<int> fanVertex(n, -1);
+    for (int i = 0; i < n; ++i)
+    {
+      const int root = findRoot(parent, i);
+      if (fanVertex[root] < 0)
+      {
+        fanVertex[root] = root == 0 ? v : next++;
+        if (root != 0)
+        {
+          copies.push_back(v);
+        }
+      }
+      const int f = T.ringFaces[begin + i];
+      for (int k = 0; k < 3; ++k)
+      {
+        if (F(f, k) == v)
+        {
+          F(f, k) = fanVertex[root];
+        }
+      }
+    }
+  }
+  if (!copies.empty())
+  {
+    const Eigen::Index old = V.rows();
+    V.conservativeResize(old + static_cast<Eigen::Index>(copies.size()), 3);
+    for (size_t i = 0; i < copies.size(); ++i)
+    {
+      V.row(old + static_cast<Eigen::Index>(i)) = V.row(copies[i]);
+    }
+  }
+  return copies;
 }
 
 }

@@ -5,6 +5,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <numeric>
+#include <random>
 #include <set>
 
 using namespace quadcover;
@@ -126,6 +129,50 @@ TEST(MeshTopology, SeveralComponents)
   EXPECT_EQ(T.faceComponent[F.rows() - 1], 1);
 }
 
+TEST(MeshTopology, ManyComponentsWithShuffledVertexIndices)
+{
+  // Seven spheres and tori whose vertex numbers are interleaved at random: the component
+  // labelling must not depend on the numbering.
+  std::vector<Surface> parts;
+  for (int i = 0; i < 7; ++i)
+  {
+    parts.push_back(i % 2 ? makeTorus(1.0, 0.3, 12, 8) : makeIcosphere(1.0, 1));
+  }
+  int nv = 0, nf = 0;
+  for (const Surface& s : parts)
+  {
+    nv += static_cast<int>(s.V.rows());
+    nf += static_cast<int>(s.F.rows());
+  }
+  std::vector<int> perm(nv);
+  std::iota(perm.begin(), perm.end(), 0);
+  std::mt19937 rng(3);
+  std::shuffle(perm.begin(), perm.end(), rng);
+  Eigen::MatrixX3i F(nf, 3);
+  int vo = 0, fo = 0;
+  for (const Surface& s : parts)
+  {
+    for (Eigen::Index f = 0; f < s.F.rows(); ++f, ++fo)
+    {
+      for (int k = 0; k < 3; ++k)
+      {
+        F(fo, k) = perm[vo + s.F(f, k)];
+      }
+    }
+    vo += static_cast<int>(s.V.rows());
+  }
+  const MeshTopology T = buildTopology(F, nv);
+  ASSERT_EQ(T.numComponents(), 7);
+  EXPECT_EQ(T.eulerCharacteristic(), 4 * 2 + 3 * 0);
+  int tori = 0;
+  for (const ComponentInfo& c : T.components)
+  {
+    EXPECT_TRUE(c.genus == 0 || c.genus == 1);
+    tori += c.genus;
+  }
+  EXPECT_EQ(tori, 3);
+}
+
 TEST(MeshTopology, DetectsNonManifoldEdge)
 {
   // Three triangles on one edge (0,1).
@@ -171,4 +218,23 @@ TEST(MeshTopology, EmptyMesh)
   const MeshTopology T = buildTopology(Eigen::MatrixX3i(0, 3), 0);
   EXPECT_EQ(T.numComponents(), 0);
   EXPECT_EQ(T.eulerCharacteristic(), 0);
+}
+
+TEST(MeshTopology, SplitsBowtieVerticesIntoManifoldFans)
+{
+  // Two triangles touching at vertex 0.
+  Eigen::MatrixX3d V = Eigen::MatrixX3d::Random(5, 3);
+  Eigen::MatrixX3i F(2, 3);
+  F << 0, 1, 2, 0, 3, 4;
+  EXPECT_EQ(splitNonManifoldVertices(V, F), std::vector<int>{ 0 });
+  ASSERT_EQ(V.rows(), 6);
+  EXPECT_EQ(V.row(5), V.row(0));
+  const MeshTopology T = buildTopology(F, 6);
+  EXPECT_TRUE(T.isManifold()) << T.describeDefects();
+  EXPECT_EQ(T.numComponents(), 2);
+
+  Surface s = testSurface("sphere");
+  const Eigen::MatrixX3i before = s.F;
+  EXPECT_TRUE(splitNonManifoldVertices(s.V, s.F).empty());
+  EXPECT_EQ(s.F, before);
 }

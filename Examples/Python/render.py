@@ -1,0 +1,156 @@
+#!/usr/bin/env python3
+"""Render a QuadCover result to a PNG: the surface coloured by a cell array, with the guidance
+frame field drawn as short segments along FrameU at every triangle's centre.
+
+    render.py INPUT.vtp -o OUTPUT.png [--array FrameWeight] [--no-frames] [--size 1400x1000]
+              [--azimuth DEG] [--elevation DEG]
+
+Needs a display; on a headless machine run it under `xvfb-run -a` (Debian: xvfb, xauth).
+"""
+import argparse
+import sys
+
+import vtk
+from vtk.util import numpy_support
+
+import numpy as np
+
+
+def read(path):
+    if path.endswith(".vtp"):
+        reader = vtk.vtkXMLPolyDataReader()
+    elif path.endswith(".vtk"):
+        reader = vtk.vtkPolyDataReader()
+    else:
+        sys.exit("render.py: error: expected a .vtp or .vtk file, got " + path)
+    reader.SetFileName(path)
+    reader.Update()
+    data = reader.GetOutput()
+    if data.GetNumberOfPoints() == 0:
+        sys.exit("render.py: error: no points in " + path)
+    return data
+
+
+def frame_segments(surface, name, scale):
+    """Line segments c - s*u .. c + s*u at each triangle centre c, lifted off the surface."""
+    frame = surface.GetCellData().GetArray(name)
+    if frame is None:
+        return None
+    points = numpy_support.vtk_to_numpy(surface.GetPoints().GetData()).astype(float)
+    polys = numpy_support.vtk_to_numpy(surface.GetPolys().GetData())
+    # VTK 9 exports the legacy layout: 3 i j k 3 i j k ...
+    tri = polys.reshape(-1, 4)[:, 1:]
+    a, b, c = points[tri[:, 0]], points[tri[:, 1]], points[tri[:, 2]]
+    centre = (a + b + c) / 3.0
+    normal = np.cross(b - a, c - a)
+    normal /= np.maximum(np.linalg.norm(normal, axis=1), 1e-300)[:, None]
+    u = numpy_support.vtk_to_numpy(frame).astype(float)
+    lift = 0.05 * scale * normal
+    ends = np.empty((2 * len(tri), 3))
+    ends[0::2] = centre - scale * u + lift
+    ends[1::2] = centre + scale * u + lift
+    pts = vtk.vtkPoints()
+    pts.SetData(numpy_support.numpy_to_vtk(ends, deep=True))
+    lines = vtk.vtkCellArray()
+    conn = np.arange(2 * len(tri), dtype=np.int64)
+    offsets = np.arange(0, 2 * len(tri) + 1, 2, dtype=np.int64)
+    lines.SetData(numpy_support.numpy_to_vtkIdTypeArray(offsets, deep=True),
+                  numpy_support.numpy_to_vtkIdTypeArray(conn, deep=True))
+    segments = vtk.vtkPolyData()
+    segments.SetPoints(pts)
+    segments.SetLines(lines)
+    return segments
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    parser.add_argument("input")
+    parser.add_argument("-o", "--output", required=True)
+    parser.add_argument("--array", default="FrameWeight", help="cell array for the colours")
+    parser.add_argument("--no-frames", action="store_true", help="do not draw FrameU")
+    parser.add_argument("--size", default="1400x1000")
+    parser.add_argument("--azimuth", type=float, default=30.0)
+    parser.add_argument("--elevation", type=float, default=25.0)
+    args = parser.parse_args()
+
+    surface = read(args.input)
+    width, height = (int(x) for x in args.size.split("x"))
+
+    renderer = vtk.vtkRenderer()
+    renderer.SetBackground(1.0, 1.0, 1.0)
+
+    mapper = vtk.vtkPolyDataMapper()
+    mapper.SetInputData(surface)
+    colours = surface.GetCellData().GetArray(args.array)
+    if colours is not None and colours.GetNumberOfComponents() == 1:
+        mapper.SetScalarModeToUseCellFieldData()
+        mapper.SelectColorArray(args.array)
+        mapper.SetScalarRange(colours.GetRange())
+        lut = vtk.vtkLookupTable()
+        lut.SetHueRange(0.6, 0.0)
+        lut.SetSaturationRange(0.45, 0.45)
+        lut.Build()
+        mapper.SetLookupTable(lut)
+        mapper.ScalarVisibilityOn()
+        bar = vtk.vtkScalarBarActor()
+        bar.SetLookupTable(lut)
+        bar.SetTitle(args.array)
+        bar.SetNumberOfLabels(3)
+        bar.SetWidth(0.08)
+        bar.SetHeight(0.4)
+        bar.GetTitleTextProperty().SetColor(0.1, 0.1, 0.1)
+        bar.GetLabelTextProperty().SetColor(0.1, 0.1, 0.1)
+        renderer.AddActor2D(bar)
+    else:
+        mapper.ScalarVisibilityOff()
+    actor = vtk.vtkActor()
+    actor.SetMapper(mapper)
+    actor.GetProperty().SetColor(0.85, 0.85, 0.8)
+    renderer.AddActor(actor)
+
+    if not args.no_frames:
+        # Segment half-length: 40% of the mean edge length, from the mean triangle area.
+        quality = vtk.vtkCellSizeFilter()
+        quality.SetInputData(surface)
+        quality.ComputeAreaOn()
+        quality.Update()
+        areas = numpy_support.vtk_to_numpy(quality.GetOutput().GetCellData().GetArray("Area"))
+        edge = float(np.sqrt(4.0 * max(float(np.mean(areas)), 1e-300) / np.sqrt(3.0)))
+        segments = frame_segments(surface, "FrameU", 0.4 * edge)
+        if segments is not None:
+            seg_mapper = vtk.vtkPolyDataMapper()
+            seg_mapper.SetInputData(segments)
+            seg_actor = vtk.vtkActor()
+            seg_actor.SetMapper(seg_mapper)
+            seg_actor.GetProperty().SetColor(0.05, 0.05, 0.05)
+            seg_actor.GetProperty().SetLineWidth(1.5)
+            seg_actor.GetProperty().LightingOff()
+            renderer.AddActor(seg_actor)
+
+    camera = renderer.GetActiveCamera()
+    renderer.ResetCamera()
+    camera.Azimuth(args.azimuth)
+    camera.Elevation(args.elevation)
+    camera.OrthogonalizeViewUp()
+    renderer.ResetCamera()
+    camera.Zoom(1.3)
+
+    window = vtk.vtkRenderWindow()
+    window.SetOffScreenRendering(1)
+    window.AddRenderer(renderer)
+    window.SetSize(width, height)
+    window.SetMultiSamples(8)
+    window.Render()
+
+    grab = vtk.vtkWindowToImageFilter()
+    grab.SetInput(window)
+    grab.ReadFrontBufferOff()
+    grab.Update()
+    writer = vtk.vtkPNGWriter()
+    writer.SetFileName(args.output)
+    writer.SetInputConnection(grab.GetOutputPort())
+    writer.Write()
+
+
+if __name__ == "__main__":
+    main()
