@@ -332,7 +332,7 @@ vtkSmartPointer<vtkPolyData> PrepareSurface(vtkPolyData* input, Repairs& repairs
   orient->ConsistencyOn();
   orient->SplittingOff();
   orient->ComputePointNormalsOff();
-  orient->ComputeCellNormalsOff();
+  orient->ComputeCellNormalsOn(); // with neither kind of normal requested it reorients nothing
   orient->AutoOrientNormalsOff();
   orient->NonManifoldTraversalOff();
   problem = Run(orient);
@@ -361,6 +361,10 @@ vtkSmartPointer<vtkPolyData> PrepareSurface(vtkPolyData* input, Repairs& repairs
   }
   auto out = vtkSmartPointer<vtkPolyData>::New();
   out->ShallowCopy(oriented);
+  if (!tri->GetCellData()->GetArray("Normals"))
+  {
+    out->GetCellData()->RemoveArray("Normals"); // the by-product of the reorientation
+  }
 
   // Bowtie vertices: one copy of the vertex per fan, point data copied along.
   const vtkIdType nv = out->GetNumberOfPoints();
@@ -379,6 +383,14 @@ vtkSmartPointer<vtkPolyData> PrepareSurface(vtkPolyData* input, Repairs& repairs
       F.row(f) << static_cast<int>(ids->GetId(0)), static_cast<int>(ids->GetId(1)),
         static_cast<int>(ids->GetId(2));
     }
+  }
+  const quadcover::MeshTopology topo = quadcover::buildTopology(F, static_cast<int>(nv));
+  if (!topo.nonManifoldEdges.empty())
+  {
+    error = "the surface has " + std::to_string(topo.nonManifoldEdges.size()) +
+      " non-manifold edges (more than two triangles on one edge); QuadCover needs a manifold "
+      "surface";
+    return nullptr;
   }
   const std::vector<int> copies = quadcover::splitNonManifoldVertices(V, F);
   repairs.splitVertices = static_cast<long long>(copies.size());

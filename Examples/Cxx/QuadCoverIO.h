@@ -64,7 +64,8 @@ vtkSmartPointer<vtkPolyData> ReadSurface(const std::string& path, std::string& e
  * which also drops unused points and degenerate cells), drop vertex and line cells, triangulate
  * polygons and strips, orient the triangles consistently (vtkPolyDataNormals, Consistency),
  * and give each fan of triangles at a non-manifold vertex its own copy of the vertex.
- * Refuses (null, `error` set): no points, non-finite coordinates, no polygons.
+ * Refuses (null, `error` set): no points, non-finite coordinates, no polygons, non-manifold
+ * edges.
  */
 vtkSmartPointer<vtkPolyData> PrepareSurface(vtkPolyData* input, Repairs& repairs,
   std::string& error);

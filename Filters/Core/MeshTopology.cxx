@@ -383,8 +383,17 @@ std::vector<int> splitNonManifoldVertices(Eigen::MatrixX3d& V, Eigen::MatrixX3i&
   std::vector<int> copies;
   int next = static_cast<int>(V.rows());
   std::vector<int> parent;
+  std::vector<char> onNonManifoldEdge(V.rows(), 0);
+  for (int e : T.nonManifoldEdges)
+  {
+    onNonManifoldEdge[T.edges(e, 0)] = onNonManifoldEdge[T.edges(e, 1)] = 1;
+  }
   for (int v : T.nonManifoldVertices)
   {
+    if (onNonManifoldEdge[v])
+    {
+      continue; // splitting here would cut the edge open: left for the caller to refuse
+    }
     const int begin = T.ringOffsets[v], end = T.ringOffsets[v + 1];
     const int n = end - begin;
     // Join incident triangles that share an edge at v.

@@ -182,6 +182,11 @@ TEST(MeshTopology, DetectsNonManifoldEdge)
   EXPECT_FALSE(T.isManifold());
   EXPECT_EQ(T.nonManifoldEdges.size(), 1u);
   EXPECT_NE(T.describeDefects().find("non-manifold edges"), std::string::npos);
+  // The bowtie repair does not cut a non-manifold edge open.
+  Eigen::MatrixX3d V = Eigen::MatrixX3d::Random(5, 3);
+  Eigen::MatrixX3i G = F;
+  EXPECT_TRUE(splitNonManifoldVertices(V, G).empty());
+  EXPECT_EQ(G, F);
 }
 
 TEST(MeshTopology, DetectsBowtieVertex)

@@ -1,0 +1,79 @@
+"""The curvature stage from Debian's Python: import, run on Data/torus.obj, check the mathematics.
+
+Run by CTest with PYTHONPATH pointing at the build's quadcover package.
+"""
+import math
+import os
+import sys
+import unittest
+
+import vtk
+from vtk.util import numpy_support
+import numpy as np
+
+from quadcover import vtkCurvatureFrames
+
+DATA = os.environ.get("QUADCOVER_DATA", os.path.join(os.path.dirname(__file__), "..", "..", "Data"))
+
+
+class CurvaturePipeline(unittest.TestCase):
+    def run_filter(self, **props):
+        reader = vtk.vtkOBJReader()
+        reader.SetFileName(os.path.join(DATA, "torus.obj"))
+        frames = vtkCurvatureFrames()
+        for key, value in props.items():
+            getattr(frames, "Set" + key)(value)
+        frames.SetInputConnection(reader.GetOutputPort())
+        frames.Update()
+        return frames.GetOutput()
+
+    def test_torus_principal_curvatures_and_directions(self):
+        out = self.run_filter(NeighborhoodRadius=2.0)
+        cd = out.GetCellData()
+        k = numpy_support.vtk_to_numpy(cd.GetArray("PrincipalCurvatures"))
+        d1 = numpy_support.vtk_to_numpy(cd.GetArray("PrincipalDirection1"))
+        u = numpy_support.vtk_to_numpy(cd.GetArray("FrameU"))
+        v = numpy_support.vtk_to_numpy(cd.GetArray("FrameV"))
+        w = numpy_support.vtk_to_numpy(cd.GetArray("FrameWeight"))
+        self.assertEqual(k.shape, (out.GetNumberOfCells(), 2))
+        # Data/torus.obj: R = 1, r = 0.4, so kappa1 = 1/r = 2.5 along the tube circle.
+        self.assertLess(np.abs(k[:, 0] - 2.5).mean(), 0.05)
+        pts = numpy_support.vtk_to_numpy(out.GetPoints().GetData())
+        tri = numpy_support.vtk_to_numpy(out.GetPolys().GetData()).reshape(-1, 4)[:, 1:]
+        c = pts[tri].mean(axis=1)
+        # Tube circle direction at the centroid: perpendicular to the radial (x, y) direction.
+        radial = c[:, :2] / np.linalg.norm(c[:, :2], axis=1)[:, None]
+        ring = np.column_stack([radial * 1.0, np.zeros(len(c))])  # the point on the core circle
+        to_centre = c - ring
+        circle = np.cross(to_centre, np.column_stack([-radial[:, 1], radial[:, 0], np.zeros(len(c))]))
+        circle /= np.linalg.norm(circle, axis=1)[:, None]
+        angle = np.degrees(np.arccos(np.clip(np.abs((d1 * circle).sum(axis=1)), 0, 1)))
+        self.assertLess(np.median(angle), 2.0)
+        # FrameU is a unit vector perpendicular to FrameV, and it is the kappa2 direction.
+        self.assertLess(np.abs(np.linalg.norm(u, axis=1) - 1).max(), 1e-9)
+        self.assertLess(np.abs((u * v).sum(axis=1)).max(), 1e-9)
+        self.assertLess(np.abs((u * d1).sum(axis=1)).max(), 1e-9)
+        self.assertTrue(np.all((w >= 0) & (w <= math.sqrt(2) + 1e-12)))
+        self.assertGreater(out.GetFieldData().GetArray("CurvatureRadius").GetValue(0), 0.0)
+
+    def test_properties_follow_vtk_conventions(self):
+        f = vtkCurvatureFrames()
+        self.assertEqual(f.GetNeighborhoodRadius(), 2.0)
+        f.SetNeighborhoodRadius(1000)
+        self.assertEqual(f.GetNeighborhoodRadius(), 100.0)
+        f.UseInputFramesOff()
+        self.assertFalse(f.GetUseInputFrames())
+        self.assertIn("NeighborhoodRadius", str(f))
+
+    def test_empty_input_is_an_error_not_a_crash(self):
+        f = vtkCurvatureFrames()
+        f.SetInputData(vtk.vtkPolyData())
+        errors = []
+        f.AddObserver("ErrorEvent", lambda obj, ev: errors.append(ev))
+        f.Update()
+        self.assertEqual(errors, ["ErrorEvent"])
+        self.assertEqual(f.GetOutput().GetNumberOfCells(), 0)
+
+
+if __name__ == "__main__":
+    unittest.main(verbosity=2)
