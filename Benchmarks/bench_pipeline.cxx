@@ -88,12 +88,12 @@ int RunCase(const Case& c, int threads, int repeat, int fd)
     frames->SetNumberOfThreads(threads);
     const auto t0 = std::chrono::steady_clock::now();
     frames->Update();
-    best = std::min(
-      best, std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+    best =
+      std::min(best, std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
   }
   char line[128];
-  const int n = std::snprintf(line, sizeof line, "%lld %.6f\n",
-    static_cast<long long>(surface->GetNumberOfPolys()), best);
+  const int n = std::snprintf(
+    line, sizeof line, "%lld %.6f\n", static_cast<long long>(surface->GetNumberOfPolys()), best);
   return write(fd, line, n) == n ? 0 : 1;
 }
 }

@@ -24,8 +24,8 @@ vtkStandardNewMacro(vtkCurvatureFrames);
 vtkCurvatureFrames::vtkCurvatureFrames()
 {
   // A user frame field is looked up under this name unless pointed elsewhere.
-  this->SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_CELLS,
-    vtkQuadCoverArrayNames::FrameU);
+  this->SetInputArrayToProcess(
+    0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_CELLS, vtkQuadCoverArrayNames::FrameU);
 }
 
 //------------------------------------------------------------------------------
@@ -53,8 +53,7 @@ int vtkCurvatureFrames::RequestData(
   {
     const Eigen::MatrixX3d V = vtkQuadCoverEigen::Points(surface);
     const Eigen::MatrixX3i F = vtkQuadCoverEigen::Triangles(surface);
-    const quadcover::MeshTopology topo =
-      quadcover::buildTopology(F, static_cast<int>(V.rows()));
+    const quadcover::MeshTopology topo = quadcover::buildTopology(F, static_cast<int>(V.rows()));
     // Per-triangle curvature needs manifold edges and one orientation; a vertex where fans of
     // triangles touch (a bowtie) does not disturb it, so it is only reported.
     if (!topo.degenerateFaces.empty() || !topo.nonManifoldEdges.empty() ||

@@ -51,7 +51,7 @@ inline Eigen::MatrixX3i Triangles(vtkPolyData* pd)
 }
 
 /// A new double array named `name` with the rows of M as tuples.
-template <typename Derived>
+template<typename Derived>
 vtkSmartPointer<vtkDoubleArray> ToArray(const Eigen::MatrixBase<Derived>& M, const char* name)
 {
   auto a = vtkSmartPointer<vtkDoubleArray>::New();

@@ -8,9 +8,9 @@
 #include "vtkNew.h"
 #include "vtkOBJReader.h"
 #include "vtkOBJWriter.h"
-#include "vtkPointData.h"
 #include "vtkPLYReader.h"
 #include "vtkPLYWriter.h"
+#include "vtkPointData.h"
 #include "vtkPolyDataNormals.h"
 #include "vtkPolyDataReader.h"
 #include "vtkPolyDataWriter.h"
@@ -238,8 +238,8 @@ vtkSmartPointer<vtkPolyData> ReadSurface(const std::string& path, std::string& e
   return out;
 }
 
-vtkSmartPointer<vtkPolyData> PrepareSurface(vtkPolyData* input, Repairs& repairs,
-  std::string& error)
+vtkSmartPointer<vtkPolyData> PrepareSurface(
+  vtkPolyData* input, Repairs& repairs, std::string& error)
 {
   repairs = Repairs();
   if (!input || input->GetNumberOfPoints() == 0)
@@ -323,8 +323,8 @@ vtkSmartPointer<vtkPolyData> PrepareSurface(vtkPolyData* input, Repairs& repairs
     error = "the mesh has no non-degenerate triangles";
     return nullptr;
   }
-  repairs.removedCells += clean->GetOutput()->GetNumberOfVerts() +
-    clean->GetOutput()->GetNumberOfLines();
+  repairs.removedCells +=
+    clean->GetOutput()->GetNumberOfVerts() + clean->GetOutput()->GetNumberOfLines();
 
   // Orientation: make neighbours agree, counting the triangles that turned.
   vtkNew<vtkPolyDataNormals> orient;

@@ -43,11 +43,11 @@ private:
 /// What PrepareSurface changed.
 struct Repairs
 {
-  long long mergedPoints = 0;       ///< duplicate points merged into one
-  long long removedCells = 0;       ///< degenerate or non-surface cells removed
+  long long mergedPoints = 0;         ///< duplicate points merged into one
+  long long removedCells = 0;         ///< degenerate or non-surface cells removed
   long long triangulatedPolygons = 0; ///< polygons with more than three sides, and strips
-  long long flippedTriangles = 0;   ///< triangles reoriented to agree with their neighbours
-  long long splitVertices = 0;      ///< copies added where fans touched at one vertex
+  long long flippedTriangles = 0;     ///< triangles reoriented to agree with their neighbours
+  long long splitVertices = 0;        ///< copies added where fans touched at one vertex
 };
 
 /// True when `path` ends in an extension ReadSurface understands (.obj .ply .stl .vtp .vtk).
@@ -67,8 +67,8 @@ vtkSmartPointer<vtkPolyData> ReadSurface(const std::string& path, std::string& e
  * Refuses (null, `error` set): no points, non-finite coordinates, no polygons, non-manifold
  * edges.
  */
-vtkSmartPointer<vtkPolyData> PrepareSurface(vtkPolyData* input, Repairs& repairs,
-  std::string& error);
+vtkSmartPointer<vtkPolyData> PrepareSurface(
+  vtkPolyData* input, Repairs& repairs, std::string& error);
 
 /// Writes by extension; returns false and sets `error` on failure.
 bool WriteSurface(vtkPolyData* surface, const std::string& path, std::string& error);

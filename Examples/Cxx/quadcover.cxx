@@ -159,8 +159,8 @@ int main(int argc, char* argv[])
     {
       verbose = true;
     }
-    else if (a == "-o" || a == "--output" || a == "--stage" || a == "--stats" ||
-      a == "--radius" || a == "--threads")
+    else if (a == "-o" || a == "--output" || a == "--stage" || a == "--stats" || a == "--radius" ||
+      a == "--threads")
     {
       const char* v = value(a.c_str());
       if (!v)
@@ -236,8 +236,8 @@ int main(int argc, char* argv[])
     }
     if (found < 0)
     {
-      return UsageError("unknown stage '" + stage +
-        "' (stages: curvature, smooth, matching, param, quads)");
+      return UsageError(
+        "unknown stage '" + stage + "' (stages: curvature, smooth, matching, param, quads)");
     }
     if (!Stages[found].available)
     {
@@ -339,8 +339,8 @@ int main(int argc, char* argv[])
   {
     std::ostringstream js;
     js << "{\n  \"input\": {\"file\": " << JsonString(input)
-       << ", \"points\": " << raw->GetNumberOfPoints()
-       << ", \"cells\": " << raw->GetNumberOfCells() << "},\n";
+       << ", \"points\": " << raw->GetNumberOfPoints() << ", \"cells\": " << raw->GetNumberOfCells()
+       << "},\n";
     js << "  \"surface\": {\"points\": " << surface->GetNumberOfPoints()
        << ", \"triangles\": " << surface->GetNumberOfPolys() << "},\n";
     js << "  \"repairs\": {\"merged_points\": " << repairs.mergedPoints
@@ -356,15 +356,15 @@ int main(int argc, char* argv[])
     }
     js << "},\n";
     {
-      vtkDataArray* w = curvature->GetOutput()->GetCellData()->GetArray(
-        vtkQuadCoverArrayNames::FrameWeight);
+      vtkDataArray* w =
+        curvature->GetOutput()->GetCellData()->GetArray(vtkQuadCoverArrayNames::FrameWeight);
       double mean = 0.0;
       for (vtkIdType c = 0; w && c < w->GetNumberOfTuples(); ++c)
       {
         mean += w->GetTuple1(c) / w->GetNumberOfTuples();
       }
-      vtkDataArray* r = curvature->GetOutput()->GetFieldData()->GetArray(
-        vtkQuadCoverArrayNames::CurvatureRadius);
+      vtkDataArray* r =
+        curvature->GetOutput()->GetFieldData()->GetArray(vtkQuadCoverArrayNames::CurvatureRadius);
       js << "  \"curvature\": {\"radius\": " << (r ? r->GetTuple1(0) : 0.0)
          << ", \"mean_frame_weight\": " << mean << "}\n";
     }

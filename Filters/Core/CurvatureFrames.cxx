@@ -11,8 +11,8 @@
 namespace quadcover
 {
 
-Eigen::MatrixX3d computeFaceNormals(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F,
-  const MeshTopology& topo, int* degenerate)
+Eigen::MatrixX3d computeFaceNormals(
+  const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F, const MeshTopology& topo, int* degenerate)
 {
   const int nf = static_cast<int>(F.rows());
   Eigen::MatrixX3d raw(nf, 3); // cross products: direction and twice the area

@@ -22,16 +22,16 @@ struct CurvatureOptions
 /// its normal (a sphere with outward normals has +1/R).
 struct CurvatureField
 {
-  Eigen::MatrixX3d normals;      ///< #F x 3 unit triangle normals
-  Eigen::MatrixX2d curvatures;   ///< #F x 2 (kappa1, kappa2), kappa1 >= kappa2
-  Eigen::MatrixX3d direction1;   ///< #F x 3 unit, in the triangle's plane, for kappa1
-  Eigen::MatrixX3d direction2;   ///< #F x 3 unit, normal x direction1, for kappa2
-  Eigen::MatrixX3d frameU;       ///< #F x 3 guidance vector (direction2)
-  Eigen::MatrixX3d frameV;       ///< #F x 3 normal x frameU
-  Eigen::VectorXd weight;        ///< #F omega = |k1-k2| / sqrt(k1^2+k2^2), 0 where both vanish
+  Eigen::MatrixX3d normals;    ///< #F x 3 unit triangle normals
+  Eigen::MatrixX2d curvatures; ///< #F x 2 (kappa1, kappa2), kappa1 >= kappa2
+  Eigen::MatrixX3d direction1; ///< #F x 3 unit, in the triangle's plane, for kappa1
+  Eigen::MatrixX3d direction2; ///< #F x 3 unit, normal x direction1, for kappa2
+  Eigen::MatrixX3d frameU;     ///< #F x 3 guidance vector (direction2)
+  Eigen::MatrixX3d frameV;     ///< #F x 3 normal x frameU
+  Eigen::VectorXd weight;      ///< #F omega = |k1-k2| / sqrt(k1^2+k2^2), 0 where both vanish
   double meanEdgeLength = 0.0;
-  double radius = 0.0;           ///< the neighbourhood radius used, world units
-  int degenerateFaces = 0;       ///< zero-area triangles (they take the neighbourhood's normal)
+  double radius = 0.0;     ///< the neighbourhood radius used, world units
+  int degenerateFaces = 0; ///< zero-area triangles (they take the neighbourhood's normal)
 };
 
 /// Unit normals of the triangles; a zero-area triangle gets the normalized sum of its

@@ -370,9 +370,8 @@ MeshTopology buildTopology(const Eigen::MatrixX3i& F, int numVertices)
   {
     c.eulerCharacteristic = c.numVertices - c.numEdges + c.numFaces;
     const int twiceGenus = 2 - c.eulerCharacteristic - c.numBoundaryLoops;
-    c.genus = (c.manifold && c.oriented && twiceGenus >= 0 && twiceGenus % 2 == 0)
-      ? twiceGenus / 2
-      : -1;
+    c.genus =
+      (c.manifold && c.oriented && twiceGenus >= 0 && twiceGenus % 2 == 0) ? twiceGenus / 2 : -1;
   }
   return T;
 }

@@ -45,13 +45,13 @@ struct MeshTopology
   Eigen::MatrixX2i edgeFaces;     ///< #E x 2 the first two faces on the edge (-1 if absent)
   Eigen::VectorXi edgeFaceCount;  ///< #E number of faces on the edge
 
-  std::vector<int> ringOffsets; ///< #V+1, CSR offsets into ringFaces
-  std::vector<int> ringFaces;   ///< faces around each vertex, counterclockwise
+  std::vector<int> ringOffsets;     ///< #V+1, CSR offsets into ringFaces
+  std::vector<int> ringFaces;       ///< faces around each vertex, counterclockwise
   std::vector<char> boundaryVertex; ///< #V, 1 on a boundary loop
 
   std::vector<std::vector<int>> boundaryLoops; ///< vertex loops, following face orientation
-  Eigen::VectorXi vertexComponent; ///< #V component index, -1 for unreferenced vertices
-  Eigen::VectorXi faceComponent;   ///< #F component index
+  Eigen::VectorXi vertexComponent;             ///< #V component index, -1 for unreferenced vertices
+  Eigen::VectorXi faceComponent;               ///< #F component index
   std::vector<ComponentInfo> components;
 
   std::vector<int> degenerateFaces;     ///< faces that repeat a vertex index

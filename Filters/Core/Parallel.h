@@ -28,7 +28,7 @@ inline int defaultThreadCount()
 /// Calls body(begin, end, threadIndex) on contiguous blocks covering [0, n). Each index is
 /// visited exactly once; as long as body writes only to its own indices the result does not
 /// depend on the number of threads.
-template <typename Body>
+template<typename Body>
 void parallelFor(int n, int numThreads, Body&& body)
 {
   if (numThreads <= 0)

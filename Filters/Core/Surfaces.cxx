@@ -95,9 +95,9 @@ Surface makeIcosphere(double radius, int level)
     { 0, -1, t }, { 0, 1, t }, { 0, -1, -t }, { 0, 1, -t }, { t, 0, -1 }, { t, 0, 1 },
     { -t, 0, -1 }, { -t, 0, 1 } };
   std::vector<std::array<int, 3>> T = { { 0, 11, 5 }, { 0, 5, 1 }, { 0, 1, 7 }, { 0, 7, 10 },
-    { 0, 10, 11 }, { 1, 5, 9 }, { 5, 11, 4 }, { 11, 10, 2 }, { 10, 7, 6 }, { 7, 1, 8 },
-    { 3, 9, 4 }, { 3, 4, 2 }, { 3, 2, 6 }, { 3, 6, 8 }, { 3, 8, 9 }, { 4, 9, 5 }, { 2, 4, 11 },
-    { 6, 2, 10 }, { 8, 6, 7 }, { 9, 8, 1 } };
+    { 0, 10, 11 }, { 1, 5, 9 }, { 5, 11, 4 }, { 11, 10, 2 }, { 10, 7, 6 }, { 7, 1, 8 }, { 3, 9, 4 },
+    { 3, 4, 2 }, { 3, 2, 6 }, { 3, 6, 8 }, { 3, 8, 9 }, { 4, 9, 5 }, { 2, 4, 11 }, { 6, 2, 10 },
+    { 8, 6, 7 }, { 9, 8, 1 } };
   for (auto& p : P)
   {
     p.normalize();
@@ -202,7 +202,8 @@ Surface makeSaddle(double a, double size, int n)
       Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::Matrix2d> es(-II, I);
       const Eigen::Vector2d k = es.eigenvalues(); // ascending
       const Eigen::Vector2d d = es.eigenvectors().col(1);
-      const Eigen::Vector3d d3 = Eigen::Vector3d(d.x(), d.y(), fx * d.x() + fy * d.y()).normalized();
+      const Eigen::Vector3d d3 =
+        Eigen::Vector3d(d.x(), d.y(), fx * d.x() + fy * d.y()).normalized();
       s.kappa.row(id) << k[1], k[0];
       s.direction1.row(id) = d3.transpose();
     }
@@ -211,8 +212,8 @@ Surface makeSaddle(double a, double size, int n)
   return s;
 }
 
-Surface makeKnotTube(int p, int q, double R, double rKnot, double tube, int nAlong,
-  int nAround, double jitter, double noise, unsigned seed)
+Surface makeKnotTube(int p, int q, double R, double rKnot, double tube, int nAlong, int nAround,
+  double jitter, double noise, unsigned seed)
 {
   if (!(R > rKnot && rKnot > 0.0 && tube > 0.0) || nAlong < 3 || nAround < 3 ||
     !(jitter >= 0.0 && jitter < 0.5) || !(noise >= 0.0))

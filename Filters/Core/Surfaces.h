@@ -38,8 +38,8 @@ Surface makeSaddle(double a, double s, int n);
 /// parameter grid is displaced at random (jitter in cells, < 0.5) and every quad split along a
 /// random diagonal; with noise > 0 every vertex moves along the tube's normal by a random amount
 /// up to noise * tube. Deterministic for a given seed.
-Surface makeKnotTube(int p, int q, double R, double rKnot, double tube, int nAlong,
-  int nAround, double jitter, double noise, unsigned seed);
+Surface makeKnotTube(int p, int q, double R, double rKnot, double tube, int nAlong, int nAround,
+  double jitter, double noise, unsigned seed);
 
 /// Axis-aligned cube [-1,1]^3 with edges rounded at radius `round` (0 < round < 1): a closed
 /// surface with flat faces, cylindrical edges and spherical corners, made by pushing an n x n

@@ -56,7 +56,8 @@ double lineAngle(const Eigen::Vector3d& a, const Eigen::Vector3d& b)
 double analyticKappa(const Sample& r, int f, int which)
 {
   return (r.s.kappa(r.s.F(f, 0), which) + r.s.kappa(r.s.F(f, 1), which) +
-           r.s.kappa(r.s.F(f, 2), which)) / 3.0;
+           r.s.kappa(r.s.F(f, 2), which)) /
+    3.0;
 }
 
 struct Errors
@@ -260,10 +261,10 @@ TEST(CurvatureFrames, InputFramesAreProjectedAndCompleted)
   {
     user.row(f) = Eigen::RowVector3d(0.0, 0.0, 1.0) + 0.5 * r.field.normals.row(f);
   }
-  user.row(0).setZero();                       // no direction: the curvature frame stays
-  user.row(1) = 3.0 * r.field.normals.row(1);  // normal: the curvature frame stays
+  user.row(0).setZero();                      // no direction: the curvature frame stays
+  user.row(1) = 3.0 * r.field.normals.row(1); // normal: the curvature frame stays
   const Eigen::MatrixX3d curvatureU = r.field.frameU;
-  EXPECT_EQ(applyInputFrames(r.field, user), 
+  EXPECT_EQ(applyInputFrames(r.field, user),
     static_cast<int>((r.field.normals.col(2).array().abs() > 1.0 - 1e-12).count()) + 2);
   EXPECT_EQ(r.field.frameU.row(0), curvatureU.row(0));
   for (int f = 2; f < nf; ++f)

@@ -255,8 +255,7 @@ TEST(vtkCurvatureFrames, KeepsUserFramesUnlessToldNot)
 // ---- The shared scanned and CAD meshes (skipped when ../shared/data is absent) ----
 
 class SharedMesh : public ::testing::TestWithParam<const char*>
-{
-};
+{};
 
 TEST_P(SharedMesh, RepairsThenGivesUnitTangentFrames)
 {
