@@ -81,6 +81,21 @@ int vtkCurvatureFrames::RequestData(
     options.numThreads = this->NumberOfThreads;
     quadcover::CurvatureField field = quadcover::computeCurvatureField(V, F, topo, options);
     this->UpdateProgress(0.8);
+    if (field.zeroFrames == static_cast<int>(F.rows()))
+    {
+      vtkErrorMacro(<< "Cannot estimate curvature: every triangle is degenerate (zero area).");
+      return 0;
+    }
+    if (field.zeroFrames > 0)
+    {
+      vtkWarningMacro(<< field.zeroFrames << " degenerate triangles with no usable neighbour "
+                      << "have zero frames.");
+    }
+    if (field.truncatedNeighborhoods > 0)
+    {
+      vtkWarningMacro(<< field.truncatedNeighborhoods << " neighbourhoods were cut at "
+                      << options.maxNeighborhood << " triangles (very uneven triangle sizes?).");
+    }
 
     vtkDataArray* user = this->UseInputFrames ? this->GetInputArrayToProcess(0, surface) : nullptr;
     if (user && user->GetNumberOfComponents() == 3 &&

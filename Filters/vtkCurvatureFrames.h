@@ -6,7 +6,9 @@
  * triangle it estimates the curvature tensor with the normal-cycle measure of Cohen-Steiner and
  * Morvan: every interior edge contributes its signed dihedral angle times its length times the
  * outer product of its direction, summed over the triangles whose centroids lie within
- * NeighborhoodRadius mean edge lengths (reached across edges) and divided by their area.
+ * NeighborhoodRadius median edge lengths (reached across edges; at most 8192 triangles) and
+ * divided by their area. The median rather than the mean edge length sets the scale, so that a
+ * few outsized triangles do not blow up the neighbourhoods.
  *
  * Output: the input's triangles (polygons and strips triangulated) and points, plus cell data
  * (names in vtkQuadCoverArrayNames.h):
@@ -22,13 +24,15 @@
  * plane and normalized, FrameV completes it. Where a vector has no tangent part the curvature
  * frame is used (the count goes to a warning).
  *
- * Errors (no output): no points, no triangles, non-finite coordinates, triangles that repeat a
- * vertex, non-manifold edges (three or more triangles on one edge), and inconsistently oriented
- * neighbours. Merge duplicate points and orient the surface first (vtkCleanPolyData,
- * vtkPolyDataNormals with ConsistencyOn); the quadcover command line does both.
- * Vertices and lines are dropped with a warning. Zero-area triangles are accepted: they take
- * their neighbourhood's normal. Non-manifold vertices (fans touching at one vertex) only give a
- * warning: they do not disturb a per-triangle estimate.
+ * Errors (no output): no points, no triangles, point ids out of range, non-finite coordinates,
+ * non-manifold edges (three or more triangles on one edge), inconsistently oriented neighbours,
+ * and a surface whose triangles all have zero area. Triangles that repeat a point id (e.g. the
+ * joins of triangle strips) carry no surface and are dropped with a warning. Merge duplicate points
+ * and orient the surface first (vtkCleanPolyData, vtkPolyDataNormals with ConsistencyOn); the
+ * quadcover command line does both. Vertices and lines are dropped with a warning. Zero-area
+ * triangles are accepted: they take their neighbourhood's normal and their edges add no bending
+ * (zero frames, with a warning, where no neighbour has a normal either). Non-manifold vertices
+ * (fans touching at one vertex) only give a warning: they do not disturb a per-triangle estimate.
  *
  * @warning The estimate is cell-centred; vtkCurvatures gives per-vertex Gaussian/mean values.
  * @sa vtkFrameSmoother vtkCurvatures
@@ -48,11 +52,11 @@ public:
 
   ///@{
   /**
-   * Radius of the averaging neighbourhood in multiples of the mean edge length, in [0, 100]
+   * Radius of the averaging neighbourhood in multiples of the median edge length, in [0, 20]
    * (default 2). 0 uses each triangle's own edges; larger values give steadier directions on
    * noisy scans at the cost of detail.
    */
-  vtkSetClampMacro(NeighborhoodRadius, double, 0.0, 100.0);
+  vtkSetClampMacro(NeighborhoodRadius, double, 0.0, 20.0);
   vtkGetMacro(NeighborhoodRadius, double);
   ///@}
 

@@ -14,6 +14,7 @@
 #include "vtkPolyDataNormals.h"
 #include "vtkPolyDataReader.h"
 #include "vtkPolyDataWriter.h"
+#include "vtkQuadCoverInput.h"
 #include "vtkSTLReader.h"
 #include "vtkTriangleFilter.h"
 #include "vtkXMLPolyDataReader.h"
@@ -24,8 +25,11 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <cstdint>
 #include <cstdlib>
+#include <cstring>
 #include <fstream>
+#include <sstream>
 #include <sys/stat.h>
 
 namespace QuadCoverIO
@@ -46,32 +50,230 @@ std::string Extension(const std::string& path)
   return ext;
 }
 
-/// VTK 9.1's OBJ reader turns "nan" and "inf" into 0 without a word: scan the vertex lines.
-/// Returns "" or the first offending line.
-std::string FindNonFiniteObjVertex(const std::string& path)
+/// What VTK 9.1's OBJ reader gets silently wrong: it reads "nan" and "inf" as 0, and a face
+/// index past the vertices reads memory it does not own. Returns "" or the first offending line.
+std::string CheckObjText(const std::string& path)
 {
   std::ifstream in(path);
   std::string line;
+  long long vertices = 0, maxIndex = 0, maxIndexLine = 0;
   for (long long number = 1; std::getline(in, line); ++number)
   {
-    if (line.size() < 2 || line[0] != 'v' || (line[1] != ' ' && line[1] != '\t'))
+    if (line.size() < 2 || (line[1] != ' ' && line[1] != '\t'))
     {
       continue;
     }
-    const char* p = line.c_str() + 1;
-    for (int k = 0; k < 3; ++k)
+    if (line[0] == 'v')
     {
-      char* end = nullptr;
-      const double x = std::strtod(p, &end);
-      if (end == p)
+      ++vertices;
+      const char* p = line.c_str() + 1;
+      for (int k = 0; k < 3; ++k)
       {
-        break; // not a number: the reader reports what it makes of it
+        char* end = nullptr;
+        const double x = std::strtod(p, &end);
+        if (end == p)
+        {
+          break; // not a number: the reader reports what it makes of it
+        }
+        if (!std::isfinite(x))
+        {
+          return "line " + std::to_string(number) +
+            " has a non-finite (NaN or infinite) coordinate";
+        }
+        p = end;
       }
-      if (!std::isfinite(x))
+    }
+    else if (line[0] == 'f')
+    {
+      // Tokens "i", "i/t", "i//n" or "i/t/n"; negative i counts back from the last vertex.
+      std::istringstream tokens(line.substr(2));
+      std::string token;
+      while (tokens >> token)
       {
-        return "line " + std::to_string(number) + " has a non-finite (NaN or infinite) coordinate";
+        char* end = nullptr;
+        const long long i = std::strtoll(token.c_str(), &end, 10);
+        if (end == token.c_str())
+        {
+          break;
+        }
+        if (i == 0 || (i < 0 && -i > vertices))
+        {
+          return "line " + std::to_string(number) + " refers to vertex " + std::to_string(i) +
+            ", which does not exist";
+        }
+        if (i > maxIndex)
+        {
+          maxIndex = i;
+          maxIndexLine = number;
+        }
       }
-      p = end;
+    }
+  }
+  if (maxIndex > vertices)
+  {
+    return "line " + std::to_string(maxIndexLine) + " refers to vertex " +
+      std::to_string(maxIndex) + ", but the file has only " + std::to_string(vertices);
+  }
+  return "";
+}
+
+/// VTK 9.1's PLY reader dereferences face indices without checking them. Streams through the
+/// file (ASCII or binary) and returns "" or a one-line reason for the first face index that is
+/// not a vertex. A header it cannot follow is left to the reader to judge.
+std::string CheckPlyFaces(const std::string& path)
+{
+  std::ifstream in(path, std::ios::binary);
+  std::string line;
+  if (!std::getline(in, line) || line.compare(0, 3, "ply") != 0)
+  {
+    return "";
+  }
+  struct Property
+  {
+    std::string name;
+    std::string type;      // scalar type, or the item type of a list
+    std::string countType; // empty for scalars
+  };
+  struct Element
+  {
+    std::string name;
+    long long count = 0;
+    std::vector<Property> properties;
+  };
+  std::vector<Element> elements;
+  std::string format;
+  while (std::getline(in, line))
+  {
+    if (!line.empty() && line.back() == '\r')
+    {
+      line.pop_back();
+    }
+    std::istringstream words(line);
+    std::string word;
+    words >> word;
+    if (word == "format")
+    {
+      words >> format;
+    }
+    else if (word == "element")
+    {
+      Element e;
+      words >> e.name >> e.count;
+      elements.push_back(e);
+    }
+    else if (word == "property" && !elements.empty())
+    {
+      Property p;
+      words >> p.type;
+      if (p.type == "list")
+      {
+        words >> p.countType >> p.type;
+      }
+      words >> p.name;
+      elements.back().properties.push_back(p);
+    }
+    else if (word == "end_header")
+    {
+      break;
+    }
+  }
+  auto size = [](const std::string& t) -> int {
+    if (t == "char" || t == "uchar" || t == "int8" || t == "uint8")
+      return 1;
+    if (t == "short" || t == "ushort" || t == "int16" || t == "uint16")
+      return 2;
+    if (t == "int" || t == "uint" || t == "int32" || t == "uint32" || t == "float" ||
+      t == "float32")
+      return 4;
+    if (t == "double" || t == "float64")
+      return 8;
+    return 0;
+  };
+  const bool ascii = format == "ascii";
+  const bool swap = format == "binary_big_endian";
+  if (!ascii && !swap && format != "binary_little_endian")
+  {
+    return "";
+  }
+  // One value of type t, as a double (exact for every integer type up to 32 bits).
+  auto read = [&](const std::string& t, double& value) -> bool {
+    if (ascii)
+    {
+      return static_cast<bool>(in >> value);
+    }
+    const int n = size(t);
+    unsigned char b[8];
+    if (n == 0 || !in.read(reinterpret_cast<char*>(b), n))
+    {
+      return false;
+    }
+    if (swap)
+    {
+      std::reverse(b, b + n);
+    }
+    if (t == "char" || t == "int8")
+      value = static_cast<signed char>(b[0]);
+    else if (t == "uchar" || t == "uint8")
+      value = b[0];
+    else if (t == "short" || t == "int16" || t == "ushort" || t == "uint16")
+    {
+      std::uint16_t u;
+      std::memcpy(&u, b, 2);
+      value = (t == "short" || t == "int16") ? static_cast<std::int16_t>(u) : u;
+    }
+    else if (t == "int" || t == "int32" || t == "uint" || t == "uint32")
+    {
+      std::uint32_t u;
+      std::memcpy(&u, b, 4);
+      value = (t == "int" || t == "int32") ? static_cast<std::int32_t>(u) : u;
+    }
+    else if (t == "float" || t == "float32")
+    {
+      float f;
+      std::memcpy(&f, b, 4);
+      value = f;
+    }
+    else
+    {
+      std::memcpy(&value, b, 8);
+    }
+    return true;
+  };
+  long long vertices = -1;
+  for (const Element& e : elements)
+  {
+    if (e.name == "vertex")
+    {
+      vertices = e.count;
+    }
+    for (long long i = 0; i < e.count; ++i)
+    {
+      for (const Property& p : e.properties)
+      {
+        double value = 0;
+        if (p.countType.empty())
+        {
+          if (!read(p.type, value))
+            return "";
+          continue;
+        }
+        double count = 0;
+        if (!read(p.countType, count) || count < 0)
+          return "";
+        const bool indices = e.name == "face" &&
+          (p.name == "vertex_indices" || p.name == "vertex_index") && vertices >= 0;
+        for (long long k = 0; k < static_cast<long long>(count); ++k)
+        {
+          if (!read(p.type, value))
+            return "";
+          if (indices && !(value >= 0 && value < static_cast<double>(vertices)))
+          {
+            return "face " + std::to_string(i) + " refers to point " +
+              std::to_string(static_cast<long long>(value)) + ", but there are only " +
+              std::to_string(vertices) + " points";
+          }
+        }
+      }
     }
   }
   return "";
@@ -182,7 +384,7 @@ vtkSmartPointer<vtkPolyData> ReadSurface(const std::string& path, std::string& e
   vtkSmartPointer<vtkAlgorithm> reader;
   if (ext == ".obj")
   {
-    const std::string bad = FindNonFiniteObjVertex(path);
+    const std::string bad = CheckObjText(path);
     if (!bad.empty())
     {
       error = "cannot read '" + path + "': " + bad;
@@ -194,6 +396,12 @@ vtkSmartPointer<vtkPolyData> ReadSurface(const std::string& path, std::string& e
   }
   else if (ext == ".ply")
   {
+    const std::string bad = CheckPlyFaces(path);
+    if (!bad.empty())
+    {
+      error = "cannot read '" + path + "': " + bad;
+      return nullptr;
+    }
     auto r = vtkSmartPointer<vtkPLYReader>::New();
     r->SetFileName(path.c_str());
     reader = r;
@@ -247,29 +455,21 @@ vtkSmartPointer<vtkPolyData> PrepareSurface(
     error = "the mesh is empty (no points)";
     return nullptr;
   }
-  double p[3];
-  for (vtkIdType i = 0; i < input->GetNumberOfPoints(); ++i)
+  std::string problem = vtkQuadCoverInput::CheckPointIds(input);
+  if (problem.empty())
   {
-    input->GetPoint(i, p);
-    if (!std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2]))
-    {
-      error = "point " + std::to_string(i) + " has a non-finite (NaN or infinite) coordinate";
-      return nullptr;
-    }
+    problem = vtkQuadCoverInput::CheckFinitePoints(input);
+  }
+  if (!problem.empty())
+  {
+    error = problem;
+    return nullptr;
   }
   if (input->GetNumberOfPolys() + input->GetNumberOfStrips() == 0)
   {
     error = "the mesh has no polygons (a surface of triangles is needed)";
     return nullptr;
   }
-
-  // Surface cells only: vertices and lines are not part of a surface.
-  vtkNew<vtkPolyData> polys;
-  polys->SetPoints(input->GetPoints());
-  polys->GetPointData()->PassData(input->GetPointData());
-  polys->SetPolys(input->GetPolys());
-  polys->SetStrips(input->GetStrips());
-  repairs.removedCells += input->GetNumberOfVerts() + input->GetNumberOfLines();
   {
     vtkCellArray* cells = input->GetPolys();
     for (vtkIdType c = 0; c < cells->GetNumberOfCells(); ++c)
@@ -279,36 +479,10 @@ vtkSmartPointer<vtkPolyData> PrepareSurface(
     repairs.triangulatedPolygons += input->GetNumberOfStrips();
   }
 
-  vtkNew<vtkCleanPolyData> clean; // exact duplicates only (tolerance 0)
-  clean->SetInputData(polys);
-  clean->PointMergingOn();
-  clean->SetTolerance(0.0);
-  clean->ConvertPolysToLinesOn();
-  clean->ConvertLinesToPointsOn();
-  std::string problem = Run(clean);
-  if (!problem.empty())
-  {
-    error = problem;
-    return nullptr;
-  }
-  vtkIdType used = 0;
-  {
-    std::vector<char> referenced(input->GetNumberOfPoints(), 0);
-    vtkCellArray* cells = polys->GetPolys();
-    vtkNew<vtkIdList> ids;
-    for (cells->InitTraversal(); cells->GetNextCell(ids);)
-    {
-      for (vtkIdType k = 0; k < ids->GetNumberOfIds(); ++k)
-      {
-        used += referenced[ids->GetId(k)] ? 0 : 1;
-        referenced[ids->GetId(k)] = 1;
-      }
-    }
-  }
-  repairs.mergedPoints = std::max<vtkIdType>(0, used - clean->GetOutput()->GetNumberOfPoints());
-
+  // Triangulate first (so that the degenerate joins of strips stay degenerate), dropping vertex
+  // and line cells; cell data follows the triangles.
   vtkNew<vtkTriangleFilter> triangles;
-  triangles->SetInputConnection(clean->GetOutputPort());
+  triangles->SetInputData(input);
   triangles->PassVertsOff();
   triangles->PassLinesOff();
   problem = Run(triangles);
@@ -318,17 +492,47 @@ vtkSmartPointer<vtkPolyData> PrepareSurface(
     return nullptr;
   }
   vtkPolyData* tri = triangles->GetOutput();
-  if (tri->GetNumberOfPolys() == 0)
+  repairs.removedCells += input->GetNumberOfVerts() + input->GetNumberOfLines();
+
+  // Merge exactly coincident points; triangles left with a repeated point are removed.
+  vtkNew<vtkCleanPolyData> clean;
+  clean->SetInputData(tri);
+  clean->PointMergingOn();
+  clean->SetTolerance(0.0);
+  clean->ConvertPolysToLinesOff();
+  clean->ConvertLinesToPointsOff();
+  clean->ConvertStripsToPolysOff();
+  problem = Run(clean);
+  if (!problem.empty())
+  {
+    error = problem;
+    return nullptr;
+  }
+  vtkIdType used = 0;
+  {
+    std::vector<char> referenced(tri->GetNumberOfPoints(), 0);
+    vtkNew<vtkIdList> ids;
+    for (tri->GetPolys()->InitTraversal(); tri->GetPolys()->GetNextCell(ids);)
+    {
+      for (vtkIdType k = 0; k < ids->GetNumberOfIds(); ++k)
+      {
+        used += referenced[ids->GetId(k)] ? 0 : 1;
+        referenced[ids->GetId(k)] = 1;
+      }
+    }
+  }
+  vtkPolyData* cleaned = clean->GetOutput();
+  repairs.mergedPoints = std::max<vtkIdType>(0, used - cleaned->GetNumberOfPoints());
+  repairs.removedCells += tri->GetNumberOfPolys() - cleaned->GetNumberOfPolys();
+  if (cleaned->GetNumberOfPolys() == 0)
   {
     error = "the mesh has no non-degenerate triangles";
     return nullptr;
   }
-  repairs.removedCells +=
-    clean->GetOutput()->GetNumberOfVerts() + clean->GetOutput()->GetNumberOfLines();
 
   // Orientation: make neighbours agree, counting the triangles that turned.
   vtkNew<vtkPolyDataNormals> orient;
-  orient->SetInputData(tri);
+  orient->SetInputData(cleaned);
   orient->ConsistencyOn();
   orient->SplittingOff();
   orient->ComputePointNormalsOff();
@@ -343,7 +547,7 @@ vtkSmartPointer<vtkPolyData> PrepareSurface(
   }
   vtkPolyData* oriented = orient->GetOutput();
   {
-    vtkCellArray* a = tri->GetPolys();
+    vtkCellArray* a = cleaned->GetPolys();
     vtkCellArray* b = oriented->GetPolys();
     vtkNew<vtkIdList> ia, ib;
     for (vtkIdType c = 0; c < a->GetNumberOfCells() && c < b->GetNumberOfCells(); ++c)
@@ -361,7 +565,7 @@ vtkSmartPointer<vtkPolyData> PrepareSurface(
   }
   auto out = vtkSmartPointer<vtkPolyData>::New();
   out->ShallowCopy(oriented);
-  if (!tri->GetCellData()->GetArray("Normals"))
+  if (!cleaned->GetCellData()->GetArray("Normals"))
   {
     out->GetCellData()->RemoveArray("Normals"); // the by-product of the reorientation
   }
@@ -369,6 +573,7 @@ vtkSmartPointer<vtkPolyData> PrepareSurface(
   // Bowtie vertices: one copy of the vertex per fan, point data copied along.
   const vtkIdType nv = out->GetNumberOfPoints();
   Eigen::MatrixX3d V(nv, 3);
+  double p[3];
   for (vtkIdType i = 0; i < nv; ++i)
   {
     out->GetPoint(i, p);

@@ -18,6 +18,7 @@
 #include "vtkStringOutputWindow.h"
 
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
@@ -57,7 +58,8 @@ void Usage(std::ostream& os)
         "  --stats FILE     write a JSON summary: input size, repairs, seconds per stage, counts\n"
         "  -v, --verbose    seconds per stage, and VTK's own messages (progress shows\n"
         "                   whenever stderr is a terminal)\n"
-        "  --radius R       curvature neighbourhood radius in mean edge lengths (default 2)\n"
+        "  --radius R       curvature neighbourhood radius in median edge lengths, 0..20\n"
+        "                   (default 2)\n"
         "  --threads N      worker threads, 0 = all cores (default 0)\n"
         "  --no-input-frames  ignore a FrameU cell array on the input; use curvature frames\n"
         "\n"
@@ -177,8 +179,9 @@ int main(int argc, char* argv[])
       {
         char* end = nullptr;
         const double x = std::strtod(v, &end);
-        if (end == v || *end != '\0' || !(x >= 0.0) || (a == "--radius" && x > 100.0) ||
-          (a == "--threads" && (x != static_cast<int>(x) || x > 1024)))
+        // Range first: casting an out-of-range double to int is undefined.
+        if (end == v || *end != '\0' || !(x >= 0.0) || (a == "--radius" && x > 20.0) ||
+          (a == "--threads" && (x > 1024.0 || x != std::floor(x))))
         {
           return UsageError("invalid value '" + std::string(v) + "' for " + a);
         }

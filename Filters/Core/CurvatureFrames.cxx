@@ -4,6 +4,7 @@
 
 #include <Eigen/Dense>
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 #include <vector>
@@ -11,32 +12,29 @@
 namespace quadcover
 {
 
-Eigen::MatrixX3d computeFaceNormals(
-  const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F, const MeshTopology& topo, int* degenerate)
+Eigen::MatrixX3d computeFaceNormals(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F,
+  const MeshTopology& topo, std::vector<char>* degenerate)
 {
   const int nf = static_cast<int>(F.rows());
   Eigen::MatrixX3d raw(nf, 3); // cross products: direction and twice the area
-  Eigen::VectorXd area2(nf);
-  double maxArea2 = 0.0;
+  std::vector<char> bad(nf, 0);
   for (int f = 0; f < nf; ++f)
   {
     const Eigen::Vector3d a = V.row(F(f, 0)), b = V.row(F(f, 1)), c = V.row(F(f, 2));
     raw.row(f) = (b - a).cross(c - a).transpose();
-    area2[f] = raw.row(f).norm();
-    maxArea2 = std::max(maxArea2, area2[f]);
+    const double longest2 =
+      std::max({ (b - a).squaredNorm(), (c - b).squaredNorm(), (a - c).squaredNorm() });
+    // Per triangle and scale-free: sin of the largest angle's supplement below ~1e-12.
+    bad[f] = !(raw.row(f).norm() > 1e-12 * longest2);
   }
-  // Relative threshold: a triangle below 1e-14 of the largest is degenerate in double precision.
-  const double tiny = maxArea2 * 1e-14;
   Eigen::MatrixX3d N(nf, 3);
-  int count = 0;
   for (int f = 0; f < nf; ++f)
   {
-    if (area2[f] > tiny && area2[f] > 0.0)
+    if (!bad[f])
     {
-      N.row(f) = raw.row(f) / area2[f];
+      N.row(f) = raw.row(f).normalized();
       continue;
     }
-    ++count;
     Eigen::RowVector3d sum = Eigen::RowVector3d::Zero();
     for (int k = 0; k < 3; ++k)
     {
@@ -44,7 +42,7 @@ Eigen::MatrixX3d computeFaceNormals(
       for (int i = topo.ringOffsets[v]; i < topo.ringOffsets[v + 1]; ++i)
       {
         const int g = topo.ringFaces[i];
-        if (area2[g] > tiny)
+        if (!bad[g])
         {
           sum += raw.row(g);
         }
@@ -55,24 +53,25 @@ Eigen::MatrixX3d computeFaceNormals(
   }
   if (degenerate)
   {
-    *degenerate = count;
+    degenerate->swap(bad);
   }
   return N;
 }
 
-double meanEdgeLength(const Eigen::MatrixX3d& V, const MeshTopology& topo)
+double medianEdgeLength(const Eigen::MatrixX3d& V, const MeshTopology& topo)
 {
   const int ne = topo.numEdges();
   if (ne == 0)
   {
     return 0.0;
   }
-  double sum = 0.0;
+  std::vector<double> lengths(ne);
   for (int e = 0; e < ne; ++e)
   {
-    sum += (V.row(topo.edges(e, 0)) - V.row(topo.edges(e, 1))).norm();
+    lengths[e] = (V.row(topo.edges(e, 0)) - V.row(topo.edges(e, 1))).norm();
   }
-  return sum / ne;
+  std::nth_element(lengths.begin(), lengths.begin() + ne / 2, lengths.end());
+  return lengths[ne / 2];
 }
 
 namespace
@@ -113,9 +112,11 @@ CurvatureField computeCurvatureField(const Eigen::MatrixX3d& V, const Eigen::Mat
   }
 
   CurvatureField out;
-  out.normals = computeFaceNormals(V, F, topo, &out.degenerateFaces);
-  out.meanEdgeLength = meanEdgeLength(V, topo);
-  out.radius = options.radius * out.meanEdgeLength;
+  std::vector<char> degenerate;
+  out.normals = computeFaceNormals(V, F, topo, &degenerate);
+  out.degenerateFaces = static_cast<int>(std::count(degenerate.begin(), degenerate.end(), 1));
+  out.medianEdgeLength = medianEdgeLength(V, topo);
+  out.radius = options.radius * out.medianEdgeLength;
   const Eigen::MatrixX3d& N = out.normals;
 
   // Per-edge contribution beta |e| e e^T, beta > 0 where the edge is convex.
@@ -128,11 +129,11 @@ CurvatureField computeCurvatureField(const Eigen::MatrixX3d& V, const Eigen::Mat
       continue;
     }
     const int f0 = topo.edgeFaces(e, 0), f1 = topo.edgeFaces(e, 1);
-    const Eigen::Vector3d n0 = N.row(f0), n1 = N.row(f1);
-    if (n0.squaredNorm() == 0.0 || n1.squaredNorm() == 0.0)
+    if (degenerate[f0] || degenerate[f1])
     {
-      continue;
+      continue; // a borrowed normal says nothing about the bend across this edge
     }
+    const Eigen::Vector3d n0 = N.row(f0), n1 = N.row(f1);
     // Orient the edge as it runs in f0.
     const int k0 = MeshTopology::cornerOf(F, f0, topo.edges(e, 0));
     int from = topo.edges(e, 0), to = topo.edges(e, 1);
@@ -180,37 +181,44 @@ CurvatureField computeCurvatureField(const Eigen::MatrixX3d& V, const Eigen::Mat
   out.weight.resize(nf);
   const double r2 = out.radius * out.radius;
   const int threads = options.numThreads > 0 ? options.numThreads : defaultThreadCount();
+  const size_t cap =
+    options.maxNeighborhood > 0 ? static_cast<size_t>(options.maxNeighborhood) : size_t(-1);
+  std::vector<int> truncated(std::max(1, threads), 0);
 
-  parallelFor(nf, threads, [&](int begin, int end, int) {
-    std::vector<int> stamp(nf, -1); // per-block visit marks
+  parallelFor(nf, threads, [&](int begin, int end, int thread) {
+    std::vector<int> stamp(r2 > 0.0 ? nf : 0, -1); // per-block visit marks
     std::vector<int> queue;
     for (int f = begin; f < end; ++f)
     {
-      // Breadth-first over edge neighbours whose centroid lies within the radius.
+      // Breadth-first over edge neighbours whose centroid lies closer than the radius.
       Tensor H = faceTensor[f];
       double A = area[f];
-      queue.clear();
-      queue.push_back(f);
-      stamp[f] = f;
-      const Eigen::RowVector3d cf = centroid.row(f);
-      for (size_t q = 0; q < queue.size(); ++q)
+      if (r2 > 0.0)
       {
-        const int g = queue[q];
-        for (int k = 0; k < 3; ++k)
+        queue.clear();
+        queue.push_back(f);
+        stamp[f] = f;
+        const Eigen::RowVector3d cf = centroid.row(f);
+        for (size_t q = 0; q < queue.size() && queue.size() < cap; ++q)
         {
-          const int h = topo.faceNeighbors(g, k);
-          if (h < 0 || stamp[h] == f)
+          const int g = queue[q];
+          for (int k = 0; k < 3 && queue.size() < cap; ++k)
           {
-            continue;
-          }
-          stamp[h] = f;
-          if ((centroid.row(h) - cf).squaredNorm() <= r2)
-          {
-            H += faceTensor[h];
-            A += area[h];
-            queue.push_back(h);
+            const int h = topo.faceNeighbors(g, k);
+            if (h < 0 || stamp[h] == f)
+            {
+              continue;
+            }
+            stamp[h] = f;
+            if ((centroid.row(h) - cf).squaredNorm() < r2)
+            {
+              H += faceTensor[h];
+              A += area[h];
+              queue.push_back(h);
+            }
           }
         }
+        truncated[thread] += queue.size() >= cap ? 1 : 0;
       }
       if (A > 0.0)
       {
@@ -218,11 +226,9 @@ CurvatureField computeCurvatureField(const Eigen::MatrixX3d& V, const Eigen::Mat
       }
 
       const Eigen::Vector3d n = N.row(f);
-      Eigen::Vector3d t1 = V.row(F(f, 1)) - V.row(F(f, 0));
-      t1 -= t1.dot(n) * n;
-      if (t1.squaredNorm() == 0.0 || n.squaredNorm() == 0.0)
+      if (n.squaredNorm() == 0.0)
       {
-        // No tangent plane: nothing sensible to say about this triangle.
+        // No normal at all (an isolated degenerate triangle): nothing to say here.
         out.curvatures.row(f).setZero();
         out.direction1.row(f).setZero();
         out.direction2.row(f).setZero();
@@ -230,6 +236,18 @@ CurvatureField computeCurvatureField(const Eigen::MatrixX3d& V, const Eigen::Mat
         out.frameV.row(f).setZero();
         out.weight[f] = 0.0;
         continue;
+      }
+      // Tangent basis from the longest edge (any tangent if it is parallel to n).
+      Eigen::Vector3d t1 = Eigen::Vector3d::Zero();
+      for (int k = 0; k < 3; ++k)
+      {
+        const Eigen::Vector3d e = V.row(F(f, (k + 1) % 3)) - V.row(F(f, k));
+        t1 = e.squaredNorm() > t1.squaredNorm() ? e : t1;
+      }
+      t1 -= t1.dot(n) * n;
+      if (!(t1.squaredNorm() > 1e-24 * std::max(1.0, V.row(F(f, 0)).squaredNorm())))
+      {
+        t1 = n.unitOrthogonal();
       }
       t1.normalize();
       const Eigen::Vector3d t2 = n.cross(t1);
@@ -253,6 +271,14 @@ CurvatureField computeCurvatureField(const Eigen::MatrixX3d& V, const Eigen::Mat
       out.weight[f] = norm > 0.0 ? std::abs(k1 - k2) / norm : 0.0;
     }
   });
+  for (int t : truncated)
+  {
+    out.truncatedNeighborhoods += t;
+  }
+  for (int f = 0; f < nf; ++f)
+  {
+    out.zeroFrames += out.frameU.row(f).squaredNorm() == 0.0 ? 1 : 0;
+  }
   return out;
 }
 

@@ -28,6 +28,71 @@ void unite(std::vector<int>& parent, int a, int b)
     parent[std::max(a, b)] = std::min(a, b);
   }
 }
+
+bool isDegenerate(const Eigen::MatrixX3i& F, int f)
+{
+  return F(f, 0) == F(f, 1) || F(f, 1) == F(f, 2) || F(f, 2) == F(f, 0);
+}
+
+/**
+ * Groups the triangles around one vertex into fans: triangles joined through an edge at the
+ * vertex that has exactly two triangles. Orientation plays no part, so a misoriented but manifold
+ * neighbourhood is one fan. Cost O(valence) with a scratch array of one entry per face.
+ */
+class FanLabeler
+{
+public:
+  explicit FanLabeler(int numFaces)
+    : Position(numFaces, -1)
+  {}
+
+  /// Labels faces[0..n) (all containing v, none degenerate); returns the number of fans.
+  /// fan[i] is in [0, count), numbered in order of first appearance.
+  int Label(const MeshTopology& T, const Eigen::MatrixX3i& F, int v, const int* faces, int n,
+    std::vector<int>& fan)
+  {
+    for (int i = 0; i < n; ++i)
+    {
+      this->Position[faces[i]] = i;
+    }
+    this->Parent.resize(n);
+    std::iota(this->Parent.begin(), this->Parent.end(), 0);
+    for (int i = 0; i < n; ++i)
+    {
+      const int f = faces[i];
+      const int k = MeshTopology::cornerOf(F, f, v);
+      for (const int edge : { k, (k + 2) % 3 })
+      {
+        const int g = T.faceNeighbors(f, edge);
+        if (g >= 0 && this->Position[g] >= 0)
+        {
+          unite(this->Parent, i, this->Position[g]);
+        }
+      }
+    }
+    fan.assign(n, -1);
+    std::vector<int> rootLabel(n, -1);
+    int count = 0;
+    for (int i = 0; i < n; ++i)
+    {
+      const int r = findRoot(this->Parent, i);
+      if (rootLabel[r] < 0)
+      {
+        rootLabel[r] = count++;
+      }
+      fan[i] = rootLabel[r];
+    }
+    for (int i = 0; i < n; ++i)
+    {
+      this->Position[faces[i]] = -1;
+    }
+    return count;
+  }
+
+private:
+  std::vector<int> Position; // face -> index in the current list, -1 elsewhere
+  std::vector<int> Parent;
+};
 }
 
 int MeshTopology::eulerCharacteristic() const
@@ -68,6 +133,7 @@ MeshTopology buildTopology(const Eigen::MatrixX3i& F, int numVertices)
   T.numVertices = numVertices;
   T.numFaces = static_cast<int>(F.rows());
   const int nf = T.numFaces;
+  std::vector<char> degenerate(nf, 0);
   for (int f = 0; f < nf; ++f)
   {
     for (int k = 0; k < 3; ++k)
@@ -78,24 +144,31 @@ MeshTopology buildTopology(const Eigen::MatrixX3i& F, int numVertices)
           " refers to vertex " + std::to_string(F(f, k)) + " of " + std::to_string(numVertices));
       }
     }
-    if (F(f, 0) == F(f, 1) || F(f, 1) == F(f, 2) || F(f, 2) == F(f, 0))
+    if (isDegenerate(F, f))
     {
+      degenerate[f] = 1;
       T.degenerateFaces.push_back(f);
     }
   }
 
-  // Edges: sort the 3F half-edges by their unordered vertex pair.
+  // Edges: sort the half-edges of the non-degenerate triangles by their unordered vertex pair.
+  // A triangle that repeats a vertex has no edges: it would only corrupt its neighbours'.
   struct HalfEdge
   {
     int a, b, corner; // a < b; corner = 3f + k
   };
-  std::vector<HalfEdge> he(3 * static_cast<size_t>(nf));
+  std::vector<HalfEdge> he;
+  he.reserve(3 * static_cast<size_t>(nf));
   for (int f = 0; f < nf; ++f)
   {
+    if (degenerate[f])
+    {
+      continue;
+    }
     for (int k = 0; k < 3; ++k)
     {
       const int p = F(f, k), q = F(f, (k + 1) % 3);
-      he[3 * f + k] = { std::min(p, q), std::max(p, q), 3 * f + k };
+      he.push_back({ std::min(p, q), std::max(p, q), 3 * f + k });
     }
   }
   std::sort(he.begin(), he.end(), [](const HalfEdge& x, const HalfEdge& y) {
@@ -114,11 +187,6 @@ MeshTopology buildTopology(const Eigen::MatrixX3i& F, int numVertices)
     while (j < he.size() && he[j].a == he[i].a && he[j].b == he[i].b)
     {
       ++j;
-    }
-    if (he[i].a == he[i].b)
-    {
-      i = j; // an edge of a degenerate triangle: no edge, recorded in degenerateFaces
-      continue;
     }
     const int e = static_cast<int>(edgeList.size());
     edgeList.emplace_back(he[i].a, he[i].b);
@@ -146,11 +214,8 @@ MeshTopology buildTopology(const Eigen::MatrixX3i& F, int numVertices)
       {
         T.misorientedEdges.push_back(e);
       }
-      if (f0 != f1)
-      {
-        T.faceNeighbors(f0, c0 % 3) = f1;
-        T.faceNeighbors(f1, c1 % 3) = f0;
-      }
+      T.faceNeighbors(f0, c0 % 3) = f1;
+      T.faceNeighbors(f1, c1 % 3) = f0;
     }
     i = j;
   }
@@ -165,13 +230,18 @@ MeshTopology buildTopology(const Eigen::MatrixX3i& F, int numVertices)
     T.edgeFaceCount[e] = edgeCount[e];
   }
 
-  // Incident corners per vertex (CSR), then the ordered one-rings.
+  // Faces around each vertex (CSR over non-degenerate triangles), then fans and ordered rings.
   std::vector<int> offsets(numVertices + 1, 0);
+  std::vector<char> referenced(numVertices, 0);
   for (int f = 0; f < nf; ++f)
   {
     for (int k = 0; k < 3; ++k)
     {
-      ++offsets[F(f, k) + 1];
+      referenced[F(f, k)] = 1;
+      if (!degenerate[f])
+      {
+        ++offsets[F(f, k) + 1];
+      }
     }
   }
   std::partial_sum(offsets.begin(), offsets.end(), offsets.begin());
@@ -180,77 +250,86 @@ MeshTopology buildTopology(const Eigen::MatrixX3i& F, int numVertices)
     std::vector<int> fill(offsets.begin(), offsets.end() - 1);
     for (int f = 0; f < nf; ++f)
     {
-      for (int k = 0; k < 3; ++k)
+      for (int k = 0; !degenerate[f] && k < 3; ++k)
       {
         incident[fill[F(f, k)]++] = f;
       }
     }
   }
   T.ringOffsets = offsets;
-  T.ringFaces.assign(incident.size(), -1);
+  T.ringFaces = incident; // replaced by the ordered ring where there is one
+  T.ringOrdered.assign(numVertices, 0);
   T.boundaryVertex.assign(numVertices, 0);
-  std::vector<char> degenerate(nf, 0);
-  for (int f : T.degenerateFaces)
+  for (int e = 0; e < ne; ++e)
   {
-    degenerate[f] = 1;
+    if (T.edgeFaceCount[e] == 1)
+    {
+      T.boundaryVertex[T.edges(e, 0)] = T.boundaryVertex[T.edges(e, 1)] = 1;
+    }
   }
+  FanLabeler fans(nf);
+  std::vector<int> fan;
+  std::vector<char> visited(nf, 0);
   for (int v = 0; v < numVertices; ++v)
   {
-    const int begin = offsets[v], end = offsets[v + 1];
-    if (begin == end)
+    const int begin = offsets[v], n = offsets[v + 1] - offsets[v];
+    if (!referenced[v])
     {
       T.unreferencedVertices.push_back(v);
       continue;
     }
-    // Around v, the next face counterclockwise is across edge (k+2) of f, the previous across
-    // edge k, where k is v's corner in f.
-    int start = incident[begin];
-    int starts = 0;
-    bool usable = true;
-    for (int i = begin; i < end; ++i)
+    if (n == 0)
+    {
+      continue; // only degenerate triangles here: reported as such
+    }
+    if (fans.Label(T, F, v, incident.data() + begin, n, fan) > 1)
+    {
+      T.nonManifoldVertices.push_back(v);
+      continue;
+    }
+    // One fan. Walk it counterclockwise: the next face is across edge k+2 (k = v's corner), the
+    // previous across edge k. A boundary fan starts where there is no previous face.
+    int start = incident[begin], starts = 0;
+    for (int i = begin; i < begin + n; ++i)
     {
       const int f = incident[i];
-      const int k = MeshTopology::cornerOf(F, f, v);
-      if (degenerate[f])
-      {
-        usable = false;
-        continue;
-      }
-      if (T.faceNeighbors(f, k) < 0)
+      if (T.faceNeighbors(f, MeshTopology::cornerOf(F, f, v)) < 0)
       {
         ++starts;
         start = f;
       }
     }
-    if (starts > 0)
+    if (starts > 1)
     {
-      T.boundaryVertex[v] = 1;
+      continue; // only with misoriented or non-manifold edges at v; left unordered
     }
-    int count = 0;
-    if (usable && starts <= 1)
+    std::vector<int> ring;
+    ring.reserve(n);
+    int f = start;
+    bool ok = true;
+    while (f >= 0 && !visited[f] && static_cast<int>(ring.size()) < n)
     {
-      int f = start;
-      do
-      {
-        T.ringFaces[begin + count++] = f;
-        const int k = MeshTopology::cornerOf(F, f, v);
-        f = T.faceNeighbors(f, (k + 2) % 3);
-      } while (f >= 0 && f != start && count < end - begin);
-      if ((f == start) == (starts == 1))
-      {
-        usable = false; // a closed walk around a boundary vertex, or an open one around an inner
-      }
+      visited[f] = 1;
+      ring.push_back(f);
+      f = T.faceNeighbors(f, (MeshTopology::cornerOf(F, f, v) + 2) % 3);
     }
-    if (!usable || starts > 1 || count != end - begin)
+    ok = static_cast<int>(ring.size()) == n && (starts == 0 ? f == start : f < 0);
+    for (int g : ring)
     {
-      T.nonManifoldVertices.push_back(v);
-      std::copy(incident.begin() + begin, incident.begin() + end, T.ringFaces.begin() + begin);
+      visited[g] = 0;
+    }
+    if (ok)
+    {
+      std::copy(ring.begin(), ring.end(), T.ringFaces.begin() + begin);
+      T.ringOrdered[v] = 1;
     }
   }
 
-  // Boundary loops: follow boundary half-edges tail to head.
+  // Boundary loops: walk boundary edges vertex to vertex until back at the start vertex. The
+  // walk keeps the triangles' direction where it can; on a non-orientable surface (a Moebius
+  // strip) the boundary edges' directions flip, so it goes by adjacency, not by direction.
   {
-    std::vector<int> outgoing(numVertices, -1); // boundary corner 3f+k leaving the vertex
+    std::vector<std::vector<int>> atVertex(numVertices); // boundary corners touching a vertex
     std::vector<int> boundaryCorners;
     for (int f = 0; f < nf; ++f)
     {
@@ -260,14 +339,13 @@ MeshTopology buildTopology(const Eigen::MatrixX3i& F, int numVertices)
         if (e >= 0 && T.edgeFaceCount[e] == 1)
         {
           boundaryCorners.push_back(3 * f + k);
-          int& o = outgoing[F(f, k)];
-          if (o < 0)
-          {
-            o = 3 * f + k;
-          }
+          atVertex[F(f, k)].push_back(3 * f + k);
+          atVertex[F(f, (k + 1) % 3)].push_back(3 * f + k);
         }
       }
     }
+    auto tail = [&](int c) { return F(c / 3, c % 3); };
+    auto head = [&](int c) { return F(c / 3, (c % 3 + 1) % 3); };
     std::vector<char> used(3 * static_cast<size_t>(nf), 0);
     for (int c0 : boundaryCorners)
     {
@@ -275,30 +353,27 @@ MeshTopology buildTopology(const Eigen::MatrixX3i& F, int numVertices)
       {
         continue;
       }
-      std::vector<int> loop;
-      int c = c0;
-      while (c >= 0 && !used[c])
+      used[c0] = 1;
+      const int start = tail(c0);
+      std::vector<int> loop = { start };
+      int current = head(c0);
+      while (current != start)
       {
-        used[c] = 1;
-        const int f = c / 3, k = c % 3;
-        loop.push_back(F(f, k));
-        const int next = F(f, (k + 1) % 3);
-        c = outgoing[next];
-        if (c >= 0 && used[c])
+        loop.push_back(current);
+        int next = -1;
+        for (int c : atVertex[current])
         {
-          // At a non-manifold vertex two loops touch; look for an unused outgoing corner.
-          c = -1;
-          for (int i = offsets[next]; i < offsets[next + 1] && c < 0; ++i)
+          if (!used[c] && (next < 0 || tail(c) == current))
           {
-            const int g = incident[i];
-            const int kk = MeshTopology::cornerOf(F, g, next);
-            const int e = T.faceEdges(g, kk);
-            if (e >= 0 && T.edgeFaceCount[e] == 1 && !used[3 * g + kk])
-            {
-              c = 3 * g + kk;
-            }
+            next = c; // any unused edge, preferably one leaving in the triangles' direction
           }
         }
+        if (next < 0)
+        {
+          break; // an open path: only next to defects that are reported anyway
+        }
+        used[next] = 1;
+        current = tail(next) == current ? head(next) : tail(next);
       }
       T.boundaryLoops.push_back(std::move(loop));
     }
@@ -317,7 +392,7 @@ MeshTopology buildTopology(const Eigen::MatrixX3i& F, int numVertices)
   int nc = 0;
   for (int v = 0; v < numVertices; ++v)
   {
-    if (offsets[v + 1] == offsets[v])
+    if (!referenced[v])
     {
       continue;
     }
@@ -379,66 +454,35 @@ MeshTopology buildTopology(const Eigen::MatrixX3i& F, int numVertices)
 std::vector<int> splitNonManifoldVertices(Eigen::MatrixX3d& V, Eigen::MatrixX3i& F)
 {
   const MeshTopology T = buildTopology(F, static_cast<int>(V.rows()));
-  std::vector<int> copies;
-  int next = static_cast<int>(V.rows());
-  std::vector<int> parent;
   std::vector<char> onNonManifoldEdge(V.rows(), 0);
   for (int e : T.nonManifoldEdges)
   {
     onNonManifoldEdge[T.edges(e, 0)] = onNonManifoldEdge[T.edges(e, 1)] = 1;
   }
+  std::vector<int> copies;
+  int next = static_cast<int>(V.rows());
+  FanLabeler fans(T.numFaces);
+  std::vector<int> fan;
   for (int v : T.nonManifoldVertices)
   {
     if (onNonManifoldEdge[v])
     {
       continue; // splitting here would cut the edge open: left for the caller to refuse
     }
-    const int begin = T.ringOffsets[v], end = T.ringOffsets[v + 1];
-    const int n = end - begin;
-    // Join incident triangles that share an edge at v.
-    parent.resize(n);
-    std::iota(parent.begin(), parent.end(), 0);
-    for (int i = 0; i < n; ++i)
+    const int begin = T.ringOffsets[v], n = T.valence(v);
+    const int count = fans.Label(T, F, v, T.ringFaces.data() + begin, n, fan);
+    // Fan 0 keeps v; each other fan gets a copy. (Triangles that repeat a vertex are in no fan
+    // and keep v.)
+    std::vector<int> fanVertex(count, v);
+    for (int i = 1; i < count; ++i)
     {
-      const int f = T.ringFaces[begin + i];
-      const int k = MeshTopology::cornerOf(F, f, v);
-      if (k < 0)
-      {
-        continue;
-      }
-      for (const int edge : { k, (k + 2) % 3 })
-      {
-        const int g = T.faceNeighbors(f, edge);
-        for (int j = 0; g >= 0 && j < n; ++j)
-        {
-          if (T.ringFaces[begin + j] == g)
-          {
-            unite(parent, i, j);
-          }
-        }
-      }
+      fanVertex[i] = next++;
+      copies.push_back(v);
     }
-    // Fan of the first triangle keeps v; every other fan gets a copy.
-    std::vector<int> fanVertex(n, -1);
     for (int i = 0; i < n; ++i)
     {
-      const int root = findRoot(parent, i);
-      if (fanVertex[root] < 0)
-      {
-        fanVertex[root] = root == 0 ? v : next++;
-        if (root != 0)
-        {
-          copies.push_back(v);
-        }
-      }
       const int f = T.ringFaces[begin + i];
-      for (int k = 0; k < 3; ++k)
-      {
-        if (F(f, k) == v)
-        {
-          F(f, k) = fanVertex[root];
-        }
-      }
+      F(f, MeshTopology::cornerOf(F, f, v)) = fanVertex[fan[i]];
     }
   }
   if (!copies.empty())

@@ -45,19 +45,24 @@ struct MeshTopology
   Eigen::MatrixX2i edgeFaces;     ///< #E x 2 the first two faces on the edge (-1 if absent)
   Eigen::VectorXi edgeFaceCount;  ///< #E number of faces on the edge
 
-  std::vector<int> ringOffsets;     ///< #V+1, CSR offsets into ringFaces
-  std::vector<int> ringFaces;       ///< faces around each vertex, counterclockwise
-  std::vector<char> boundaryVertex; ///< #V, 1 on a boundary loop
+  std::vector<int> ringOffsets; ///< #V+1, CSR offsets into ringFaces
+  /// Non-degenerate faces around each vertex: counterclockwise where ringOrdered, else (at
+  /// non-manifold vertices, or where neighbours disagree in orientation) in index order.
+  std::vector<int> ringFaces;
+  std::vector<char> ringOrdered;    ///< #V, 1 where ringFaces is the counterclockwise fan
+  std::vector<char> boundaryVertex; ///< #V, 1 on an edge with one triangle
 
-  std::vector<std::vector<int>> boundaryLoops; ///< vertex loops, following face orientation
+  std::vector<std::vector<int>> boundaryLoops; ///< vertex loops, in the faces' direction
   Eigen::VectorXi vertexComponent;             ///< #V component index, -1 for unreferenced vertices
   Eigen::VectorXi faceComponent;               ///< #F component index
   std::vector<ComponentInfo> components;
 
-  std::vector<int> degenerateFaces;     ///< faces that repeat a vertex index
-  std::vector<int> nonManifoldEdges;    ///< edges with more than two faces
-  std::vector<int> nonManifoldVertices; ///< vertices whose faces do not form one fan or disk
-  std::vector<int> misorientedEdges;    ///< interior edges traversed twice in the same direction
+  /// faces that repeat a vertex index: they have no edges, no neighbours and are in no ring
+  std::vector<int> degenerateFaces;
+  std::vector<int> nonManifoldEdges; ///< edges with more than two faces
+  /// vertices whose triangles form several fans joined only at the vertex (orientation aside)
+  std::vector<int> nonManifoldVertices;
+  std::vector<int> misorientedEdges; ///< interior edges traversed twice in the same direction
   std::vector<int> unreferencedVertices;
 
   int numEdges() const { return static_cast<int>(edges.rows()); }
@@ -70,7 +75,7 @@ struct MeshTopology
   bool isClosed() const { return boundaryLoops.empty(); }
   /// Euler characteristic of the whole mesh (unreferenced vertices not counted).
   int eulerCharacteristic() const;
-  /// Number of faces around v.
+  /// Number of (non-degenerate) faces around v.
   int valence(int v) const { return ringOffsets[v + 1] - ringOffsets[v]; }
   /// Position (0..2) of vertex v in face f, -1 if absent.
   static int cornerOf(const Eigen::MatrixX3i& F, int f, int v)

@@ -247,9 +247,46 @@ TEST(CurvatureFrames, ZeroAreaTriangleGetsNeighbourhoodNormal)
   s.V.row(c) = 0.5 * (s.V.row(a) + s.V.row(b));
   const Sample r = run(s);
   EXPECT_EQ(r.field.degenerateFaces, 1);
-  EXPECT_TRUE(r.field.frameU.allFinite());
+  EXPECT_EQ(r.field.zeroFrames, 0);
   EXPECT_TRUE(r.field.curvatures.allFinite());
   EXPECT_NEAR(r.field.normals.row(0).norm(), 1.0, 1e-12);
+  // Every frame, the degenerate triangle's included, is a unit tangent vector.
+  for (int f = 0; f < r.topo.numFaces; ++f)
+  {
+    ASSERT_NEAR(r.field.frameU.row(f).norm(), 1.0, 1e-12) << f;
+    ASSERT_NEAR(r.field.frameU.row(f).dot(r.field.normals.row(f)), 0.0, 1e-12) << f;
+  }
+}
+
+TEST(CurvatureFrames, DegeneracyIsJudgedPerTriangleNotAgainstTheLargest)
+{
+  // A sphere of radius 1e-3 beside one triangle of size 1e5: the small triangles are fine.
+  Surface s = makeIcosphere(1e-3, 3);
+  const Eigen::Index nv = s.V.rows(), nf = s.F.rows();
+  s.V.conservativeResize(nv + 3, 3);
+  s.V.bottomRows(3) << 1e5, 0, 0, 2e5, 0, 0, 1e5, 1e5, 0;
+  s.F.conservativeResize(nf + 1, 3);
+  s.F.row(nf) << static_cast<int>(nv), static_cast<int>(nv + 1), static_cast<int>(nv + 2);
+  const Sample r = run(s);
+  EXPECT_EQ(r.field.degenerateFaces, 0);
+  EXPECT_EQ(r.field.zeroFrames, 0);
+  for (Eigen::Index f = 0; f < nf; ++f)
+  {
+    ASSERT_NEAR(r.field.curvatures(f, 0) * 1e-3, 1.0, 0.05) << f;
+  }
+}
+
+TEST(CurvatureFrames, NeighbourhoodIsCapped)
+{
+  Surface s = testSurface("torus");
+  MeshTopology topo = buildTopology(s.F, static_cast<int>(s.V.rows()));
+  CurvatureOptions opt;
+  opt.radius = 20.0;
+  opt.maxNeighborhood = 50;
+  const CurvatureField field = computeCurvatureField(s.V, s.F, topo, opt);
+  EXPECT_EQ(field.truncatedNeighborhoods, topo.numFaces);
+  opt.maxNeighborhood = 0; // no limit
+  EXPECT_EQ(computeCurvatureField(s.V, s.F, topo, opt).truncatedNeighborhoods, 0);
 }
 
 TEST(CurvatureFrames, InputFramesAreProjectedAndCompleted)

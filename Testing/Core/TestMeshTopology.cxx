@@ -75,6 +75,10 @@ TEST(MeshTopology, OneRingsAreOrderedCounterclockwise)
     {
       const int b = T.ringOffsets[v], n = T.valence(v);
       ASSERT_GT(n, 0);
+      ASSERT_TRUE(T.ringOrdered[v]);
+      // Each incident face exactly once.
+      std::set<int> faces(T.ringFaces.begin() + b, T.ringFaces.begin() + b + n);
+      EXPECT_EQ(static_cast<int>(faces.size()), n);
       // Consecutive faces share the edge from v to the previous face's last corner.
       for (int i = 0; i + 1 < n; ++i)
       {
@@ -92,6 +96,8 @@ TEST(MeshTopology, OneRingsAreOrderedCounterclockwise)
       {
         const int f = T.ringFaces[b];
         EXPECT_EQ(T.faceNeighbors(f, MeshTopology::cornerOf(s.F, f, v)), -1);
+        const int g = T.ringFaces[b + n - 1];
+        EXPECT_EQ(T.faceNeighbors(g, (MeshTopology::cornerOf(s.F, g, v) + 2) % 3), -1);
       }
     }
   }
@@ -242,4 +248,97 @@ TEST(MeshTopology, SplitsBowtieVerticesIntoManifoldFans)
   const Eigen::MatrixX3i before = s.F;
   EXPECT_TRUE(splitNonManifoldVertices(s.V, s.F).empty());
   EXPECT_EQ(s.F, before);
+}
+
+TEST(MeshTopology, MisorientedFanIsNotNonManifoldAndHasNoOrderedRing)
+{
+  // An open fan around vertex 0 with its third triangle flipped.
+  Eigen::MatrixX3i F(4, 3);
+  F << 0, 1, 2, 0, 2, 3, 0, 4, 3, 0, 4, 5;
+  const MeshTopology T = buildTopology(F, 6);
+  EXPECT_FALSE(T.isOriented());
+  EXPECT_TRUE(T.nonManifoldVertices.empty()) << "misorientation is not non-manifoldness";
+  EXPECT_FALSE(T.ringOrdered[0]);
+  std::set<int> ring(
+    T.ringFaces.begin() + T.ringOffsets[0], T.ringFaces.begin() + T.ringOffsets[1]);
+  EXPECT_EQ(ring, (std::set<int>{ 0, 1, 2, 3 }));
+}
+
+TEST(MeshTopology, MobiusStripIsManifoldButNotOrientable)
+{
+  // A strip of 6 quads whose ends are glued with a half twist.
+  const int n = 6;
+  Eigen::MatrixX3i F(2 * n, 3);
+  for (int i = 0; i < n; ++i)
+  {
+    int a = i, b = i + 1, c = n + 1 + i + 1, d = n + 1 + i; // bottom row 0..n, top row n+1..2n+1
+    if (i == n - 1)
+    {
+      b = n + 1; // glue with the twist: bottom end meets the top start
+      c = 0;
+    }
+    F.row(2 * i) << a, b, c;
+    F.row(2 * i + 1) << a, c, d;
+  }
+  const MeshTopology T = buildTopology(F, 2 * n + 2);
+  EXPECT_FALSE(T.isOriented());
+  EXPECT_TRUE(T.nonManifoldVertices.empty()) << T.describeDefects();
+  EXPECT_TRUE(T.nonManifoldEdges.empty());
+  ASSERT_EQ(T.numComponents(), 1);
+  EXPECT_EQ(T.components[0].genus, -1);
+  EXPECT_EQ(T.boundaryLoops.size(), 1u); // a Moebius strip has one boundary curve
+}
+
+TEST(MeshTopology, DegenerateTriangleLeavesItsNeighboursAlone)
+{
+  // Triangle 2 repeats vertex 1 and lies on edge (0,1) shared by triangles 0 and 1.
+  Eigen::MatrixX3i F(3, 3);
+  F << 0, 1, 2, 0, 3, 1, 0, 1, 1;
+  const MeshTopology T = buildTopology(F, 4);
+  EXPECT_EQ(T.degenerateFaces, std::vector<int>{ 2 });
+  EXPECT_TRUE(T.nonManifoldEdges.empty());
+  EXPECT_EQ(T.faceNeighbors(0, 0), 1);
+  EXPECT_EQ(T.faceNeighbors(2, 0), -1);
+  EXPECT_EQ(T.faceEdges(2, 0), -1);
+  for (int v = 0; v < 4; ++v)
+  {
+    for (int i = T.ringOffsets[v]; i < T.ringOffsets[v + 1]; ++i)
+    {
+      EXPECT_NE(T.ringFaces[i], 2);
+    }
+  }
+  // A split leaves a degenerate triangle with its vertex and adds nothing unused.
+  Eigen::MatrixX3i G(3, 3);
+  G << 0, 1, 2, 0, 2, 3, 0, 0, 4;
+  Eigen::MatrixX3d V = Eigen::MatrixX3d::Random(5, 3);
+  EXPECT_TRUE(splitNonManifoldVertices(V, G).empty());
+  EXPECT_TRUE(buildTopology(G, static_cast<int>(V.rows())).unreferencedVertices.empty());
+}
+
+TEST(MeshTopology, BowtieHasTwoBoundaryLoops)
+{
+  Eigen::MatrixX3i F(2, 3);
+  F << 0, 1, 2, 0, 3, 4;
+  const MeshTopology T = buildTopology(F, 5);
+  ASSERT_EQ(T.boundaryLoops.size(), 2u);
+  EXPECT_EQ(T.boundaryLoops[0].size(), 3u);
+  EXPECT_EQ(T.boundaryLoops[1].size(), 3u);
+}
+
+TEST(MeshTopology, SplitIsLinearInTheValence)
+{
+  // A fan of 100000 triangles around vertex 0 plus one triangle touching it only at 0: the
+  // split must give one copy (and would take minutes if it were quadratic).
+  const int n = 100000;
+  Eigen::MatrixX3i F(n + 1, 3);
+  for (int i = 0; i < n; ++i)
+  {
+    F.row(i) << 0, i + 1, i + 2;
+  }
+  F.row(n) << 0, n + 2, n + 3;
+  F(n, 1) = n + 3;
+  F(n, 2) = n + 4;
+  Eigen::MatrixX3d V = Eigen::MatrixX3d::Zero(n + 5, 3);
+  EXPECT_EQ(splitNonManifoldVertices(V, F), std::vector<int>{ 0 });
+  EXPECT_EQ(F(n, 0), n + 5);
 }

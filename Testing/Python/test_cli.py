@@ -152,6 +152,86 @@ class CommandLine(unittest.TestCase):
         p = self.write("c.vtp", "this is not xml\n")
         self.assert_one_line_error([p, "-o", "x.vtp"], 1, r"^quadcover: error: cannot read")
 
+    def test_point_ids_out_of_range(self):
+        vtk_head = "# vtk DataFile Version 3.0\nbad\nASCII\nDATASET POLYDATA\n" \
+                   "POINTS 3 float\n0 0 0 1 0 0 0 1 0\n"
+        ply_head = "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\n" \
+                   "property float y\nproperty float z\nelement face 1\n" \
+                   "property list uchar int vertex_indices\nend_header\n0 0 0\n1 0 0\n0 1 0\n"
+        cases = {"huge.vtk": vtk_head + "POLYGONS 1 4\n3 0 1 100000000\n",
+                 "negative.vtk": vtk_head + "POLYGONS 1 4\n3 0 1 -5\n",
+                 "quad.vtk": vtk_head + "POLYGONS 1 5\n4 0 1 2 70000\n",
+                 "huge.ply": ply_head + "3 0 1 70000000\n"}
+        for name, text in cases.items():
+            with self.subTest(name=name):
+                self.assert_one_line_error([self.write(name, text), "-o",
+                                            os.path.join(self.dir, "x.vtp")], 1,
+                                           r"^quadcover: error: .*refers to point")
+        # The same in binary PLY, big- and little-endian.
+        import struct
+        for fmt, end in (("binary_little_endian", "<"), ("binary_big_endian", ">")):
+            head = ("ply\nformat %s 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+                    "property float z\nelement face 2\nproperty list uchar int vertex_indices\n"
+                    "end_header\n" % fmt).encode()
+            body = struct.pack(end + "9f", 0, 0, 0, 1, 0, 0, 0, 1, 0)
+            body += struct.pack(end + "B3i", 3, 0, 1, 2) + struct.pack(end + "B3i", 3, 0, 2, 5)
+            path = os.path.join(self.dir, fmt + ".ply")
+            with open(path, "wb") as f:
+                f.write(head + body)
+            with self.subTest(fmt=fmt):
+                self.assert_one_line_error([path, "-o", "x.vtp"], 1, r"face 1 refers to point 5")
+        obj = self.write("bad.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 9\n")
+        self.assert_one_line_error([obj, "-o", "x.vtp"], 1,
+                                   r"^quadcover: error: .*line 4 refers to vertex 9")
+        obj = self.write("zero.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 0 1 2\n")
+        self.assert_one_line_error([obj, "-o", "x.vtp"], 1, r"refers to vertex 0")
+
+    def test_collinear_points_are_refused(self):
+        p = self.write("line.obj", "v 0 0 0\nv 1 0 0\nv 2 0 0\nv 3 0 0\nf 1 2 3\nf 2 4 3\n")
+        self.assert_one_line_error([p, "-o", os.path.join(self.dir, "x.vtp")], 1,
+                                   r"^quadcover: error: .*degenerate")
+
+    def test_strip_joins_do_not_become_triangles(self):
+        p = self.write("strip.vtk", "# vtk DataFile Version 3.0\nstrip\nASCII\n"
+                       "DATASET POLYDATA\nPOINTS 8 float\n"
+                       "0 0 0 1 0 0 0 1 0 1 1 0 3 0 0 4 0 0 3 1 0 4 1 0\n"
+                       "TRIANGLE_STRIPS 1 11\n10 0 1 2 3 3 4 4 5 6 7\n")
+        out = os.path.join(self.dir, "strip.vtp")
+        code, _, err = run(p, "-o", out)
+        self.assertEqual(code, 0, err)
+        self.assertEqual(self.check_frames(out).GetNumberOfCells(), 4)
+
+    def test_user_frames_reach_the_filter(self):
+        # A torus with FrameU = z everywhere: kept (projected) unless --no-input-frames.
+        reader = vtk.vtkOBJReader()
+        reader.SetFileName(os.path.join(DATA, "torus.obj"))
+        reader.Update()
+        torus = reader.GetOutput()
+        frame = vtk.vtkDoubleArray()
+        frame.SetName("FrameU")
+        frame.SetNumberOfComponents(3)
+        for _ in range(torus.GetNumberOfCells()):
+            frame.InsertNextTuple3(0.0, 0.0, 1.0)
+        torus.GetCellData().AddArray(frame)
+        path = os.path.join(self.dir, "user.vtp")
+        w = vtk.vtkXMLPolyDataWriter()
+        w.SetFileName(path)
+        w.SetInputData(torus)
+        w.Write()
+
+        def mean_abs_uz(*extra):
+            out = os.path.join(self.dir, "u.vtp")
+            code, _, err = run(path, "-o", out, *extra)
+            self.assertEqual(code, 0, err)
+            u = self.check_frames(out).GetCellData().GetArray("FrameU")
+            return sum(abs(u.GetComponent(i, 2)) for i in range(u.GetNumberOfTuples())) \
+                / u.GetNumberOfTuples()
+
+        # The projected z axis has a large z part; the curvature frame (along the parallels of
+        # the torus) has none.
+        self.assertGreater(mean_abs_uz(), 0.5)
+        self.assertLess(mean_abs_uz("--no-input-frames"), 0.01)
+
     def test_unknown_input_extension(self):
         self.assert_one_line_error([self.write("a.txt", "x"), "-o", "x.vtp"], 1,
                                    r"unknown extension")

@@ -60,7 +60,7 @@ class CurvaturePipeline(unittest.TestCase):
         f = vtkCurvatureFrames()
         self.assertEqual(f.GetNeighborhoodRadius(), 2.0)
         f.SetNeighborhoodRadius(1000)
-        self.assertEqual(f.GetNeighborhoodRadius(), 100.0)
+        self.assertEqual(f.GetNeighborhoodRadius(), 20.0)
         f.UseInputFramesOff()
         self.assertFalse(f.GetUseInputFrames())
         self.assertIn("NeighborhoodRadius", str(f))

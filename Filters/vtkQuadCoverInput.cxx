@@ -1,0 +1,147 @@
+#include "vtkQuadCoverInput.h"
+
+#include "vtkCellArray.h"
+#include "vtkCellData.h"
+#include "vtkIdList.h"
+#include "vtkNew.h"
+#include "vtkPoints.h"
+#include "vtkTriangleFilter.h"
+
+#include <cmath>
+#include <limits>
+
+namespace vtkQuadCoverInput
+{
+std::string CheckPointIds(vtkPolyData* in)
+{
+  const vtkIdType n = in->GetNumberOfPoints();
+  if (n > static_cast<vtkIdType>(std::numeric_limits<int>::max()))
+  {
+    return "more than 2^31 points are not supported";
+  }
+  vtkCellArray* arrays[4] = { in->GetVerts(), in->GetLines(), in->GetPolys(), in->GetStrips() };
+  const char* kinds[4] = { "vertex", "line", "polygon", "strip" };
+  for (int a = 0; a < 4; ++a)
+  {
+    vtkCellArray* cells = arrays[a];
+    if (!cells)
+    {
+      continue;
+    }
+    vtkNew<vtkIdList> ids;
+    for (vtkIdType c = 0; c < cells->GetNumberOfCells(); ++c)
+    {
+      cells->GetCellAtId(c, ids);
+      for (vtkIdType k = 0; k < ids->GetNumberOfIds(); ++k)
+      {
+        if (ids->GetId(k) < 0 || ids->GetId(k) >= n)
+        {
+          return std::string(kinds[a]) + " cell " + std::to_string(c) + " refers to point " +
+            std::to_string(ids->GetId(k)) + ", but there are only " + std::to_string(n) + " points";
+        }
+      }
+    }
+  }
+  return "";
+}
+
+std::string CheckFinitePoints(vtkPolyData* in)
+{
+  double p[3];
+  for (vtkIdType i = 0; i < in->GetNumberOfPoints(); ++i)
+  {
+    in->GetPoint(i, p);
+    if (!std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2]))
+    {
+      return "point " + std::to_string(i) + " has a non-finite (NaN or infinite) coordinate";
+    }
+  }
+  return "";
+}
+
+std::string Triangulate(vtkPolyData* in, vtkPolyData* out, std::string& warning)
+{
+  warning.clear();
+  if (!in || in->GetNumberOfPoints() == 0)
+  {
+    return "the input has no points";
+  }
+  const vtkIdType numPolys = in->GetNumberOfPolys() + in->GetNumberOfStrips();
+  if (numPolys == 0)
+  {
+    return "the input has no polygons (a surface of triangles is needed)";
+  }
+  std::string problem = CheckPointIds(in);
+  if (problem.empty())
+  {
+    problem = CheckFinitePoints(in);
+  }
+  if (!problem.empty())
+  {
+    return problem;
+  }
+  const vtkIdType droppedCells = in->GetNumberOfVerts() + in->GetNumberOfLines();
+  bool onlyTriangles = in->GetNumberOfStrips() == 0 && droppedCells == 0;
+  if (onlyTriangles)
+  {
+    vtkCellArray* polys = in->GetPolys();
+    vtkNew<vtkIdList> cell;
+    for (vtkIdType c = 0; c < polys->GetNumberOfCells() && onlyTriangles; ++c)
+    {
+      polys->GetCellAtId(c, cell);
+      onlyTriangles = cell->GetNumberOfIds() == 3 && cell->GetId(0) != cell->GetId(1) &&
+        cell->GetId(1) != cell->GetId(2) && cell->GetId(2) != cell->GetId(0);
+    }
+  }
+  if (onlyTriangles)
+  {
+    out->ShallowCopy(in);
+    return "";
+  }
+  vtkNew<vtkTriangleFilter> tri;
+  tri->SetInputData(in);
+  tri->PassVertsOff();
+  tri->PassLinesOff();
+  tri->Update();
+  vtkPolyData* t = tri->GetOutput();
+
+  // Keep the triangles with three distinct points, with their cell data.
+  vtkNew<vtkCellArray> kept;
+  vtkNew<vtkIdList> keptIds;
+  vtkNew<vtkIdList> cell;
+  vtkCellArray* polys = t->GetPolys();
+  for (vtkIdType c = 0; c < polys->GetNumberOfCells(); ++c)
+  {
+    polys->GetCellAtId(c, cell);
+    if (cell->GetNumberOfIds() == 3 && cell->GetId(0) != cell->GetId(1) &&
+      cell->GetId(1) != cell->GetId(2) && cell->GetId(2) != cell->GetId(0))
+    {
+      kept->InsertNextCell(cell);
+      keptIds->InsertNextId(c);
+    }
+  }
+  const vtkIdType droppedTriangles = polys->GetNumberOfCells() - keptIds->GetNumberOfIds();
+  out->ShallowCopy(t);
+  if (droppedTriangles > 0)
+  {
+    vtkNew<vtkCellData> cd;
+    cd->CopyAllocate(t->GetCellData(), keptIds->GetNumberOfIds());
+    for (vtkIdType i = 0; i < keptIds->GetNumberOfIds(); ++i)
+    {
+      cd->CopyData(t->GetCellData(), keptIds->GetId(i), i);
+    }
+    out->SetPolys(kept);
+    out->GetCellData()->ShallowCopy(cd);
+  }
+  if (droppedCells > 0 || droppedTriangles > 0)
+  {
+    warning = std::to_string(droppedCells) + " vertex/line cells and " +
+      std::to_string(droppedTriangles) + " triangles that repeat a point were dropped";
+  }
+  if (out->GetNumberOfPolys() == 0)
+  {
+    return "the input's polygons are all degenerate (no triangle left)";
+  }
+  return "";
+}
+}
