@@ -12,6 +12,7 @@
 #include "vtkNew.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
+#include "vtkQuadCoverEigen.h"
 
 #include "Surfaces.h"
 
@@ -41,24 +42,7 @@ struct Case
 vtkSmartPointer<vtkPolyData> Torus(int nu, int nv)
 {
   const quadcover::Surface s = quadcover::makeTorus(1.0, 0.4, nu, nv);
-  vtkNew<vtkPoints> points;
-  points->SetDataTypeToDouble();
-  points->SetNumberOfPoints(s.V.rows());
-  for (Eigen::Index i = 0; i < s.V.rows(); ++i)
-  {
-    points->SetPoint(i, s.V(i, 0), s.V(i, 1), s.V(i, 2));
-  }
-  vtkNew<vtkCellArray> polys;
-  polys->AllocateExact(s.F.rows(), 3 * s.F.rows());
-  for (Eigen::Index f = 0; f < s.F.rows(); ++f)
-  {
-    const vtkIdType ids[3] = { s.F(f, 0), s.F(f, 1), s.F(f, 2) };
-    polys->InsertNextCell(3, ids);
-  }
-  auto pd = vtkSmartPointer<vtkPolyData>::New();
-  pd->SetPoints(points);
-  pd->SetPolys(polys);
-  return pd;
+  return vtkQuadCoverEigen::ToPolyData(s.V, s.F);
 }
 
 /// Child: load, run the stage `repeat` times with `threads`, print "triangles seconds".

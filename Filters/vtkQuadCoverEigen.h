@@ -1,5 +1,6 @@
 // vtkQuadCoverEigen.h (private): copies between vtkPolyData/vtkDataArray and the core's Eigen
-// matrices. Not wrapped: Eigen types must stay out of the public, wrapped headers.
+// matrices. Not wrapped or installed (Eigen types must stay out of the public, wrapped headers);
+// the in-tree command line, tests and benchmarks use it too.
 #ifndef vtkQuadCoverEigen_h
 #define vtkQuadCoverEigen_h
 
@@ -48,6 +49,29 @@ inline Eigen::MatrixX3i Triangles(vtkPolyData* pd)
     ++f;
   }
   return F;
+}
+
+/// A new surface of double points V and triangles F.
+inline vtkSmartPointer<vtkPolyData> ToPolyData(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F)
+{
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  points->SetNumberOfPoints(V.rows());
+  for (Eigen::Index i = 0; i < V.rows(); ++i)
+  {
+    points->SetPoint(i, V(i, 0), V(i, 1), V(i, 2));
+  }
+  vtkNew<vtkCellArray> polys;
+  polys->AllocateExact(F.rows(), 3 * F.rows());
+  for (Eigen::Index f = 0; f < F.rows(); ++f)
+  {
+    const vtkIdType ids[3] = { F(f, 0), F(f, 1), F(f, 2) };
+    polys->InsertNextCell(3, ids);
+  }
+  auto pd = vtkSmartPointer<vtkPolyData>::New();
+  pd->SetPoints(points);
+  pd->SetPolys(polys);
+  return pd;
 }
 
 /// A new double array named `name` with the rows of M as tuples.

@@ -14,6 +14,7 @@
 #include "vtkPolyDataNormals.h"
 #include "vtkPolyDataReader.h"
 #include "vtkPolyDataWriter.h"
+#include "vtkQuadCoverEigen.h"
 #include "vtkQuadCoverInput.h"
 #include "vtkSTLReader.h"
 #include "vtkTriangleFilter.h"
@@ -572,23 +573,8 @@ vtkSmartPointer<vtkPolyData> PrepareSurface(
 
   // Bowtie vertices: one copy of the vertex per fan, point data copied along.
   const vtkIdType nv = out->GetNumberOfPoints();
-  Eigen::MatrixX3d V(nv, 3);
-  double p[3];
-  for (vtkIdType i = 0; i < nv; ++i)
-  {
-    out->GetPoint(i, p);
-    V.row(i) << p[0], p[1], p[2];
-  }
-  Eigen::MatrixX3i F(out->GetNumberOfPolys(), 3);
-  {
-    vtkNew<vtkIdList> ids;
-    vtkIdType f = 0;
-    for (out->GetPolys()->InitTraversal(); out->GetPolys()->GetNextCell(ids); ++f)
-    {
-      F.row(f) << static_cast<int>(ids->GetId(0)), static_cast<int>(ids->GetId(1)),
-        static_cast<int>(ids->GetId(2));
-    }
-  }
+  Eigen::MatrixX3d V = vtkQuadCoverEigen::Points(out);
+  Eigen::MatrixX3i F = vtkQuadCoverEigen::Triangles(out);
   const quadcover::MeshTopology topo = quadcover::buildTopology(F, static_cast<int>(nv));
   if (!topo.nonManifoldEdges.empty())
   {
@@ -601,28 +587,16 @@ vtkSmartPointer<vtkPolyData> PrepareSurface(
   repairs.splitVertices = static_cast<long long>(copies.size());
   if (!copies.empty())
   {
-    vtkNew<vtkPoints> points;
-    points->SetDataTypeToDouble();
-    points->SetNumberOfPoints(V.rows());
-    for (Eigen::Index i = 0; i < V.rows(); ++i)
-    {
-      points->SetPoint(i, V(i, 0), V(i, 1), V(i, 2));
-    }
+    vtkSmartPointer<vtkPolyData> split = vtkQuadCoverEigen::ToPolyData(V, F);
     vtkNew<vtkPointData> pointData;
     pointData->CopyAllocate(out->GetPointData(), V.rows());
     for (vtkIdType i = 0; i < V.rows(); ++i)
     {
       pointData->CopyData(out->GetPointData(), i < nv ? i : copies[i - nv], i);
     }
-    vtkNew<vtkCellArray> polys;
-    for (Eigen::Index f = 0; f < F.rows(); ++f)
-    {
-      const vtkIdType ids[3] = { F(f, 0), F(f, 1), F(f, 2) };
-      polys->InsertNextCell(3, ids);
-    }
-    out->SetPoints(points);
+    out->SetPoints(split->GetPoints());
     out->GetPointData()->ShallowCopy(pointData);
-    out->SetPolys(polys);
+    out->SetPolys(split->GetPolys());
   }
   return out;
 }

@@ -12,6 +12,7 @@
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkQuadCoverArrayNames.h"
+#include "vtkQuadCoverEigen.h"
 
 #include "MeshTopology.h"
 #include "Surfaces.h"
@@ -30,22 +31,7 @@ namespace
 {
 vtkSmartPointer<vtkPolyData> ToPolyData(const quadcover::Surface& s)
 {
-  vtkNew<vtkPoints> points;
-  points->SetDataTypeToDouble();
-  for (Eigen::Index i = 0; i < s.V.rows(); ++i)
-  {
-    points->InsertNextPoint(s.V(i, 0), s.V(i, 1), s.V(i, 2));
-  }
-  vtkNew<vtkCellArray> polys;
-  for (Eigen::Index f = 0; f < s.F.rows(); ++f)
-  {
-    const vtkIdType ids[3] = { s.F(f, 0), s.F(f, 1), s.F(f, 2) };
-    polys->InsertNextCell(3, ids);
-  }
-  auto pd = vtkSmartPointer<vtkPolyData>::New();
-  pd->SetPoints(points);
-  pd->SetPolys(polys);
-  return pd;
+  return vtkQuadCoverEigen::ToPolyData(s.V, s.F);
 }
 
 /// Runs the filter; returns the first error ("" if none) and the warnings.
