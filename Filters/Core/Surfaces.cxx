@@ -274,9 +274,9 @@ Surface makeKnotTube(int p, int q, double R, double rKnot, double tube, int nAlo
 
 Surface makeRoundedCube(double round, int n)
 {
-  if (!(round > 0.0 && round < 1.0) || n < 2)
+  if (!(round >= 0.0 && round < 1.0) || n < 2)
   {
-    throw std::invalid_argument("makeRoundedCube: need 0 < round < 1 and n >= 2");
+    throw std::invalid_argument("makeRoundedCube: need 0 <= round < 1 and n >= 2");
   }
   // Grid points on the cube's surface, shared along edges and corners through a map.
   std::map<std::array<int, 3>, int> index;
@@ -328,7 +328,7 @@ Surface makeRoundedCube(double round, int n)
     }
   }
   Surface s;
-  s.name = "roundedcube";
+  s.name = round > 0.0 ? "roundedcube" : "cube";
   s.V.resize(P.size(), 3);
   s.kappa.resize(P.size(), 2);
   s.direction1.setZero(P.size(), 3);
@@ -338,7 +338,7 @@ Surface makeRoundedCube(double round, int n)
     const Eigen::Vector3d p = P[i];
     const Eigen::Vector3d c = p.cwiseMax(-inner).cwiseMin(inner);
     const Eigen::Vector3d d = (p - c).normalized();
-    s.V.row(i) = (c + round * d).transpose();
+    s.V.row(i) = (round > 0.0 ? Eigen::Vector3d(c + round * d) : p).transpose();
     int clamped = 0, free = -1;
     for (int k = 0; k < 3; ++k)
     {

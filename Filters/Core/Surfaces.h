@@ -41,7 +41,8 @@ Surface makeSaddle(double a, double s, int n);
 Surface makeKnotTube(int p, int q, double R, double rKnot, double tube, int nAlong, int nAround,
   double jitter, double noise, unsigned seed);
 
-/// Axis-aligned cube [-1,1]^3 with edges rounded at radius `round` (0 < round < 1): a closed
+/// Axis-aligned cube [-1,1]^3 with edges rounded at radius `round` (0 <= round < 1; 0 gives the
+/// sharp cube of the paper's Fig. 4): a closed
 /// surface with flat faces, cylindrical edges and spherical corners, made by pushing an n x n
 /// grid on each face of the cube onto the rounded surface.
 Surface makeRoundedCube(double round, int n);

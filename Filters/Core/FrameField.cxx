@@ -1,0 +1,167 @@
+#include "FrameField.h"
+
+#include "CurvatureFrames.h"
+
+#include <Eigen/Dense>
+
+#include <cmath>
+
+namespace quadcover
+{
+namespace
+{
+constexpr double Pi = 3.14159265358979323846;
+}
+
+double wrapAngle(double a)
+{
+  a = std::fmod(a, 2.0 * Pi);
+  if (a <= -Pi)
+  {
+    a += 2.0 * Pi;
+  }
+  else if (a > Pi)
+  {
+    a -= 2.0 * Pi;
+  }
+  return a;
+}
+
+double wrapQuarter(double a)
+{
+  const double q = 0.5 * Pi;
+  a = std::fmod(a, q);
+  if (a <= -0.5 * q)
+  {
+    a += q;
+  }
+  else if (a > 0.5 * q)
+  {
+    a -= q;
+  }
+  return a;
+}
+
+FaceBases computeFaceBases(
+  const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F, const MeshTopology& topo)
+{
+  const int nf = static_cast<int>(F.rows());
+  FaceBases B;
+  B.normal = computeFaceNormals(V, F, topo);
+  B.b1.resize(nf, 3);
+  B.b2.resize(nf, 3);
+  for (int f = 0; f < nf; ++f)
+  {
+    const Eigen::Vector3d n = B.normal.row(f);
+    Eigen::Vector3d t = V.row(F(f, 1)) - V.row(F(f, 0));
+    t -= t.dot(n) * n;
+    if (!(t.squaredNorm() > 0.0) || n.squaredNorm() == 0.0)
+    {
+      t = n.squaredNorm() > 0.0 ? n.unitOrthogonal() : Eigen::Vector3d::UnitX();
+    }
+    t.normalize();
+    B.b1.row(f) = t.transpose();
+    B.b2.row(f) = n.cross(t).transpose();
+  }
+  return B;
+}
+
+Eigen::VectorXd vectorAngles(const FaceBases& bases, const Eigen::MatrixX3d& U)
+{
+  const Eigen::Index nf = U.rows();
+  Eigen::VectorXd a(nf);
+  for (Eigen::Index f = 0; f < nf; ++f)
+  {
+    a[f] = std::atan2(U.row(f).dot(bases.b2.row(f)), U.row(f).dot(bases.b1.row(f)));
+  }
+  return a;
+}
+
+Eigen::MatrixX3d angleVectors(const FaceBases& bases, const Eigen::VectorXd& angles)
+{
+  Eigen::MatrixX3d U(angles.size(), 3);
+  for (Eigen::Index f = 0; f < angles.size(); ++f)
+  {
+    U.row(f) = std::cos(angles[f]) * bases.b1.row(f) + std::sin(angles[f]) * bases.b2.row(f);
+  }
+  return U;
+}
+
+Eigen::MatrixX3d computeTransport(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F,
+  const MeshTopology& topo, const FaceBases& bases)
+{
+  const int nf = static_cast<int>(F.rows());
+  Eigen::MatrixX3d T = Eigen::MatrixX3d::Zero(nf, 3);
+  for (int f = 0; f < nf; ++f)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      const int g = topo.faceNeighbors(f, k);
+      if (g < 0)
+      {
+        continue;
+      }
+      // The shared edge, as one 3D vector, measured in both bases: unfolding g onto f about the
+      // edge keeps the edge fixed, so angles shift by the difference.
+      const Eigen::Vector3d e = V.row(F(f, (k + 1) % 3)) - V.row(F(f, k));
+      const double af = std::atan2(e.dot(bases.b2.row(f)), e.dot(bases.b1.row(f)));
+      const double ag = std::atan2(e.dot(bases.b2.row(g)), e.dot(bases.b1.row(g)));
+      T(f, k) = wrapAngle(af - ag);
+    }
+  }
+  return T;
+}
+
+Eigen::MatrixX3d cornerAngles(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F)
+{
+  Eigen::MatrixX3d A(F.rows(), 3);
+  for (Eigen::Index f = 0; f < F.rows(); ++f)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      const Eigen::Vector3d p = V.row(F(f, k));
+      const Eigen::Vector3d a = V.row(F(f, (k + 1) % 3)) - p.transpose();
+      const Eigen::Vector3d b = V.row(F(f, (k + 2) % 3)) - p.transpose();
+      A(f, k) = std::atan2(a.cross(b).norm(), a.dot(b));
+    }
+  }
+  return A;
+}
+
+Eigen::VectorXd angleDefects(
+  const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F, const MeshTopology& topo)
+{
+  const Eigen::MatrixX3d A = cornerAngles(V, F);
+  Eigen::VectorXd K(V.rows());
+  for (Eigen::Index v = 0; v < V.rows(); ++v)
+  {
+    K[v] = topo.boundaryVertex[v] ? Pi : 2.0 * Pi;
+  }
+  for (Eigen::Index f = 0; f < F.rows(); ++f)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      K[F(f, k)] -= A(f, k);
+    }
+  }
+  for (int v : topo.unreferencedVertices)
+  {
+    K[v] = 0.0;
+  }
+  return K;
+}
+
+void rotateFrames(
+  const FaceBases& bases, const Eigen::VectorXd& alpha, Eigen::MatrixX3d& U, Eigen::MatrixX3d& V)
+{
+  for (Eigen::Index f = 0; f < alpha.size(); ++f)
+  {
+    const Eigen::Vector3d n = bases.normal.row(f);
+    const double c = std::cos(alpha[f]), s = std::sin(alpha[f]);
+    const Eigen::Vector3d u = U.row(f), v = V.row(f);
+    U.row(f) = (c * u + s * n.cross(u)).transpose();
+    V.row(f) = (c * v + s * n.cross(v)).transpose();
+  }
+}
+
+}

@@ -1,0 +1,66 @@
+// FrameField.h: the discrete tangent geometry frame fields live on: a basis per triangle, the
+// Levi-Civita transport across edges, angle defects, and frames as angles.
+#ifndef quadcover_FrameField_h
+#define quadcover_FrameField_h
+
+#include "MeshTopology.h"
+
+#include <Eigen/Core>
+
+namespace quadcover
+{
+
+/// Angle wrapped into (-pi, pi].
+double wrapAngle(double a);
+/// Angle reduced modulo pi/2 into (-pi/4, pi/4] (the rotation between two crosses).
+double wrapQuarter(double a);
+
+/**
+ * An orthonormal tangent basis per triangle: b1 along the triangle's first edge (from corner 0 to
+ * corner 1) projected into its plane, b2 = normal x b1. Angles of tangent vectors are measured
+ * from b1 towards b2 (counterclockwise seen from the normal).
+ */
+struct FaceBases
+{
+  Eigen::MatrixX3d normal; ///< #F x 3 (computeFaceNormals)
+  Eigen::MatrixX3d b1;     ///< #F x 3
+  Eigen::MatrixX3d b2;     ///< #F x 3
+};
+
+/// @param[in] V #V x 3, @param[in] F #F x 3, @param[in] topo buildTopology(F, #V)
+FaceBases computeFaceBases(
+  const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F, const MeshTopology& topo);
+
+/// Angle of each row of U in its triangle's basis (#F).
+Eigen::VectorXd vectorAngles(const FaceBases& bases, const Eigen::MatrixX3d& U);
+
+/// Unit tangent vectors at the given angles (#F x 3).
+Eigen::MatrixX3d angleVectors(const FaceBases& bases, const Eigen::VectorXd& angles);
+
+/**
+ * Transport across edges: for face f and its edge k with neighbour g = faceNeighbors(f,k),
+ * transport(f,k) is the angle to add to an angle measured in g's basis to express the same
+ * (unfolded) direction in f's basis; 0 on edges without a neighbour. transport(g,k') =
+ * -transport(f,k) up to 2 pi, and around an interior vertex the transports add up to minus its
+ * angle defect (modulo 2 pi): parallel transport once around a vertex of positive curvature
+ * turns a vector counterclockwise by the defect.
+ */
+Eigen::MatrixX3d computeTransport(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F,
+  const MeshTopology& topo, const FaceBases& bases);
+
+/// Corner angles (#F x 3, at corner k).
+Eigen::MatrixX3d cornerAngles(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F);
+
+/// Angle defect per vertex: 2 pi - (sum of corner angles) inside, pi - (sum) on the boundary
+/// (the discrete Gaussian and geodesic curvature); Gauss-Bonnet: the sum is 2 pi chi.
+Eigen::VectorXd angleDefects(
+  const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F, const MeshTopology& topo);
+
+/// Rotates each frame (U, V) by alpha(f) about its triangle's normal (both vectors together, so
+/// a non-orthogonal frame keeps its shape).
+void rotateFrames(
+  const FaceBases& bases, const Eigen::VectorXd& alpha, Eigen::MatrixX3d& U, Eigen::MatrixX3d& V);
+
+}
+
+#endif

@@ -1,0 +1,94 @@
+// Matchings.h: the topology of a frame field (stage 3): per-edge matchings, layer shifts,
+// singularity indices, and the branch-point optimization of QuadCover Sect. 4.2.
+#ifndef quadcover_Matchings_h
+#define quadcover_Matchings_h
+
+#include "FrameField.h"
+#include "MeshTopology.h"
+
+#include <Eigen/Core>
+
+namespace quadcover
+{
+
+/**
+ * Matchings and what they imply.
+ *
+ * Convention (the paper's, Def. 5): matching(f,k) = r for face f and the neighbour g across its
+ * edge k means X_{g,m} = X_{f,(m - r) mod 4}: g's first frame vector, carried into f's plane,
+ * is f's frame vector number -r (mod 4), where f's vectors are X_0 = U, X_1 = n x U, X_2 = -U,
+ * X_3 = -n x U (quarter turns counterclockwise about f's normal). So matching(g,k') =
+ * -matching(f,k) mod 4, and -1 marks an edge with no neighbour (boundary or non-manifold).
+ *
+ * layerShift(v) = sum of the matchings from each triangle to the next, counterclockwise around v
+ * (Def. 4), mod 4; 0 on the boundary. index(v) is the frame field's true index at v: (angle
+ * defect + the frame's turning relative to parallel transport around v) / 2 pi, a multiple of
+ * 1/4 inside with layerShift = 4 index mod 4. On the boundary the index is that of the surface
+ * doubled across its boundary, halved; with frames aligned to the boundary it is a multiple of
+ * 1/4 too, and in all cases
+ *   sum of all indices (inner and boundary vertices) = Euler characteristic   (Poincare-Hopf).
+ */
+struct FrameTopology
+{
+  Eigen::MatrixX3i matching;  ///< #F x 3, in {0,1,2,3}, -1 without a neighbour
+  Eigen::VectorXi layerShift; ///< #V in {0,1,2,3}
+  Eigen::VectorXd index;      ///< #V true index
+  Eigen::MatrixX3d deviation; ///< #F x 3 angle between matched vectors across edge k (C_ij)
+  int singularities = 0;      ///< inner vertices with a non-zero index
+  int branchPoints = 0;       ///< inner vertices with a non-zero layer shift
+  double matchingCost = 0.0;  ///< sum over inner edges of the deviation (sum C_ij)
+  double maxIndexError = 0.0; ///< largest distance of an inner index from a multiple of 1/4
+};
+
+/// The geometry matchings are measured in; computed once per mesh.
+struct FrameGeometry
+{
+  FaceBases bases;
+  Eigen::MatrixX3d transport; ///< computeTransport
+  Eigen::MatrixX3d edgeAngle; ///< #F x 3 angle of edge k (corner k to k+1) in f's basis
+  Eigen::VectorXd defect;     ///< angleDefects
+};
+FrameGeometry computeFrameGeometry(
+  const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F, const MeshTopology& topo);
+
+/// Smallest-angle matchings of the frame field (angle of FrameU, four-fold) and their topology.
+FrameTopology computeMatchings(const Eigen::MatrixX3i& F, const MeshTopology& topo,
+  const FrameGeometry& geometry, const Eigen::MatrixX3d& frameU);
+
+/// Layer shifts, indices and costs of the frame field with the given matchings.
+/// @throws std::invalid_argument when matching(f,k) and its twin are not inverse
+FrameTopology evaluateMatchings(const Eigen::MatrixX3i& F, const MeshTopology& topo,
+  const FrameGeometry& geometry, const Eigen::MatrixX3d& frameU, const Eigen::MatrixX3i& matching);
+
+struct BranchPointOptions
+{
+  /// lambda of the cost lambda * (number of branch points) + sum of matching deviations
+  /// (radians); a path is changed only when it lowers that cost.
+  double weight = 1.0;
+  /// Vertices a search may visit from one branch point (a guard on very large meshes).
+  int maxVisited = 20000;
+  int maxPasses = 10;
+};
+
+struct BranchPointReport
+{
+  int before = 0;        ///< branch points before
+  int after = 0;         ///< after
+  double costBefore = 0; ///< lambda * branch points + sum C_ij
+  double costAfter = 0;
+  int pathsChanged = 0;
+};
+
+/**
+ * Greedy branch-point optimization (Sect. 4.2): from each branch point, search edge paths to
+ * other branch points whose layer shifts cancel (or combine into one), and change the matchings
+ * along the best path when that lowers lambda * C_b + sum C_ij. The layer shifts of the path's
+ * inner vertices do not change, so Poincare-Hopf keeps holding. Updates `topology` in place.
+ */
+BranchPointReport optimizeBranchPoints(const Eigen::MatrixX3i& F, const MeshTopology& topo,
+  const FrameGeometry& geometry, const Eigen::MatrixX3d& frameU, FrameTopology& topology,
+  const BranchPointOptions& options = BranchPointOptions());
+
+}
+
+#endif

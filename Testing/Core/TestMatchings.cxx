@@ -1,0 +1,206 @@
+// Matchings, layer shifts and indices: Poincare-Hopf for any field, the cube's corners, twins,
+// and branch-point optimization.
+#include "CurvatureFrames.h"
+#include "FrameField.h"
+#include "Matchings.h"
+#include "MeshTopology.h"
+#include "Surfaces.h"
+#include "TestSurfaces.h"
+
+#include <Eigen/Geometry>
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+using namespace quadcover;
+
+namespace
+{
+constexpr double Pi = 3.14159265358979323846;
+
+struct Mesh
+{
+  Surface s;
+  MeshTopology topo;
+  FrameGeometry geometry;
+};
+
+Mesh prepare(Surface s)
+{
+  MeshTopology topo = buildTopology(s.F, static_cast<int>(s.V.rows()));
+  FrameGeometry g = computeFrameGeometry(s.V, s.F, topo);
+  return { std::move(s), std::move(topo), std::move(g) };
+}
+
+Eigen::MatrixX3d randomFrames(const Mesh& m, unsigned seed)
+{
+  std::mt19937 rng(seed);
+  Eigen::VectorXd a(m.s.F.rows());
+  for (Eigen::Index f = 0; f < a.size(); ++f)
+  {
+    a[f] = 2.0 * Pi * (rng() / 4294967296.0);
+  }
+  return angleVectors(m.geometry.bases, a);
+}
+
+double indexSum(const FrameTopology& t)
+{
+  return t.index.sum();
+}
+}
+
+TEST(Matchings, TransportAroundAVertexIsMinusTheAngleDefect)
+{
+  const Mesh m = prepare(testSurface("sphere"));
+  for (int v = 0; v < m.topo.numVertices; v += 37)
+  {
+    double sum = 0.0;
+    const int b = m.topo.ringOffsets[v], n = m.topo.valence(v);
+    for (int i = 0; i < n; ++i)
+    {
+      const int f = m.topo.ringFaces[b + i];
+      sum += m.geometry.transport(f, (MeshTopology::cornerOf(m.s.F, f, v) + 2) % 3);
+    }
+    EXPECT_NEAR(wrapAngle(sum + m.geometry.defect[v]), 0.0, 1e-9) << v;
+  }
+  // Gauss-Bonnet.
+  EXPECT_NEAR(m.geometry.defect.sum(), 4.0 * Pi, 1e-9);
+}
+
+TEST(Matchings, PoincareHopfHoldsForRandomFieldsOnEverySurface)
+{
+  for (const char* name : { "sphere", "torus", "knot", "roundedcube", "cylinder", "saddle" })
+  {
+    const Mesh m = prepare(testSurface(name));
+    const int chi = m.topo.eulerCharacteristic();
+    for (unsigned seed : { 1u, 2u })
+    {
+      const FrameTopology t = computeMatchings(m.s.F, m.topo, m.geometry, randomFrames(m, seed));
+      SCOPED_TRACE(name);
+      EXPECT_NEAR(indexSum(t), chi, 1e-9);
+      EXPECT_LT(t.maxIndexError, 1e-9);
+      for (int v = 0; v < m.topo.numVertices; ++v)
+      {
+        if (!m.topo.boundaryVertex[v])
+        {
+          // Layer shift = 4 index mod 4 (the paper's remark after Def. 5).
+          const int quarters = static_cast<int>(std::lround(4.0 * t.index[v]));
+          ASSERT_EQ(t.layerShift[v], ((quarters % 4) + 4) % 4) << v;
+        }
+      }
+      // Twins are inverse, boundary edges are -1.
+      for (int f = 0; f < m.topo.numFaces; ++f)
+      {
+        for (int k = 0; k < 3; ++k)
+        {
+          const int g = m.topo.faceNeighbors(f, k);
+          if (g < 0)
+          {
+            ASSERT_EQ(t.matching(f, k), -1);
+            continue;
+          }
+          for (int kk = 0; kk < 3; ++kk)
+          {
+            if (m.topo.faceNeighbors(g, kk) == f)
+            {
+              ASSERT_EQ((t.matching(f, k) + t.matching(g, kk)) % 4, 0);
+            }
+          }
+        }
+      }
+    }
+  }
+}
+
+TEST(Matchings, CubeCornersAreBranchPointsOfLayerShiftOne)
+{
+  // The paper's Fig. 4: a field along the cube's edges has a branch point at every corner.
+  const Mesh m = prepare(makeRoundedCube(0.0, 6));
+  Eigen::MatrixX3d U(m.s.F.rows(), 3);
+  for (Eigen::Index f = 0; f < U.rows(); ++f)
+  {
+    // A cube axis lying in the face: the first one orthogonal to the normal.
+    const Eigen::Vector3d n = m.geometry.bases.normal.row(f);
+    U.row(f) = std::abs(n.x()) < 0.5 ? Eigen::RowVector3d(1, 0, 0) : Eigen::RowVector3d(0, 1, 0);
+  }
+  const FrameTopology t = computeMatchings(m.s.F, m.topo, m.geometry, U);
+  EXPECT_EQ(t.branchPoints, 8);
+  EXPECT_EQ(t.singularities, 8);
+  for (int v = 0; v < m.topo.numVertices; ++v)
+  {
+    const bool corner = m.s.V.row(v).cwiseAbs().minCoeff() > 1.0 - 1e-12;
+    EXPECT_EQ(t.layerShift[v], corner ? 1 : 0) << v;
+    EXPECT_DOUBLE_EQ(t.index[v], corner ? 0.25 : 0.0) << v;
+  }
+  EXPECT_NEAR(t.matchingCost, 0.0, 1e-9);
+}
+
+TEST(Matchings, TorusCurvatureFramesHaveNoSingularities)
+{
+  const Mesh m = prepare(testSurface("torus"));
+  const CurvatureField c = computeCurvatureField(m.s.V, m.s.F, m.topo);
+  const FrameTopology t = computeMatchings(m.s.F, m.topo, m.geometry, c.frameU);
+  EXPECT_EQ(t.singularities, 0);
+  EXPECT_EQ(t.branchPoints, 0);
+}
+
+TEST(Matchings, BoundaryAlignedFieldOnADiskHasQuarterIndicesAtCorners)
+{
+  // The saddle patch is a square: a field along its grid lines is aligned with the boundary,
+  // the four corners carry 1/4 each and nothing else is singular.
+  const Mesh m = prepare(makeSaddle(1.0, 0.5, 12));
+  Eigen::MatrixX3d U(m.s.F.rows(), 3);
+  for (Eigen::Index f = 0; f < U.rows(); ++f)
+  {
+    // Along the grid's x lines: the tangent of (1, 0, x/a) at the centroid.
+    const double x = (m.s.V(m.s.F(f, 0), 0) + m.s.V(m.s.F(f, 1), 0) + m.s.V(m.s.F(f, 2), 0)) / 3;
+    U.row(f) = Eigen::RowVector3d(1.0, 0.0, x).normalized();
+  }
+  const FrameTopology t = computeMatchings(m.s.F, m.topo, m.geometry, U);
+  EXPECT_NEAR(t.index.sum(), 1.0, 1e-9);
+  int corners = 0;
+  for (int v = 0; v < m.topo.numVertices; ++v)
+  {
+    const bool corner = std::abs(std::abs(m.s.V(v, 0)) - 0.5) < 1e-12 &&
+      std::abs(std::abs(m.s.V(v, 1)) - 0.5) < 1e-12;
+    corners += corner ? 1 : 0;
+    EXPECT_NEAR(t.index[v], corner ? 0.25 : 0.0, 0.02) << v;
+  }
+  EXPECT_EQ(corners, 4);
+}
+
+TEST(Matchings, BranchPointOptimizationLowersTheCostAndKeepsPoincareHopf)
+{
+  for (const char* name : { "sphere", "torus", "knot" })
+  {
+    const Mesh m = prepare(testSurface(name));
+    const Eigen::MatrixX3d U = randomFrames(m, 5);
+    FrameTopology t = computeMatchings(m.s.F, m.topo, m.geometry, U);
+    BranchPointOptions opt;
+    opt.weight = 1.0;
+    const BranchPointReport r = optimizeBranchPoints(m.s.F, m.topo, m.geometry, U, t, opt);
+    SCOPED_TRACE(name);
+    std::printf("[ %s, random field ] branch points %d -> %d, cost %.2f -> %.2f\n", name, r.before,
+      r.after, r.costBefore, r.costAfter);
+    EXPECT_LT(r.after, r.before);
+    EXPECT_LE(r.costAfter, r.costBefore + 1e-9);
+    EXPECT_EQ(r.after, t.branchPoints);
+    EXPECT_NEAR(t.index.sum(), m.topo.eulerCharacteristic(), 1e-9);
+    EXPECT_LT(t.maxIndexError, 1e-9);
+    // A zero weight changes nothing.
+    FrameTopology u = computeMatchings(m.s.F, m.topo, m.geometry, U);
+    opt.weight = 0.0;
+    EXPECT_EQ(optimizeBranchPoints(m.s.F, m.topo, m.geometry, U, u, opt).pathsChanged, 0);
+  }
+}
+
+TEST(Matchings, RejectsMatchingsThatAreNotInverse)
+{
+  const Mesh m = prepare(testSurface("sphere"));
+  const Eigen::MatrixX3d U = randomFrames(m, 1);
+  FrameTopology t = computeMatchings(m.s.F, m.topo, m.geometry, U);
+  Eigen::MatrixX3i bad = t.matching;
+  bad(0, 0) = (bad(0, 0) + 1) % 4;
+  EXPECT_THROW(evaluateMatchings(m.s.F, m.topo, m.geometry, U, bad), std::invalid_argument);
+}
