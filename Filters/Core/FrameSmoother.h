@@ -1,0 +1,70 @@
+// FrameSmoother.h: smoothing and curvature alignment of a frame field (stage 2, Sect. 4.3).
+#ifndef quadcover_FrameSmoother_h
+#define quadcover_FrameSmoother_h
+
+#include "Matchings.h"
+#include "MeshTopology.h"
+
+#include <Eigen/Core>
+
+#include <vector>
+
+namespace quadcover
+{
+
+struct SmootherOptions
+{
+  /// lambda in [0, 1]: E = lambda E_smooth + (1 - lambda) E_align.
+  double smoothingWeight = 0.5;
+  int maxIterations = 200;
+  /// Stop when an iteration lowers the energy by less than this fraction.
+  double tolerance = 1e-7;
+  /// Hold the frames of triangles along sharp edges (dihedral angle above featureAngle degrees,
+  /// the angle between the two normals as vtkFeatureEdges measures it) aligned to that edge.
+  bool alignToFeatures = true;
+  double featureAngle = 30.0;
+  /// Hold the frames of triangles along the boundary aligned to it.
+  bool alignToBoundary = true;
+  /// Besides the input, start from the globally optimal four-fold fields (Knoeppel et al. 2013):
+  /// the smoothest field blended with the alignment term, and (when no frame is held) the
+  /// smoothest field itself; keep the run that ends with the lowest energy.
+  bool globalStart = true;
+};
+
+struct SmootherResult
+{
+  Eigen::MatrixX3d frameU;       ///< #F x 3 smoothed frames
+  Eigen::MatrixX3d frameV;       ///< #F x 3 (rotated with frameU)
+  Eigen::VectorXd rotation;      ///< #F angle each frame turned (about its normal)
+  std::vector<char> constrained; ///< #F 1 where the frame is held along an edge
+  int numConstrained = 0;
+  int featureEdges = 0; ///< sharp inner edges found
+  int boundaryEdges = 0;
+  double energyBefore = 0.0; ///< E of the input frames
+  double energyAfter = 0.0;
+  std::vector<double> energyHistory; ///< E at the start and after every iteration (chosen run)
+  int iterations = 0;
+  bool fromGlobalStart = false; ///< the chosen run started from a global field
+};
+
+/**
+ * Rotates each frame by an angle alpha_i about its triangle's normal to minimize
+ *   E = lambda * sum_{inner edges ij} (A_i + A_j)/3 (1 - cos 4(theta_ij + alpha_i - alpha_j))
+ *     + (1 - lambda) * sum_i A_i w_i alpha_i^2
+ * where theta_ij is the angle between the frames after transporting one into the other's plane
+ * and w is the curvature weight (FrameWeight). Each iteration minimizes a quadratic upper bound
+ * of E (1 - cos is bounded by its second-order expansion with curvature 1), so E never
+ * increases; the bound's matrix does not change, so it is factored once.
+ * Frames held along features and boundaries: the triangle's longest such edge wins (at corners,
+ * where two meet at about a right angle, the cross fits both).
+ * @param[in] frameU, frameV #F x 3 input frames (tangent), @param[in] weight #F
+ * @throws std::invalid_argument on sizes that do not match
+ */
+SmootherResult smoothFrames(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F,
+  const MeshTopology& topo, const FrameGeometry& geometry, const Eigen::MatrixX3d& frameU,
+  const Eigen::MatrixX3d& frameV, const Eigen::VectorXd& weight,
+  const SmootherOptions& options = SmootherOptions());
+
+}
+
+#endif

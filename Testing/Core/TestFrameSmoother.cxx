@@ -1,0 +1,216 @@
+// The frame smoother: descent, lambda = 0, singularities of smoothed curvature fields, recovery
+// of a known field from noise, constraints along features and boundaries.
+#include "CurvatureFrames.h"
+#include "FrameField.h"
+#include "FrameSmoother.h"
+#include "Matchings.h"
+#include "MeshTopology.h"
+#include "Surfaces.h"
+#include "TestSurfaces.h"
+
+#include <Eigen/Geometry>
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <random>
+
+using namespace quadcover;
+
+namespace
+{
+constexpr double Pi = 3.14159265358979323846;
+constexpr double Deg = 180.0 / Pi;
+
+struct Case
+{
+  Surface s;
+  MeshTopology topo;
+  FrameGeometry geometry;
+  CurvatureField curvature;
+};
+
+Case prepare(Surface s)
+{
+  MeshTopology topo = buildTopology(s.F, static_cast<int>(s.V.rows()));
+  FrameGeometry g = computeFrameGeometry(s.V, s.F, topo);
+  CurvatureField c = computeCurvatureField(s.V, s.F, topo);
+  return { std::move(s), std::move(topo), std::move(g), std::move(c) };
+}
+
+SmootherResult smooth(const Case& c, SmootherOptions opt = SmootherOptions())
+{
+  return smoothFrames(c.s.V, c.s.F, c.topo, c.geometry, c.curvature.frameU, c.curvature.frameV,
+    c.curvature.weight, opt);
+}
+
+FrameTopology topology(const Case& c, const Eigen::MatrixX3d& U)
+{
+  return computeMatchings(c.s.F, c.topo, c.geometry, U);
+}
+
+/// Angle between two crosses (degrees, in [0, 45]).
+double crossAngle(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& n)
+{
+  return std::abs(wrapQuarter(std::atan2(n.dot(a.cross(b)), a.dot(b)))) * Deg;
+}
+}
+
+TEST(FrameSmoother, EnergyNeverIncreases)
+{
+  for (const char* name : { "knot", "sphere", "roundedcube", "cylinder" })
+  {
+    const Case c = prepare(testSurface(name));
+    for (double lambda : { 0.2, 0.5, 0.9, 1.0 })
+    {
+      SmootherOptions opt;
+      opt.smoothingWeight = lambda;
+      const SmootherResult r = smooth(c, opt);
+      for (size_t i = 1; i < r.energyHistory.size(); ++i)
+      {
+        ASSERT_LE(r.energyHistory[i], r.energyHistory[i - 1]) << name << " lambda " << lambda;
+      }
+      EXPECT_EQ(r.energyAfter, r.energyHistory.back());
+      // Unit tangent frames, V turned with U.
+      for (int f = 0; f < c.topo.numFaces; ++f)
+      {
+        const Eigen::Vector3d n = c.geometry.bases.normal.row(f), u = r.frameU.row(f);
+        ASSERT_NEAR(u.norm(), 1.0, 1e-9);
+        ASSERT_NEAR(u.dot(n), 0.0, 1e-9);
+        ASSERT_NEAR((Eigen::Vector3d(r.frameV.row(f)) - n.cross(u)).norm(), 0.0, 1e-9);
+      }
+    }
+  }
+}
+
+TEST(FrameSmoother, LambdaZeroReturnsTheInputFrames)
+{
+  const Case c = prepare(testSurface("knot"));
+  SmootherOptions opt;
+  opt.smoothingWeight = 0.0;
+  opt.alignToFeatures = false;
+  opt.alignToBoundary = false;
+  const SmootherResult r = smooth(c, opt);
+  EXPECT_LT((r.frameU - c.curvature.frameU).cwiseAbs().maxCoeff(), 1e-12);
+  EXPECT_EQ(r.energyAfter, 0.0);
+}
+
+TEST(FrameSmoother, TorusKeepsNoSingularities)
+{
+  const Case c = prepare(testSurface("torus"));
+  const SmootherResult r = smooth(c);
+  const FrameTopology t = topology(c, r.frameU);
+  EXPECT_EQ(t.singularities, 0);
+  // And stays along the curvature directions (omega is large everywhere on a torus).
+  double worst = 0.0;
+  for (int f = 0; f < c.topo.numFaces; ++f)
+  {
+    worst = std::max(worst,
+      crossAngle(r.frameU.row(f), c.curvature.frameU.row(f), c.geometry.bases.normal.row(f)));
+  }
+  EXPECT_LT(worst, 2.0);
+}
+
+TEST(FrameSmoother, SphereEndsWithEightQuarterSingularities)
+{
+  const Case c = prepare(testSurface("sphere"));
+  const SmootherResult r = smooth(c);
+  const FrameTopology t = topology(c, r.frameU);
+  std::printf("[ sphere ] %d singularities, energy %.4g -> %.4g, %d iterations, %s start\n",
+    t.singularities, r.energyBefore, r.energyAfter, r.iterations,
+    r.fromGlobalStart ? "global" : "input");
+  EXPECT_EQ(t.singularities, 8);
+  for (int v = 0; v < c.topo.numVertices; ++v)
+  {
+    EXPECT_TRUE(t.index[v] == 0.0 || t.index[v] == 0.25) << v << " " << t.index[v];
+  }
+  EXPECT_LT(r.energyAfter, r.energyBefore);
+}
+
+TEST(FrameSmoother, RecoversAKnownFieldFromNoise)
+{
+  // A cylinder whose frames point along the axis, disturbed by up to 25 degrees of noise; with
+  // the noisy frames as alignment target (weight 1) and lambda = 0.9 the field comes back.
+  Case c = prepare(makeCylinder(0.5, 2.0, 64, 40));
+  std::mt19937 rng(11);
+  const int nf = c.topo.numFaces;
+  Eigen::MatrixX3d truth(nf, 3), noisy(nf, 3), noisyV(nf, 3);
+  for (int f = 0; f < nf; ++f)
+  {
+    const Eigen::Vector3d n = c.geometry.bases.normal.row(f);
+    const Eigen::Vector3d axis = (Eigen::Vector3d::UnitZ() - n.z() * n).normalized();
+    truth.row(f) = axis.transpose();
+    const double a = (25.0 / Deg) * (2.0 * (rng() / 4294967296.0) - 1.0);
+    const Eigen::Vector3d u = std::cos(a) * axis + std::sin(a) * n.cross(axis);
+    noisy.row(f) = u.transpose();
+    noisyV.row(f) = n.cross(u).transpose();
+  }
+  SmootherOptions opt;
+  opt.smoothingWeight = 0.9;
+  opt.alignToBoundary = false;
+  const SmootherResult r =
+    smoothFrames(c.s.V, c.s.F, c.topo, c.geometry, noisy, noisyV, Eigen::VectorXd::Ones(nf), opt);
+  double mean = 0.0, worst = 0.0, before = 0.0;
+  for (int f = 0; f < nf; ++f)
+  {
+    const Eigen::Vector3d n = c.geometry.bases.normal.row(f);
+    const double e = crossAngle(r.frameU.row(f), truth.row(f), n);
+    mean += e / nf;
+    worst = std::max(worst, e);
+    before += crossAngle(noisy.row(f), truth.row(f), n) / nf;
+  }
+  std::printf(
+    "[ noisy cylinder ] mean error %.2f deg before, %.2f after, max %.2f\n", before, mean, worst);
+  EXPECT_LT(mean, 2.0);
+  EXPECT_LT(worst, 6.0);
+}
+
+TEST(FrameSmoother, HeldFramesFollowTheirEdgesAndStayPut)
+{
+  for (const char* name : { "cylinder", "roundedcube" })
+  {
+    Case c =
+      prepare(std::string(name) == "roundedcube" ? makeRoundedCube(0.0, 8) : testSurface(name));
+    const SmootherResult r = smooth(c);
+    ASSERT_GT(r.numConstrained, 0) << name;
+    SmootherOptions loose;
+    loose.maxIterations = 1;
+    const SmootherResult early = smooth(c, loose);
+    for (int f = 0; f < c.topo.numFaces; ++f)
+    {
+      if (!r.constrained[f])
+        continue;
+      // The cross contains one of the triangle's held edges' directions.
+      double best = 90.0;
+      for (int k = 0; k < 3; ++k)
+      {
+        const int g = c.topo.faceNeighbors(f, k);
+        const bool held = g < 0 ||
+          c.geometry.bases.normal.row(f).dot(c.geometry.bases.normal.row(g)) < std::cos(30.0 / Deg);
+        if (held)
+        {
+          const Eigen::Vector3d e = c.s.V.row(c.s.F(f, (k + 1) % 3)) - c.s.V.row(c.s.F(f, k));
+          best = std::min(best, crossAngle(r.frameU.row(f), e, c.geometry.bases.normal.row(f)));
+        }
+      }
+      ASSERT_LT(best, 1e-9) << name << " " << f;
+      // Held frames do not move while the free ones are optimized.
+      ASSERT_LT((r.frameU.row(f) - early.frameU.row(f)).norm(), 1e-12);
+    }
+  }
+}
+
+TEST(FrameSmoother, SharpCubeGetsItsEightCornerBranchPoints)
+{
+  // Curvature frames on the sharp cube, features held: the paper's Fig. 4.
+  const Case c = prepare(makeRoundedCube(0.0, 8));
+  const SmootherResult r = smooth(c);
+  const FrameTopology t = topology(c, r.frameU);
+  EXPECT_EQ(r.featureEdges, 12 * 8);
+  EXPECT_EQ(t.branchPoints, 8);
+  for (int v = 0; v < c.topo.numVertices; ++v)
+  {
+    const bool corner = c.s.V.row(v).cwiseAbs().minCoeff() > 1.0 - 1e-12;
+    EXPECT_EQ(t.layerShift[v], corner ? 1 : 0) << v;
+  }
+}
