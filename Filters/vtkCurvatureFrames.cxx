@@ -36,8 +36,10 @@ int vtkCurvatureFrames::RequestData(
   vtkPolyData* output = vtkPolyData::GetData(outputVector);
 
   vtkNew<vtkPolyData> surface;
+  vtkQuadCoverEigen::Mesh mesh;
   std::string warning;
-  const std::string problem = vtkQuadCoverInput::Triangulate(input, surface, warning);
+  const std::string problem =
+    vtkQuadCoverEigen::Load(input, surface, mesh, vtkQuadCoverEigen::Needs::ManifoldEdges, warning);
   if (!problem.empty())
   {
     vtkErrorMacro(<< "Cannot estimate curvature: " << problem << ".");
@@ -47,29 +49,12 @@ int vtkCurvatureFrames::RequestData(
   {
     vtkWarningMacro(<< warning << ".");
   }
-  this->UpdateProgress(0.1);
 
   try
   {
-    const Eigen::MatrixX3d V = vtkQuadCoverEigen::Points(surface);
-    const Eigen::MatrixX3i F = vtkQuadCoverEigen::Triangles(surface);
-    const quadcover::MeshTopology topo = quadcover::buildTopology(F, static_cast<int>(V.rows()));
-    // Per-triangle curvature needs manifold edges and one orientation; a vertex where fans of
-    // triangles touch (a bowtie) does not disturb it, so it is only reported.
-    if (!topo.degenerateFaces.empty() || !topo.nonManifoldEdges.empty() ||
-      !topo.misorientedEdges.empty())
-    {
-      vtkErrorMacro(<< "Cannot estimate curvature: the surface has " << topo.describeDefects()
-                    << "; merge duplicate points, remove non-manifold parts and orient the "
-                       "triangles consistently first.");
-      return 0;
-    }
-    if (!topo.nonManifoldVertices.empty())
-    {
-      vtkWarningMacro(<< topo.nonManifoldVertices.size()
-                      << " non-manifold vertices (fans of triangles touching at one vertex); "
-                         "later stages need them split.");
-    }
+    const Eigen::MatrixX3d& V = mesh.V;
+    const Eigen::MatrixX3i& F = mesh.F;
+    const quadcover::MeshTopology& topo = mesh.topo;
     this->UpdateProgress(0.2);
     if (this->GetAbortExecute())
     {

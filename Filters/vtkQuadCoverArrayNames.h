@@ -29,6 +29,35 @@ constexpr const char* FrameWeight = "FrameWeight";
 // ---- field data written by vtkCurvatureFrames ----
 /// 1 x double: the neighbourhood radius used, in world units.
 constexpr const char* CurvatureRadius = "CurvatureRadius";
+
+// ---- vtkFrameSmoother (rewrites FrameU and FrameV, adds these) ----
+/// cell, 1 x double: the angle (radians) each frame was turned about its normal.
+constexpr const char* FrameRotation = "FrameRotation";
+/// cell, 1 x unsigned char: 1 where the frame is held along a boundary or sharp edge.
+constexpr const char* FrameConstrained = "FrameConstrained";
+/// field, 2 x double: the energy of the input frames and of the smoothed ones.
+constexpr const char* SmoothingEnergy = "SmoothingEnergy";
+/// field, 1 x int: iterations of the chosen run.
+constexpr const char* SmoothingIterations = "SmoothingIterations";
+
+// ---- vtkMatchingBuilder ----
+/// cell, 3 x int: for edge k = (point k, point k+1) of the triangle, the matching r in {0..3} to
+/// the triangle across it, X_{neighbour,m} = X_{this,(m - r) mod 4} (QuadCover Def. 5), with
+/// X_0 = FrameU, X_1 = n x FrameU, X_2 = -FrameU, X_3 = -n x FrameU; -1 on boundary edges.
+constexpr const char* Matching = "Matching";
+/// point, 1 x int: layer shift (Def. 4) in {0..3}; 0 on the boundary.
+constexpr const char* LayerShift = "LayerShift";
+/// point, 1 x double: the frame field's index at the point (a multiple of 1/4 inside).
+constexpr const char* SingularityIndex = "SingularityIndex";
+/// field, 1 x int: inner points with a non-zero index.
+constexpr const char* SingularityCount = "SingularityCount";
+/// field, 2 x int: branch points (non-zero layer shift) before and after the optimization.
+constexpr const char* BranchPointCount = "BranchPointCount";
+/// field, 2 x double: sum over inner edges of the matched frames' angle (C_ij), before and
+/// after the optimization.
+constexpr const char* MatchingCost = "MatchingCost";
+/// point data of the branch-point output: the point's id in the surface.
+constexpr const char* SurfacePointId = "SurfacePointId";
 }
 
 #endif

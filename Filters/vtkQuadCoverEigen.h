@@ -13,7 +13,11 @@
 #include "vtkPolyData.h"
 #include "vtkSmartPointer.h"
 
+#include "MeshTopology.h"
+#include "vtkQuadCoverInput.h"
+
 #include <Eigen/Core>
+#include <Eigen/Geometry>
 
 #include <string>
 
@@ -104,6 +108,56 @@ inline Eigen::MatrixX3d FromArray3(vtkDataArray* a)
     }
   }
   return M;
+}
+
+/// A triangle surface as the core sees it.
+struct Mesh
+{
+  Eigen::MatrixX3d V;
+  Eigen::MatrixX3i F;
+  quadcover::MeshTopology topo;
+};
+
+/// What a stage needs of the surface's connectivity.
+enum class Needs
+{
+  ManifoldEdges,   ///< at most two triangles per edge, consistently oriented
+  ManifoldSurface, ///< and every vertex's triangles one fan (ordered one-rings)
+};
+
+/**
+ * The check every filter starts with: triangulates `input` into `surface` (see
+ * vtkQuadCoverInput::Triangulate), copies it into `mesh` and checks its connectivity.
+ * @return "" or a one-line reason; `warning` gets what was dropped or is doubtful.
+ */
+inline std::string Load(
+  vtkPolyData* input, vtkPolyData* surface, Mesh& mesh, Needs needs, std::string& warning)
+{
+  std::string problem = vtkQuadCoverInput::Triangulate(input, surface, warning);
+  if (!problem.empty())
+  {
+    return problem;
+  }
+  mesh.V = Points(surface);
+  mesh.F = Triangles(surface);
+  mesh.topo = quadcover::buildTopology(mesh.F, static_cast<int>(mesh.V.rows()));
+  const quadcover::MeshTopology& T = mesh.topo;
+  const bool vertices = needs == Needs::ManifoldSurface;
+  if (!T.degenerateFaces.empty() || !T.nonManifoldEdges.empty() || !T.misorientedEdges.empty() ||
+    (vertices && !T.nonManifoldVertices.empty()))
+  {
+    return "the surface has " + T.describeDefects() +
+      "; merge duplicate points, remove non-manifold parts (split non-manifold vertices) and "
+      "orient the triangles consistently first (the quadcover command line does all this)";
+  }
+  if (!T.nonManifoldVertices.empty())
+  {
+    warning += std::string(warning.empty() ? "" : "; ") +
+      std::to_string(T.nonManifoldVertices.size()) +
+      " non-manifold vertices (fans of triangles touching at one vertex); later stages need them "
+      "split";
+  }
+  return "";
 }
 }
 

@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <complex>
+#include <functional>
 #include <stdexcept>
 
 namespace quadcover
@@ -83,6 +84,55 @@ SmootherResult smoothFrames(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F
       fixedAlpha[f] = wrapQuarter(geometry.edgeAngle(f, k) - phi[f]);
     }
   };
+  // Sharp edges, kept only in chains of at least minimumFeatureLength edges.
+  const int ne = topo.numEdges();
+  std::vector<char> sharp(ne, 0);
+  for (int e = 0; e < ne; ++e)
+  {
+    if (topo.edgeFaceCount[e] == 2)
+    {
+      const int f = topo.edgeFaces(e, 0), g = topo.edgeFaces(e, 1);
+      sharp[e] = geometry.bases.normal.row(f).dot(geometry.bases.normal.row(g)) < cosFeature;
+    }
+  }
+  {
+    std::vector<int> parent(ne), size(ne, 1), firstAt(topo.numVertices, -1);
+    for (int e = 0; e < ne; ++e)
+    {
+      parent[e] = e;
+    }
+    std::function<int(int)> root = [&](int x) {
+      while (parent[x] != x)
+      {
+        x = parent[x] = parent[parent[x]];
+      }
+      return x;
+    };
+    for (int e = 0; e < ne; ++e)
+    {
+      for (int j = 0; sharp[e] && j < 2; ++j)
+      {
+        int& other = firstAt[topo.edges(e, j)];
+        if (other < 0)
+        {
+          other = e;
+        }
+        else if (root(other) != root(e))
+        {
+          size[root(other)] += size[root(e)];
+          parent[root(e)] = root(other);
+        }
+      }
+    }
+    for (int e = 0; e < ne; ++e)
+    {
+      if (sharp[e])
+      {
+        sharp[e] = size[root(e)] >= options.minimumFeatureLength;
+        R.featureEdges += sharp[e];
+      }
+    }
+  }
   for (int f = 0; f < nf; ++f)
   {
     for (int k = 0; k < 3; ++k)
@@ -101,15 +151,9 @@ SmootherResult smoothFrames(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F
         }
         continue;
       }
-      const double cosAngle = geometry.bases.normal.row(f).dot(geometry.bases.normal.row(g));
-      const bool sharp = cosAngle < cosFeature;
-      if (sharp)
+      if (sharp[e] && options.alignToFeatures)
       {
-        R.featureEdges += f < g ? 1 : 0;
-        if (options.alignToFeatures)
-        {
-          hold(f, k);
-        }
+        hold(f, k);
       }
       if (f < g)
       {
@@ -134,7 +178,6 @@ SmootherResult smoothFrames(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F
       unknown[f] = n++;
     }
   }
-  R.energyBefore = P.energy(Eigen::VectorXd::Zero(nf));
   const double lambda = P.lambda;
 
   // The majorizer's matrix: 16 lambda w per link (graph Laplacian) + 2 (1 - lambda) A w, plus a
@@ -240,6 +283,7 @@ SmootherResult smoothFrames(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F
   std::vector<double> history;
   int iterations = 0;
   Eigen::VectorXd alpha = descend(start, history, iterations);
+  R.energyBefore = history.front();
   R.energyHistory = history;
   R.iterations = iterations;
 

@@ -21,8 +21,13 @@ struct SmootherOptions
   double tolerance = 1e-7;
   /// Hold the frames of triangles along sharp edges (dihedral angle above featureAngle degrees,
   /// the angle between the two normals as vtkFeatureEdges measures it) aligned to that edge.
+  /// 60 rather than vtkFeatureEdges' 30: coarse or noisy scans have many 30-60 degree edges
+  /// that are not features, while CAD creases are sharper.
   bool alignToFeatures = true;
-  double featureAngle = 30.0;
+  double featureAngle = 60.0;
+  /// Sharp edges count only in chains of at least this many edges joined end to end, so
+  /// isolated sharp edges (noise) do not pin frames.
+  int minimumFeatureLength = 3;
   /// Hold the frames of triangles along the boundary aligned to it.
   bool alignToBoundary = true;
   /// Besides the input, start from the globally optimal four-fold fields (Knoeppel et al. 2013):

@@ -118,10 +118,13 @@ FrameTopology evaluateMatchings(const Eigen::MatrixX3i& F, const MeshTopology& t
                                     "triangles " +
           std::to_string(f) + " and " + std::to_string(g) + " are not inverse");
       }
-      d(f, k) = residual(turning(geometry, phi, f, k, g), r);
-      T.deviation(f, k) = std::abs(d(f, k));
+      // Once per edge, the twin the exact opposite: a residual of +-pi (two quarter turns off)
+      // must cancel across the edge, or Poincare-Hopf would be off by one.
       if (f < g)
       {
+        d(f, k) = residual(turning(geometry, phi, f, k, g), r);
+        d(g, kk) = -d(f, k);
+        T.deviation(f, k) = T.deviation(g, kk) = std::abs(d(f, k));
         T.matchingCost += T.deviation(f, k);
       }
     }

@@ -136,6 +136,35 @@ TEST(Matchings, CubeCornersAreBranchPointsOfLayerShiftOne)
   EXPECT_NEAR(t.matchingCost, 0.0, 1e-9);
 }
 
+TEST(Matchings, HalfTurnResidualsCancelAcrossTheirEdge)
+{
+  // The cube's edge-aligned field has residuals of (almost exactly) zero; changing one edge's
+  // matching by two quarter turns leaves a residual of +-pi there, which must cancel between the
+  // edge's two sides for Poincare-Hopf to hold (index +-1/2 at the edge's two points).
+  const Mesh m = prepare(makeRoundedCube(0.0, 6));
+  Eigen::MatrixX3d U(m.s.F.rows(), 3);
+  for (Eigen::Index f = 0; f < U.rows(); ++f)
+  {
+    const Eigen::Vector3d n = m.geometry.bases.normal.row(f);
+    U.row(f) = std::abs(n.x()) < 0.5 ? Eigen::RowVector3d(1, 0, 0) : Eigen::RowVector3d(0, 1, 0);
+  }
+  FrameTopology t = computeMatchings(m.s.F, m.topo, m.geometry, U);
+  for (int f = 0; f < m.topo.numFaces; f += 7)
+  {
+    const int g = m.topo.faceNeighbors(f, 0);
+    Eigen::MatrixX3i changed = t.matching;
+    changed(f, 0) = (changed(f, 0) + 2) % 4;
+    for (int kk = 0; kk < 3; ++kk)
+    {
+      if (m.topo.faceNeighbors(g, kk) == f)
+        changed(g, kk) = (changed(g, kk) + 2) % 4;
+    }
+    const FrameTopology u = evaluateMatchings(m.s.F, m.topo, m.geometry, U, changed);
+    ASSERT_NEAR(u.index.sum(), 2.0, 1e-9) << f;
+    ASSERT_LT(u.maxIndexError, 1e-9);
+  }
+}
+
 TEST(Matchings, TorusCurvatureFramesHaveNoSingularities)
 {
   const Mesh m = prepare(testSurface("torus"));

@@ -1,0 +1,122 @@
+/**
+ * @class   vtkFrameSmoother
+ * @brief   smooth a surface's guidance frame field and align it with curvature and features
+ *
+ * Second stage of the QuadCover pipeline (Sect. 4.3). Turns each triangle's frame (FrameU and
+ * FrameV together, so non-orthogonal frames keep their shape) about the triangle's normal by an
+ * angle alpha_i that minimizes
+ *   E = lambda * sum_{edges ij} (A_i + A_j)/3 (1 - cos 4(theta_ij + alpha_i - alpha_j))
+ *     + (1 - lambda) * sum_i A_i w_i alpha_i^2,
+ * theta_ij being the angle between neighbouring frames after transport across their edge and
+ * w = FrameWeight; lambda = SmoothingWeight. So frames spread from where curvature is
+ * pronounced into umbilic and flat regions, with as few singularities as the surface allows.
+ *
+ * The minimization starts from the input and from the globally optimal four-fold fields
+ * (Knoeppel et al. 2013: the smoothest field blended with the alignment term, and the smoothest
+ * field itself when nothing is held), and keeps the run that ends lowest; every run descends
+ * monotonically (each iteration minimizes a quadratic upper bound of E, factored once).
+ *
+ * Features and boundaries (AlignToFeatures, AlignToBoundary, on by default): triangles along a
+ * boundary edge or a sharp edge (normals more than FeatureAngle degrees apart, as in
+ * vtkFeatureEdges) get their frame turned onto that edge and held there, so quads will follow
+ * borders and creases. A triangle on two such edges follows the longer one (at the usual
+ * right-angled corner the cross fits both). Sharp edges count only in chains of at least
+ * MinimumFeatureLength edges, so that isolated sharp edges of a noisy scan pin nothing; the
+ * default FeatureAngle is 60 rather than vtkFeatureEdges' 30 for the same reason.
+ *
+ * Input: a triangle surface with cell arrays FrameU (required), FrameV (if absent, n x FrameU)
+ * and FrameWeight (if absent, 1 everywhere), by default the names vtkCurvatureFrames writes;
+ * point the filter at others with SetInputArrayToProcess(0|1|2, 0, 0,
+ * vtkDataObject::FIELD_ASSOCIATION_CELLS, name). Output: the surface with FrameU and FrameV
+ * replaced by the smoothed frames, cell data FrameRotation and FrameConstrained, field data
+ * SmoothingEnergy (before: the input with held frames already on their edges; after) and
+ * SmoothingIterations. Names: vtkQuadCoverArrayNames.h.
+ *
+ * Errors: everything vtkCurvatureFrames refuses, and a missing FrameU.
+ * @sa vtkCurvatureFrames vtkMatchingBuilder
+ */
+#ifndef vtkFrameSmoother_h
+#define vtkFrameSmoother_h
+
+#include "vtkPolyDataAlgorithm.h"
+#include "vtkQuadCoverFiltersModule.h" // for export macro
+
+class VTKQUADCOVERFILTERS_EXPORT vtkFrameSmoother : public vtkPolyDataAlgorithm
+{
+public:
+  static vtkFrameSmoother* New();
+  vtkTypeMacro(vtkFrameSmoother, vtkPolyDataAlgorithm);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  ///@{
+  /** Weight lambda of smoothness against curvature alignment, in [0, 1] (default 0.5). */
+  vtkSetClampMacro(SmoothingWeight, double, 0.0, 1.0);
+  vtkGetMacro(SmoothingWeight, double);
+  ///@}
+
+  ///@{
+  /** Iterations at most per run, in [0, 100000] (default 200). */
+  vtkSetClampMacro(MaximumNumberOfIterations, int, 0, 100000);
+  vtkGetMacro(MaximumNumberOfIterations, int);
+  ///@}
+
+  ///@{
+  /** Stop when an iteration lowers the energy by less than this fraction (default 1e-7). */
+  vtkSetClampMacro(ConvergenceTolerance, double, 0.0, 1.0);
+  vtkGetMacro(ConvergenceTolerance, double);
+  ///@}
+
+  ///@{
+  /** Hold frames along sharp edges (default on). */
+  vtkSetMacro(AlignToFeatures, bool);
+  vtkGetMacro(AlignToFeatures, bool);
+  vtkBooleanMacro(AlignToFeatures, bool);
+  ///@}
+
+  ///@{
+  /** Angle between normals above which an edge is sharp, degrees in [0, 180] (default 60). */
+  vtkSetClampMacro(FeatureAngle, double, 0.0, 180.0);
+  vtkGetMacro(FeatureAngle, double);
+  ///@}
+
+  ///@{
+  /** Shortest chain of sharp edges that counts as a feature, in [1, 10000] (default 3). */
+  vtkSetClampMacro(MinimumFeatureLength, int, 1, 10000);
+  vtkGetMacro(MinimumFeatureLength, int);
+  ///@}
+
+  ///@{
+  /** Hold frames along boundary edges (default on). */
+  vtkSetMacro(AlignToBoundary, bool);
+  vtkGetMacro(AlignToBoundary, bool);
+  vtkBooleanMacro(AlignToBoundary, bool);
+  ///@}
+
+  ///@{
+  /** Also start from the globally optimal fields (default on; off: from the input only). */
+  vtkSetMacro(GlobalStart, bool);
+  vtkGetMacro(GlobalStart, bool);
+  vtkBooleanMacro(GlobalStart, bool);
+  ///@}
+
+protected:
+  vtkFrameSmoother();
+  ~vtkFrameSmoother() override = default;
+
+  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+
+  double SmoothingWeight = 0.5;
+  int MaximumNumberOfIterations = 200;
+  double ConvergenceTolerance = 1e-7;
+  bool AlignToFeatures = true;
+  double FeatureAngle = 60.0;
+  int MinimumFeatureLength = 3;
+  bool AlignToBoundary = true;
+  bool GlobalStart = true;
+
+private:
+  vtkFrameSmoother(const vtkFrameSmoother&) = delete;
+  void operator=(const vtkFrameSmoother&) = delete;
+};
+
+#endif

@@ -1,0 +1,178 @@
+#include "vtkMatchingBuilder.h"
+
+#include "vtkQuadCoverArrayNames.h"
+#include "vtkQuadCoverEigen.h"
+
+#include "vtkCellArray.h"
+#include "vtkCellData.h"
+#include "vtkDataObject.h"
+#include "vtkDoubleArray.h"
+#include "vtkFieldData.h"
+#include "vtkIdTypeArray.h"
+#include "vtkInformation.h"
+#include "vtkInformationVector.h"
+#include "vtkIntArray.h"
+#include "vtkObjectFactory.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+
+#include "Matchings.h"
+
+#include <exception>
+
+vtkStandardNewMacro(vtkMatchingBuilder);
+
+//------------------------------------------------------------------------------
+vtkMatchingBuilder::vtkMatchingBuilder()
+{
+  this->SetNumberOfOutputPorts(2);
+  this->SetInputArrayToProcess(
+    0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_CELLS, vtkQuadCoverArrayNames::FrameU);
+}
+
+//------------------------------------------------------------------------------
+vtkPolyData* vtkMatchingBuilder::GetBranchPointsOutput()
+{
+  return vtkPolyData::SafeDownCast(this->GetOutputDataObject(1));
+}
+
+//------------------------------------------------------------------------------
+int vtkMatchingBuilder::RequestData(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  namespace names = vtkQuadCoverArrayNames;
+  vtkPolyData* input = vtkPolyData::GetData(inputVector[0]);
+  vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
+  vtkPolyData* branchOutput = vtkPolyData::GetData(outputVector, 1);
+
+  vtkNew<vtkPolyData> surface;
+  vtkQuadCoverEigen::Mesh mesh;
+  std::string warning;
+  const std::string problem = vtkQuadCoverEigen::Load(
+    input, surface, mesh, vtkQuadCoverEigen::Needs::ManifoldSurface, warning);
+  if (!problem.empty())
+  {
+    vtkErrorMacro(<< "Cannot build matchings: " << problem << ".");
+    return 0;
+  }
+  if (!warning.empty())
+  {
+    vtkWarningMacro(<< warning << ".");
+  }
+  const vtkIdType nf = mesh.F.rows();
+  vtkDataArray* u = this->GetInputArrayToProcess(0, surface);
+  if (!u || u->GetNumberOfComponents() != 3 || u->GetNumberOfTuples() != nf)
+  {
+    vtkErrorMacro(<< "Cannot build matchings: the input has no 3-component cell array "
+                  << names::FrameU << " (run vtkCurvatureFrames and vtkFrameSmoother first, or "
+                  << "name your own with SetInputArrayToProcess).");
+    return 0;
+  }
+  this->UpdateProgress(0.1);
+
+  try
+  {
+    const quadcover::FrameGeometry geometry =
+      quadcover::computeFrameGeometry(mesh.V, mesh.F, mesh.topo);
+    const Eigen::MatrixX3d U = vtkQuadCoverEigen::FromArray3(u);
+    if (!U.allFinite())
+    {
+      vtkErrorMacro(<< "Cannot build matchings: " << names::FrameU << " has non-finite values.");
+      return 0;
+    }
+    quadcover::FrameTopology t = quadcover::computeMatchings(mesh.F, mesh.topo, geometry, U);
+    this->UpdateProgress(0.4);
+    const int branchBefore = t.branchPoints;
+    const double costBefore = t.matchingCost;
+    if (this->OptimizeBranchPoints && !this->GetAbortExecute())
+    {
+      quadcover::BranchPointOptions options;
+      options.weight = this->BranchPointWeight;
+      options.maxVisited = this->MaximumSearchSize;
+      quadcover::optimizeBranchPoints(mesh.F, mesh.topo, geometry, U, t, options);
+    }
+    this->UpdateProgress(0.9);
+
+    output->ShallowCopy(surface);
+    vtkNew<vtkIntArray> matching;
+    matching->SetName(names::Matching);
+    matching->SetNumberOfComponents(3);
+    matching->SetNumberOfTuples(nf);
+    for (vtkIdType f = 0; f < nf; ++f)
+    {
+      for (int k = 0; k < 3; ++k)
+      {
+        matching->SetTypedComponent(f, k, t.matching(f, k));
+      }
+    }
+    output->GetCellData()->AddArray(matching);
+    const vtkIdType nv = mesh.V.rows();
+    vtkNew<vtkIntArray> shift;
+    shift->SetName(names::LayerShift);
+    shift->SetNumberOfTuples(nv);
+    for (vtkIdType p = 0; p < nv; ++p)
+    {
+      shift->SetValue(p, t.layerShift[p]);
+    }
+    output->GetPointData()->AddArray(shift);
+    output->GetPointData()->AddArray(vtkQuadCoverEigen::ToArray(t.index, names::SingularityIndex));
+    vtkNew<vtkIntArray> singularities;
+    singularities->SetName(names::SingularityCount);
+    singularities->InsertNextValue(t.singularities);
+    output->GetFieldData()->AddArray(singularities);
+    vtkNew<vtkIntArray> branches;
+    branches->SetName(names::BranchPointCount);
+    branches->InsertNextValue(branchBefore);
+    branches->InsertNextValue(t.branchPoints);
+    output->GetFieldData()->AddArray(branches);
+    vtkNew<vtkDoubleArray> cost;
+    cost->SetName(names::MatchingCost);
+    cost->InsertNextValue(costBefore);
+    cost->InsertNextValue(t.matchingCost);
+    output->GetFieldData()->AddArray(cost);
+
+    // The branch points, for glyphs.
+    vtkNew<vtkPoints> points;
+    points->SetDataTypeToDouble();
+    vtkNew<vtkCellArray> verts;
+    vtkNew<vtkDoubleArray> index;
+    index->SetName(names::SingularityIndex);
+    vtkNew<vtkIntArray> layer;
+    layer->SetName(names::LayerShift);
+    vtkNew<vtkIdTypeArray> ids;
+    ids->SetName(names::SurfacePointId);
+    for (vtkIdType p = 0; p < nv; ++p)
+    {
+      if (t.layerShift[p] != 0)
+      {
+        const vtkIdType id = points->InsertNextPoint(mesh.V(p, 0), mesh.V(p, 1), mesh.V(p, 2));
+        verts->InsertNextCell(1, &id);
+        index->InsertNextValue(t.index[p]);
+        layer->InsertNextValue(t.layerShift[p]);
+        ids->InsertNextValue(p);
+      }
+    }
+    branchOutput->SetPoints(points);
+    branchOutput->SetVerts(verts);
+    branchOutput->GetPointData()->AddArray(index);
+    branchOutput->GetPointData()->AddArray(layer);
+    branchOutput->GetPointData()->AddArray(ids);
+  }
+  catch (const std::exception& e)
+  {
+    vtkErrorMacro(<< "Cannot build matchings: " << e.what());
+    return 0;
+  }
+  this->UpdateProgress(1.0);
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+void vtkMatchingBuilder::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "OptimizeBranchPoints: " << (this->OptimizeBranchPoints ? "On" : "Off") << "\n";
+  os << indent << "BranchPointWeight: " << this->BranchPointWeight << "\n";
+  os << indent << "MaximumSearchSize: " << this->MaximumSearchSize << "\n";
+}

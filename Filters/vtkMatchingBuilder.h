@@ -1,0 +1,86 @@
+/**
+ * @class   vtkMatchingBuilder
+ * @brief   per-edge matchings, layer shifts, singularity indices and branch points of a frame field
+ *
+ * Third stage of the QuadCover pipeline (Sect. 2.1-2.3, 3, 4.2). For every inner edge it picks
+ * the matching r in {0,1,2,3} that best aligns the two triangles' frames after transport across
+ * the edge (the smallest angle), then derives what the matchings imply at the points: the layer
+ * shift of the branched covering (Def. 4) and the frame field's true index.
+ *
+ * With OptimizeBranchPoints (default on) it then runs the greedy search of Sect. 4.2: paths
+ * between nearby branch points whose layer shifts cancel (or combine) get their matchings
+ * changed when that lowers BranchPointWeight * (number of branch points) + sum over edges of
+ * the matched frames' angle (radians). Poincare-Hopf holds before and after.
+ *
+ * Output 0: the surface with cell data Matching (3 x int: for edge k = (point k, point k+1),
+ * X_{neighbour,m} = X_{this,(m - r) mod 4}, X_0 = FrameU, X_1 = n x FrameU, ...; -1 on boundary
+ * edges), point data LayerShift (int, 0 on the boundary) and SingularityIndex (double), field
+ * data SingularityCount, BranchPointCount (before, after) and MatchingCost (before, after).
+ * Output 1: the branch points (non-zero layer shift) as points with vertex cells and point data
+ * SingularityIndex, LayerShift and SurfacePointId, ready for glyphs in ParaView.
+ *
+ * Indices: (angle defect + turning of the frame relative to parallel transport around the
+ * point) / 2 pi, a multiple of 1/4 at inner points (with LayerShift = 4 index mod 4). At
+ * boundary points, half the index of the surface doubled across its boundary (a multiple of 1/4
+ * when frames follow the boundary, as vtkFrameSmoother makes them). In every case the indices of
+ * all points add up to the Euler characteristic.
+ *
+ * Input: a manifold, consistently oriented triangle surface (every point's triangles one fan)
+ * with the cell array FrameU (SetInputArrayToProcess(0, ...) for another name). Only FrameU's
+ * direction is used: the field is treated as four-fold symmetric.
+ * @sa vtkFrameSmoother vtkQuadCoverSolver
+ */
+#ifndef vtkMatchingBuilder_h
+#define vtkMatchingBuilder_h
+
+#include "vtkPolyDataAlgorithm.h"
+#include "vtkQuadCoverFiltersModule.h" // for export macro
+
+class VTKQUADCOVERFILTERS_EXPORT vtkMatchingBuilder : public vtkPolyDataAlgorithm
+{
+public:
+  static vtkMatchingBuilder* New();
+  vtkTypeMacro(vtkMatchingBuilder, vtkPolyDataAlgorithm);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  ///@{
+  /** Run the branch-point optimization of Sect. 4.2 (default on). */
+  vtkSetMacro(OptimizeBranchPoints, bool);
+  vtkGetMacro(OptimizeBranchPoints, bool);
+  vtkBooleanMacro(OptimizeBranchPoints, bool);
+  ///@}
+
+  ///@{
+  /**
+   * lambda: the cost of one branch point in radians of matching angle, in [0, 100]
+   * (default 3). Larger values remove more branch points at the price of straighter lines.
+   */
+  vtkSetClampMacro(BranchPointWeight, double, 0.0, 100.0);
+  vtkGetMacro(BranchPointWeight, double);
+  ///@}
+
+  ///@{
+  /** Points one search may visit from a branch point, in [1, 10^7] (default 20000). */
+  vtkSetClampMacro(MaximumSearchSize, int, 1, 10000000);
+  vtkGetMacro(MaximumSearchSize, int);
+  ///@}
+
+  /** The branch points (output port 1). */
+  vtkPolyData* GetBranchPointsOutput();
+
+protected:
+  vtkMatchingBuilder();
+  ~vtkMatchingBuilder() override = default;
+
+  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+
+  bool OptimizeBranchPoints = true;
+  double BranchPointWeight = 3.0;
+  int MaximumSearchSize = 20000;
+
+private:
+  vtkMatchingBuilder(const vtkMatchingBuilder&) = delete;
+  void operator=(const vtkMatchingBuilder&) = delete;
+};
+
+#endif
