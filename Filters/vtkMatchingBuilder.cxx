@@ -20,6 +20,7 @@
 #include "Matchings.h"
 
 #include <exception>
+#include <map>
 
 vtkStandardNewMacro(vtkMatchingBuilder);
 
@@ -121,6 +122,22 @@ int vtkMatchingBuilder::RequestData(
     singularities->SetName(names::SingularityCount);
     singularities->InsertNextValue(t.singularities);
     output->GetFieldData()->AddArray(singularities);
+    std::map<double, int> histogram;
+    for (vtkIdType p = 0; p < nv; ++p)
+    {
+      if (!mesh.topo.boundaryVertex[p] && t.index[p] != 0.0)
+      {
+        histogram[t.index[p]] += 1;
+      }
+    }
+    vtkNew<vtkDoubleArray> table;
+    table->SetName(names::SingularityHistogram);
+    table->SetNumberOfComponents(2);
+    for (const auto& [value, count] : histogram)
+    {
+      table->InsertNextTuple2(value, count);
+    }
+    output->GetFieldData()->AddArray(table);
     vtkNew<vtkIntArray> branches;
     branches->SetName(names::BranchPointCount);
     branches->InsertNextValue(branchBefore);

@@ -15,7 +15,8 @@
  * Output 0: the surface with cell data Matching (3 x int: for edge k = (point k, point k+1),
  * X_{neighbour,m} = X_{this,(m - r) mod 4}, X_0 = FrameU, X_1 = n x FrameU, ...; -1 on boundary
  * edges), point data LayerShift (int, 0 on the boundary) and SingularityIndex (double), field
- * data SingularityCount, BranchPointCount (before, after) and MatchingCost (before, after).
+ * data SingularityCount, SingularityHistogram ((index, inner points) per non-zero index),
+ * BranchPointCount (before, after) and MatchingCost (before, after).
  * Output 1: the branch points (non-zero layer shift) as points with vertex cells and point data
  * SingularityIndex, LayerShift and SurfacePointId, ready for glyphs in ParaView.
  *

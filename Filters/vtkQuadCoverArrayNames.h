@@ -51,6 +51,9 @@ constexpr const char* LayerShift = "LayerShift";
 constexpr const char* SingularityIndex = "SingularityIndex";
 /// field, 1 x int: inner points with a non-zero index.
 constexpr const char* SingularityCount = "SingularityCount";
+/// field, 2 x double per tuple (index, number of inner points with it), one tuple per non-zero
+/// index, ascending.
+constexpr const char* SingularityHistogram = "SingularityHistogram";
 /// field, 2 x int: branch points (non-zero layer shift) before and after the optimization.
 constexpr const char* BranchPointCount = "BranchPointCount";
 /// field, 2 x double: sum over inner edges of the matched frames' angle (C_ij), before and

@@ -9,9 +9,12 @@
 #include "vtkCommand.h"
 #include "vtkCurvatureFrames.h"
 #include "vtkDataArray.h"
+#include "vtkFrameSmoother.h"
 #include "vtkLogger.h"
+#include "vtkMatchingBuilder.h"
 #include "vtkNew.h"
 #include "vtkObject.h"
+#include "vtkPointData.h"
 #include "vtkPolyData.h"
 #include "vtkQuadCoverArrayNames.h"
 #include "vtkSmartPointer.h"
@@ -23,6 +26,7 @@
 #include <cstdlib>
 #include <fstream>
 #include <iostream>
+#include <map>
 #include <sstream>
 #include <string>
 #include <unistd.h>
@@ -30,45 +34,53 @@
 
 namespace
 {
-/// The pipeline's stages in order; `available` is false until its issue is built.
-struct StageInfo
+const char* const StageNames[] = { "curvature", "smooth", "matching", "param", "quads" };
+const char* const StageFilters[] = { "vtkCurvatureFrames", "vtkFrameSmoother", "vtkMatchingBuilder",
+  "vtkQuadCoverSolver", "vtkQuadExtractor" };
+const int BuiltStages = 3; // the first three exist; the others come with their issues
+
+/// A numeric option: its flag, range, whether it must be whole, and where it goes.
+struct NumberOption
 {
-  const char* name;
-  const char* filter;
-  bool available;
-};
-const StageInfo Stages[] = {
-  { "curvature", "vtkCurvatureFrames", true },
-  { "smooth", "vtkFrameSmoother", false },
-  { "matching", "vtkMatchingBuilder", false },
-  { "param", "vtkQuadCoverSolver", false },
-  { "quads", "vtkQuadExtractor", false },
+  const char* flag;
+  double low, high;
+  bool whole;
+  double* value;
 };
 
 void Usage(std::ostream& os)
 {
-  os << "usage: quadcover INPUT -o OUTPUT [--stage STAGE] [--stats FILE.json] [-v]\n"
-        "                 [--radius R] [--threads N] [--no-input-frames]\n"
+  os << "usage: quadcover INPUT -o OUTPUT [--stage STAGE] [--stats FILE.json] [-v] [options]\n"
         "\n"
         "Runs the QuadCover pipeline on a triangle surface up to STAGE and writes the result.\n"
         "  INPUT            .obj .ply .stl .vtp or .vtk surface\n"
         "  -o OUTPUT        .vtp or .vtk (all arrays kept), .obj or .ply (geometry only)\n"
         "  --stage STAGE    curvature|smooth|matching|param|quads (default: the last built one,\n"
-        "                   now curvature)\n"
-        "  --stats FILE     write a JSON summary: input size, repairs, seconds per stage, counts\n"
+        "                   now matching)\n"
+        "  --stats FILE     write a JSON summary: input size, repairs, seconds per stage, and\n"
+        "                   what each stage counts\n"
         "  -v, --verbose    seconds per stage, and VTK's own messages (progress shows\n"
         "                   whenever stderr is a terminal)\n"
-        "  --radius R       curvature neighbourhood radius in median edge lengths, 0..20\n"
-        "                   (default 2)\n"
+        "curvature (vtkCurvatureFrames):\n"
+        "  --radius R       neighbourhood radius in median edge lengths, 0..20 (default 2)\n"
         "  --threads N      worker threads, 0 = all cores (default 0)\n"
         "  --no-input-frames  ignore a FrameU cell array on the input; use curvature frames\n"
+        "smooth (vtkFrameSmoother):\n"
+        "  --smoothing L    lambda: smoothness against curvature alignment, 0..1 (default 0.5)\n"
+        "  --iterations N   at most N iterations per run (default 200)\n"
+        "  --feature-angle D  edges sharper than D degrees are features (default 60)\n"
+        "  --no-features    do not hold frames along sharp edges\n"
+        "  --no-boundary-alignment  do not hold frames along the boundary\n"
+        "matching (vtkMatchingBuilder):\n"
+        "  --branch-weight L  cost of a branch point in radians, 0..100 (default 3)\n"
+        "  --no-branch-optimization  keep the smallest-angle matchings\n"
         "\n"
-        "Repaired silently: exactly coincident points are merged, unused points dropped,\n"
-        "polygons and strips triangulated, vertex/line cells and degenerate polygons removed,\n"
-        "triangles reoriented to agree with their neighbours, and a vertex where separate fans of\n"
+        "Repaired silently: polygons and strips triangulated, vertex/line cells dropped, exactly\n"
+        "coincident points merged, triangles with a repeated point removed, triangles\n"
+        "reoriented to agree with their neighbours, and a vertex where separate fans of\n"
         "triangles touch split into one copy per fan (see --stats for the counts).\n"
-        "Refused: missing, unreadable or empty files, unknown extensions, no polygons, NaN or\n"
-        "infinite coordinates, non-manifold edges.\n";
+        "Refused: missing, unreadable or empty files, unknown extensions, no polygons, point\n"
+        "ids out of range, NaN or infinite coordinates, non-manifold edges.\n";
 }
 
 int Fail(const std::string& message)
@@ -138,75 +150,71 @@ std::string JsonString(const std::string& s)
 int main(int argc, char* argv[])
 {
   std::string input, output, stage, statsPath;
-  bool verbose = false, useInputFrames = true;
-  double radius = 2.0;
-  int threads = 0;
+  bool verbose = false, useInputFrames = true, features = true, boundary = true,
+       optimizeBranches = true;
+  double radius = 2.0, threads = 0, smoothing = 0.5, iterations = 200, featureAngle = 60.0,
+         branchWeight = 3.0;
+  const NumberOption numbers[] = {
+    { "--radius", 0.0, 20.0, false, &radius },
+    { "--threads", 0.0, 1024.0, true, &threads },
+    { "--smoothing", 0.0, 1.0, false, &smoothing },
+    { "--iterations", 0.0, 100000.0, true, &iterations },
+    { "--feature-angle", 0.0, 180.0, false, &featureAngle },
+    { "--branch-weight", 0.0, 100.0, false, &branchWeight },
+  };
   for (int i = 1; i < argc; ++i)
   {
     const std::string a = argv[i];
-    auto value = [&](const char* what) -> const char* {
-      if (i + 1 >= argc)
-      {
-        return nullptr;
-      }
-      (void)what;
-      return argv[++i];
-    };
+    const NumberOption* number = nullptr;
+    for (const NumberOption& n : numbers)
+    {
+      number = a == n.flag ? &n : number;
+    }
+    const bool takesText = a == "-o" || a == "--output" || a == "--stage" || a == "--stats";
+    if ((number || takesText) && i + 1 >= argc)
+    {
+      return UsageError(a + " needs a value");
+    }
     if (a == "-h" || a == "--help")
     {
       Usage(std::cout);
       return 0;
     }
     else if (a == "-v" || a == "--verbose")
-    {
       verbose = true;
-    }
-    else if (a == "-o" || a == "--output" || a == "--stage" || a == "--stats" || a == "--radius" ||
-      a == "--threads")
+    else if (a == "-o" || a == "--output")
+      output = argv[++i];
+    else if (a == "--stage")
+      stage = argv[++i];
+    else if (a == "--stats")
+      statsPath = argv[++i];
+    else if (number)
     {
-      const char* v = value(a.c_str());
-      if (!v)
+      const char* v = argv[++i];
+      char* end = nullptr;
+      const double x = std::strtod(v, &end);
+      // Range first: converting an out-of-range double to int is undefined.
+      if (end == v || *end != '\0' || !(x >= number->low && x <= number->high) ||
+        (number->whole && x != std::floor(x)))
       {
-        return UsageError(a + " needs a value");
+        return UsageError("invalid value '" + std::string(v) + "' for " + a);
       }
-      if (a == "-o" || a == "--output")
-        output = v;
-      else if (a == "--stage")
-        stage = v;
-      else if (a == "--stats")
-        statsPath = v;
-      else
-      {
-        char* end = nullptr;
-        const double x = std::strtod(v, &end);
-        // Range first: casting an out-of-range double to int is undefined.
-        if (end == v || *end != '\0' || !(x >= 0.0) || (a == "--radius" && x > 20.0) ||
-          (a == "--threads" && (x > 1024.0 || x != std::floor(x))))
-        {
-          return UsageError("invalid value '" + std::string(v) + "' for " + a);
-        }
-        if (a == "--radius")
-          radius = x;
-        else
-          threads = static_cast<int>(x);
-      }
+      *number->value = x;
     }
     else if (a == "--no-input-frames")
-    {
       useInputFrames = false;
-    }
+    else if (a == "--no-features")
+      features = false;
+    else if (a == "--no-boundary-alignment")
+      boundary = false;
+    else if (a == "--no-branch-optimization")
+      optimizeBranches = false;
     else if (!a.empty() && a[0] == '-' && a != "-")
-    {
       return UsageError("unknown option " + a);
-    }
     else if (input.empty())
-    {
       input = a;
-    }
     else
-    {
       return UsageError("more than one input file given ('" + input + "', '" + a + "')");
-    }
   }
   if (input.empty())
   {
@@ -220,32 +228,23 @@ int main(int argc, char* argv[])
   {
     return UsageError("cannot write '" + output + "': unknown extension (use .vtp .vtk .obj .ply)");
   }
-  int lastStage = -1;
-  std::string built;
-  for (int s = 0; s < 5; ++s)
-  {
-    if (Stages[s].available)
-    {
-      lastStage = s;
-      built += (built.empty() ? "" : ", ") + std::string(Stages[s].name);
-    }
-  }
+  int lastStage = BuiltStages - 1;
   if (!stage.empty())
   {
     int found = -1;
     for (int s = 0; s < 5; ++s)
     {
-      found = stage == Stages[s].name ? s : found;
+      found = stage == StageNames[s] ? s : found;
     }
     if (found < 0)
     {
       return UsageError(
         "unknown stage '" + stage + "' (stages: curvature, smooth, matching, param, quads)");
     }
-    if (!Stages[found].available)
+    if (found >= BuiltStages)
     {
-      return UsageError(
-        "stage '" + stage + "' (" + Stages[found].filter + ") is not built yet; built: " + built);
+      return UsageError("stage '" + stage + "' (" + StageFilters[found] +
+        ") is not built yet; built: curvature, smooth, matching");
     }
     lastStage = found;
   }
@@ -291,24 +290,35 @@ int main(int argc, char* argv[])
   vtkNew<vtkCurvatureFrames> curvature;
   curvature->SetInputData(surface);
   curvature->SetNeighborhoodRadius(radius);
-  curvature->SetNumberOfThreads(threads);
+  curvature->SetNumberOfThreads(static_cast<int>(threads));
   curvature->SetUseInputFrames(useInputFrames);
-  std::vector<std::pair<std::string, vtkAlgorithm*>> pipeline = { { "curvature", curvature } };
+  vtkNew<vtkFrameSmoother> smoother;
+  smoother->SetInputConnection(curvature->GetOutputPort());
+  smoother->SetSmoothingWeight(smoothing);
+  smoother->SetMaximumNumberOfIterations(static_cast<int>(iterations));
+  smoother->SetFeatureAngle(featureAngle);
+  smoother->SetAlignToFeatures(features);
+  smoother->SetAlignToBoundary(boundary);
+  vtkNew<vtkMatchingBuilder> matching;
+  matching->SetInputConnection(smoother->GetOutputPort());
+  matching->SetOptimizeBranchPoints(optimizeBranches);
+  matching->SetBranchPointWeight(branchWeight);
+  vtkAlgorithm* const pipeline[] = { curvature, smoother, matching };
   vtkPolyData* result = nullptr;
   for (int s = 0; s <= lastStage; ++s)
   {
-    vtkAlgorithm* filter = pipeline[s].second;
+    vtkAlgorithm* filter = pipeline[s];
     vtkNew<QuadCoverIO::ErrorObserver> errors;
     errors->Attach(filter);
     if (showProgress)
     {
-      progress->Stage = pipeline[s].first;
+      progress->Stage = StageNames[s];
       filter->AddObserver(vtkCommand::ProgressEvent, progress);
     }
     t0 = clock();
     filter->Update();
     progress->Finish();
-    timings.push_back({ pipeline[s].first, since(t0) });
+    timings.push_back({ StageNames[s], since(t0) });
     for (const std::string& w : errors->Warnings())
     {
       std::cerr << "quadcover: warning: " << w << "\n";
@@ -340,6 +350,14 @@ int main(int argc, char* argv[])
 
   if (!statsPath.empty())
   {
+    namespace names = vtkQuadCoverArrayNames;
+    auto field = [](vtkAlgorithm* a, const char* name, int i) {
+      vtkDataArray* x =
+        vtkPolyData::SafeDownCast(a->GetOutputDataObject(0))->GetFieldData()->GetArray(name);
+      return x && i < x->GetNumberOfTuples() * x->GetNumberOfComponents()
+        ? x->GetComponent(i / x->GetNumberOfComponents(), i % x->GetNumberOfComponents())
+        : 0.0;
+    };
     std::ostringstream js;
     js << "{\n  \"input\": {\"file\": " << JsonString(input)
        << ", \"points\": " << raw->GetNumberOfPoints() << ", \"cells\": " << raw->GetNumberOfCells()
@@ -351,27 +369,62 @@ int main(int argc, char* argv[])
        << ", \"triangulated_polygons\": " << repairs.triangulatedPolygons
        << ", \"flipped_triangles\": " << repairs.flippedTriangles
        << ", \"split_vertices\": " << repairs.splitVertices << "},\n";
-    js << "  \"stage\": " << JsonString(Stages[lastStage].name) << ",\n";
+    js << "  \"stage\": " << JsonString(StageNames[lastStage]) << ",\n";
     js << "  \"seconds\": {";
     for (size_t i = 0; i < timings.size(); ++i)
     {
       js << (i ? ", " : "") << JsonString(timings[i].name) << ": " << timings[i].seconds;
     }
-    js << "},\n";
+    js << "}";
     {
-      vtkDataArray* w =
-        curvature->GetOutput()->GetCellData()->GetArray(vtkQuadCoverArrayNames::FrameWeight);
+      vtkDataArray* w = curvature->GetOutput()->GetCellData()->GetArray(names::FrameWeight);
       double mean = 0.0;
       for (vtkIdType c = 0; w && c < w->GetNumberOfTuples(); ++c)
       {
         mean += w->GetTuple1(c) / w->GetNumberOfTuples();
       }
-      vtkDataArray* r =
-        curvature->GetOutput()->GetFieldData()->GetArray(vtkQuadCoverArrayNames::CurvatureRadius);
-      js << "  \"curvature\": {\"radius\": " << (r ? r->GetTuple1(0) : 0.0)
-         << ", \"mean_frame_weight\": " << mean << "}\n";
+      js << ",\n  \"curvature\": {\"radius\": " << field(curvature, names::CurvatureRadius, 0)
+         << ", \"mean_frame_weight\": " << mean << "}";
     }
-    js << "}\n";
+    if (lastStage >= 1)
+    {
+      vtkDataArray* held = smoother->GetOutput()->GetCellData()->GetArray(names::FrameConstrained);
+      double count = 0;
+      for (vtkIdType c = 0; held && c < held->GetNumberOfTuples(); ++c)
+      {
+        count += held->GetTuple1(c);
+      }
+      js << ",\n  \"smooth\": {\"energy_before\": " << field(smoother, names::SmoothingEnergy, 0)
+         << ", \"energy_after\": " << field(smoother, names::SmoothingEnergy, 1)
+         << ", \"iterations\": " << field(smoother, names::SmoothingIterations, 0)
+         << ", \"held_triangles\": " << count << "}";
+    }
+    if (lastStage >= 2)
+    {
+      // Singularities by index (inner points) and the Poincare-Hopf sum over all points.
+      vtkPolyData* m = matching->GetOutput();
+      vtkDataArray* index = m->GetPointData()->GetArray(names::SingularityIndex);
+      double sum = 0.0;
+      for (vtkIdType p = 0; index && p < index->GetNumberOfTuples(); ++p)
+      {
+        sum += index->GetTuple1(p);
+      }
+      js << ",\n  \"matching\": {\"singularities\": " << field(matching, names::SingularityCount, 0)
+         << ", \"branch_points_before\": " << field(matching, names::BranchPointCount, 0)
+         << ", \"branch_points_after\": " << field(matching, names::BranchPointCount, 1)
+         << ", \"matching_cost_before\": " << field(matching, names::MatchingCost, 0)
+         << ", \"matching_cost_after\": " << field(matching, names::MatchingCost, 1)
+         << ", \"index_sum\": " << sum << ", \"singularities_by_index\": {";
+      vtkDataArray* table = m->GetFieldData()->GetArray(names::SingularityHistogram);
+      for (vtkIdType i = 0; table && i < table->GetNumberOfTuples(); ++i)
+      {
+        char key[32];
+        std::snprintf(key, sizeof key, "%g", table->GetComponent(i, 0));
+        js << (i ? ", " : "") << JsonString(key) << ": " << table->GetComponent(i, 1);
+      }
+      js << "}}";
+    }
+    js << "\n}\n";
     std::ofstream out(statsPath);
     out << js.str();
     if (!out.good())
