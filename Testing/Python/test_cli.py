@@ -75,6 +75,42 @@ class CommandLine(unittest.TestCase):
         self.assertGreaterEqual(s["seconds"]["curvature"], 0.0)
         self.assertEqual(s["repairs"]["merged_points"], 0)
 
+    def test_matching_stage_on_the_sphere(self):
+        # The sphere: 8 singularities of index +1/4, indices summing to 2.
+        out = os.path.join(self.dir, "s.vtp")
+        stats = os.path.join(self.dir, "s.json")
+        code, _, err = run(os.path.join(DATA, "sphere.obj"), "-o", out, "--stage", "matching",
+                           "--stats", stats)
+        self.assertEqual(code, 0, err)
+        with open(stats) as f:
+            m = json.load(f)["matching"]
+        self.assertEqual(m["singularities"], 8)
+        self.assertEqual(m["singularities_by_index"], {"0.25": 8})
+        self.assertAlmostEqual(m["index_sum"], 2.0, places=9)
+        reader = vtk.vtkXMLPolyDataReader()
+        reader.SetFileName(out)
+        reader.Update()
+        pd = reader.GetOutput()
+        for name in ("Matching", "FrameRotation", "FrameConstrained"):
+            self.assertIsNotNone(pd.GetCellData().GetArray(name), name)
+        for name in ("LayerShift", "SingularityIndex"):
+            self.assertIsNotNone(pd.GetPointData().GetArray(name), name)
+
+    def test_smoothing_options_reach_the_filter(self):
+        # Without features the cube holds nothing; with them its edges are held.
+        cube = os.path.join(DATA, "roundedcube.obj")
+        held = {}
+        for flag in ([], ["--no-features", "--no-boundary-alignment"]):
+            stats = os.path.join(self.dir, "c.json")
+            code, _, err = run(cube, "-o", os.path.join(self.dir, "c.vtp"), "--stage", "smooth",
+                               "--feature-angle", "10", "--smoothing", "0.8", "--stats", stats,
+                               *flag)
+            self.assertEqual(code, 0, err)
+            with open(stats) as f:
+                held[bool(flag)] = json.load(f)["smooth"]["held_triangles"]
+        self.assertGreater(held[False], 0)
+        self.assertEqual(held[True], 0)
+
     def test_every_input_format_and_legacy_output(self):
         # Convert Data/sphere.obj to .ply, .stl, .vtp, .vtk with VTK and read each back.
         reader = vtk.vtkOBJReader()
@@ -244,6 +280,10 @@ class CommandLine(unittest.TestCase):
                  ([knot, "-o", "x.txt"], r"cannot write .*unknown extension"),
                  ([knot, "-o", "x.vtp", "--stage", "bogus"], r"unknown stage 'bogus'"),
                  ([knot, "-o", "x.vtp", "--stage", "quads"], r"stage 'quads' .*not built yet"),
+                 ([knot, "-o", "x.vtp", "--smoothing", "1.5"], r"invalid value"),
+                 ([knot, "-o", "x.vtp", "--iterations", "2.5"], r"invalid value"),
+                 ([knot, "-o", "x.vtp", "--threads", "1e10"], r"invalid value"),
+                 ([knot, "-o", "x.vtp", "--branch-weight"], r"needs a value"),
                  ([knot, "-o", "x.vtp", "--radius", "-1"], r"invalid value"),
                  ([knot, "-o", "x.vtp", "--frobnicate"], r"unknown option")]
         for args, pattern in cases:

@@ -65,6 +65,28 @@ class CurvaturePipeline(unittest.TestCase):
         self.assertFalse(f.GetUseInputFrames())
         self.assertIn("NeighborhoodRadius", str(f))
 
+    def test_whole_chain_on_the_sphere(self):
+        # Curvature -> smoothing -> matchings with no array selection: 8 branch points of
+        # layer shift 1 (index +1/4), and Poincare-Hopf.
+        from quadcover import vtkFrameSmoother, vtkMatchingBuilder
+        reader = vtk.vtkOBJReader()
+        reader.SetFileName(os.path.join(DATA, "sphere.obj"))
+        frames = vtkCurvatureFrames()
+        frames.SetInputConnection(reader.GetOutputPort())
+        smoother = vtkFrameSmoother()
+        smoother.SetInputConnection(frames.GetOutputPort())
+        matching = vtkMatchingBuilder()
+        matching.SetInputConnection(smoother.GetOutputPort())
+        matching.Update()
+        out = matching.GetOutput()
+        index = numpy_support.vtk_to_numpy(out.GetPointData().GetArray("SingularityIndex"))
+        shift = numpy_support.vtk_to_numpy(out.GetPointData().GetArray("LayerShift"))
+        self.assertAlmostEqual(index.sum(), 2.0, places=9)
+        self.assertEqual(int((index == 0.25).sum()), 8)
+        self.assertEqual(int((shift == 1).sum()), 8)
+        branches = matching.GetOutput(1)
+        self.assertEqual(branches.GetNumberOfPoints(), 8)
+
     def test_empty_input_is_an_error_not_a_crash(self):
         f = vtkCurvatureFrames()
         f.SetInputData(vtk.vtkPolyData())

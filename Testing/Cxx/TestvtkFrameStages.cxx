@@ -1,0 +1,252 @@
+// vtkFrameSmoother and vtkMatchingBuilder through VTK: properties, errors, the array contract,
+// the branch-point output, and the whole chain on every generated and shared surface.
+#include "QuadCoverIO.h"
+
+#include "vtkCellData.h"
+#include "vtkCurvatureFrames.h"
+#include "vtkDoubleArray.h"
+#include "vtkFieldData.h"
+#include "vtkFrameSmoother.h"
+#include "vtkIdTypeArray.h"
+#include "vtkIntArray.h"
+#include "vtkMatchingBuilder.h"
+#include "vtkNew.h"
+#include "vtkPointData.h"
+#include "vtkPolyData.h"
+#include "vtkQuadCoverArrayNames.h"
+#include "vtkQuadCoverEigen.h"
+#include "vtkUnsignedCharArray.h"
+
+#include "MeshTopology.h"
+#include "Surfaces.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <fstream>
+#include <sstream>
+
+namespace names = vtkQuadCoverArrayNames;
+
+namespace
+{
+struct Chain
+{
+  vtkNew<vtkCurvatureFrames> curvature;
+  vtkNew<vtkFrameSmoother> smoother;
+  vtkNew<vtkMatchingBuilder> matching;
+  vtkNew<QuadCoverIO::ErrorObserver> errors;
+
+  explicit Chain(vtkPolyData* surface)
+  {
+    // The default chain: no array selection anywhere.
+    curvature->SetInputData(surface);
+    smoother->SetInputConnection(curvature->GetOutputPort());
+    matching->SetInputConnection(smoother->GetOutputPort());
+    errors->Attach(curvature);
+    errors->Attach(smoother);
+    errors->Attach(matching);
+  }
+  vtkPolyData* Run()
+  {
+    matching->Update();
+    return matching->GetOutput();
+  }
+};
+
+double IndexSum(vtkPolyData* out)
+{
+  vtkDataArray* index = out->GetPointData()->GetArray(names::SingularityIndex);
+  double sum = 0.0;
+  for (vtkIdType p = 0; p < index->GetNumberOfTuples(); ++p)
+  {
+    sum += index->GetTuple1(p);
+  }
+  return sum;
+}
+
+double Field(vtkPolyData* out, const char* name, int i = 0)
+{
+  vtkDataArray* a = out->GetFieldData()->GetArray(name);
+  return a ? a->GetComponent(0, i) : std::nan("");
+}
+}
+
+TEST(vtkFrameSmoother, DefaultsClampsAndPrintSelf)
+{
+  vtkNew<vtkFrameSmoother> f;
+  EXPECT_EQ(f->GetSmoothingWeight(), 0.5);
+  EXPECT_EQ(f->GetMaximumNumberOfIterations(), 200);
+  EXPECT_EQ(f->GetFeatureAngle(), 60.0);
+  EXPECT_EQ(f->GetMinimumFeatureLength(), 3);
+  EXPECT_TRUE(f->GetAlignToFeatures());
+  EXPECT_TRUE(f->GetAlignToBoundary());
+  EXPECT_TRUE(f->GetGlobalStart());
+  f->SetSmoothingWeight(2.0);
+  EXPECT_EQ(f->GetSmoothingWeight(), 1.0);
+  f->SetFeatureAngle(-5.0);
+  EXPECT_EQ(f->GetFeatureAngle(), 0.0);
+  std::ostringstream os;
+  f->Print(os);
+  for (const char* p : { "SmoothingWeight: 1", "FeatureAngle: 0", "AlignToBoundary: On" })
+  {
+    EXPECT_NE(os.str().find(p), std::string::npos) << p;
+  }
+}
+
+TEST(vtkMatchingBuilder, DefaultsClampsAndPrintSelf)
+{
+  vtkNew<vtkMatchingBuilder> m;
+  EXPECT_TRUE(m->GetOptimizeBranchPoints());
+  EXPECT_EQ(m->GetBranchPointWeight(), 3.0);
+  EXPECT_EQ(m->GetNumberOfOutputPorts(), 2);
+  m->SetBranchPointWeight(-1.0);
+  EXPECT_EQ(m->GetBranchPointWeight(), 0.0);
+  std::ostringstream os;
+  m->Print(os);
+  EXPECT_NE(os.str().find("OptimizeBranchPoints: On"), std::string::npos);
+}
+
+TEST(vtkFrameStages, MissingFramesAndBadSurfacesAreErrors)
+{
+  vtkSmartPointer<vtkPolyData> bare = vtkQuadCoverEigen::ToPolyData(
+    quadcover::makeIcosphere(1.0, 2).V, quadcover::makeIcosphere(1.0, 2).F);
+  for (int which = 0; which < 2; ++which)
+  {
+    vtkSmartPointer<vtkPolyDataAlgorithm> f;
+    if (which == 0)
+      f = vtkSmartPointer<vtkFrameSmoother>::New();
+    else
+      f = vtkSmartPointer<vtkMatchingBuilder>::New();
+    vtkNew<QuadCoverIO::ErrorObserver> errors;
+    errors->Attach(f);
+    f->SetInputData(bare);
+    f->Update();
+    EXPECT_NE(errors->Error().find("no 3-component cell array FrameU"), std::string::npos)
+      << errors->Error();
+  }
+  // A bowtie: fine for smoothing (a warning), refused by the matchings (no one-ring).
+  Eigen::MatrixX3d V(5, 3);
+  V << 0, 0, 0, 1, 0, 0, 0, 1, 0, -1, 0, 0, 0, -1, 0;
+  Eigen::MatrixX3i F(2, 3);
+  F << 0, 1, 2, 0, 3, 4;
+  Chain chain(vtkQuadCoverEigen::ToPolyData(V, F));
+  chain.Run();
+  EXPECT_NE(chain.errors->Error().find("non-manifold vertices"), std::string::npos)
+    << chain.errors->Error();
+}
+
+TEST(vtkFrameStages, ArraysOfTheChain)
+{
+  const quadcover::Surface s = quadcover::makeRoundedCube(0.0, 6);
+  Chain chain(vtkQuadCoverEigen::ToPolyData(s.V, s.F));
+  vtkPolyData* out = chain.Run();
+  ASSERT_EQ(chain.errors->Error(), "");
+  const vtkIdType nf = out->GetNumberOfCells(), nv = out->GetNumberOfPoints();
+  // Smoother's arrays.
+  vtkPolyData* smoothed = chain.smoother->GetOutput();
+  EXPECT_TRUE(vtkDoubleArray::SafeDownCast(smoothed->GetCellData()->GetArray(names::FrameU)));
+  EXPECT_TRUE(
+    vtkDoubleArray::SafeDownCast(smoothed->GetCellData()->GetArray(names::FrameRotation)));
+  EXPECT_TRUE(
+    vtkUnsignedCharArray::SafeDownCast(smoothed->GetCellData()->GetArray(names::FrameConstrained)));
+  EXPECT_EQ(smoothed->GetFieldData()->GetArray(names::SmoothingEnergy)->GetNumberOfTuples(), 2);
+  EXPECT_LT(Field(smoothed, names::SmoothingEnergy, 1), Field(smoothed, names::SmoothingEnergy, 0));
+  // The curvature stage's arrays pass through untouched except the frames.
+  EXPECT_NE(out->GetCellData()->GetArray(names::PrincipalCurvatures), nullptr);
+  // Matching builder's.
+  vtkIntArray* matching = vtkIntArray::SafeDownCast(out->GetCellData()->GetArray(names::Matching));
+  ASSERT_NE(matching, nullptr);
+  EXPECT_EQ(matching->GetNumberOfComponents(), 3);
+  EXPECT_EQ(matching->GetNumberOfTuples(), nf);
+  vtkIntArray* shift = vtkIntArray::SafeDownCast(out->GetPointData()->GetArray(names::LayerShift));
+  ASSERT_NE(shift, nullptr);
+  EXPECT_EQ(shift->GetNumberOfTuples(), nv);
+  EXPECT_TRUE(vtkDoubleArray::SafeDownCast(out->GetPointData()->GetArray(names::SingularityIndex)));
+  // The paper's Fig. 4: eight corners of layer shift 1, index 1/4, and nothing else.
+  EXPECT_EQ(Field(out, names::SingularityCount), 8);
+  EXPECT_EQ(Field(out, names::BranchPointCount, 1), 8);
+  vtkDataArray* histogram = out->GetFieldData()->GetArray(names::SingularityHistogram);
+  ASSERT_EQ(histogram->GetNumberOfTuples(), 1);
+  EXPECT_EQ(histogram->GetComponent(0, 0), 0.25);
+  EXPECT_EQ(histogram->GetComponent(0, 1), 8);
+  // The branch points as their own output, at the cube's corners.
+  vtkPolyData* branches = chain.matching->GetBranchPointsOutput();
+  ASSERT_EQ(branches->GetNumberOfPoints(), 8);
+  EXPECT_EQ(branches->GetNumberOfVerts(), 8);
+  vtkIdTypeArray* ids =
+    vtkIdTypeArray::SafeDownCast(branches->GetPointData()->GetArray(names::SurfacePointId));
+  ASSERT_NE(ids, nullptr);
+  for (vtkIdType i = 0; i < 8; ++i)
+  {
+    double p[3];
+    branches->GetPoint(i, p);
+    EXPECT_NEAR(std::abs(p[0]) + std::abs(p[1]) + std::abs(p[2]), 3.0, 1e-12);
+    EXPECT_EQ(shift->GetValue(ids->GetValue(i)), 1);
+    EXPECT_EQ(branches->GetPointData()->GetArray(names::LayerShift)->GetTuple1(i), 1);
+  }
+  // Matchings seen from both sides are inverse; boundary-free so no -1.
+  EXPECT_GE(matching->GetValueRange()[0], 0);
+}
+
+// ---- Poincare-Hopf through the whole chain on every surface ----
+
+class ChainOn : public ::testing::TestWithParam<const char*>
+{};
+
+TEST_P(ChainOn, IndicesSumToTheEulerCharacteristic)
+{
+  const std::string name = GetParam();
+  vtkSmartPointer<vtkPolyData> surface;
+  const std::string shared = std::string(QUADCOVER_SHARED_DATA) + "/" + name + ".obj";
+  const std::string own = std::string(QUADCOVER_DATA) + "/" + name + ".obj";
+  const std::string path = std::ifstream(own).good() ? own : shared;
+  if (!std::ifstream(path).good())
+  {
+    GTEST_SKIP() << "mesh not found: " << path;
+  }
+  std::string error;
+  vtkSmartPointer<vtkPolyData> raw = QuadCoverIO::ReadSurface(path, error);
+  ASSERT_TRUE(raw) << error;
+  QuadCoverIO::Repairs repairs;
+  surface = QuadCoverIO::PrepareSurface(raw, repairs, error);
+  ASSERT_TRUE(surface) << error;
+  const quadcover::MeshTopology topo = quadcover::buildTopology(
+    vtkQuadCoverEigen::Triangles(surface), static_cast<int>(surface->GetNumberOfPoints()));
+
+  Chain chain(surface);
+  chain.matching->OptimizeBranchPointsOff();
+  vtkPolyData* before = chain.Run();
+  ASSERT_EQ(chain.errors->Error(), "");
+  EXPECT_NEAR(IndexSum(before), topo.eulerCharacteristic(), 1e-9);
+  const double branchesBefore = Field(before, names::BranchPointCount, 1);
+  const double costBefore = 3.0 * branchesBefore + Field(before, names::MatchingCost, 1);
+
+  chain.matching->OptimizeBranchPointsOn();
+  vtkPolyData* after = chain.Run();
+  EXPECT_NEAR(IndexSum(after), topo.eulerCharacteristic(), 1e-9);
+  const double branchesAfter = Field(after, names::BranchPointCount, 1);
+  const double costAfter = 3.0 * branchesAfter + Field(after, names::MatchingCost, 1);
+  EXPECT_LE(branchesAfter, branchesBefore);
+  EXPECT_LE(costAfter, costBefore + 1e-9);
+  std::printf("[ %s ] chi %d, branch points %g -> %g, singularities %g, smoothing %g -> %g\n",
+    name.c_str(), topo.eulerCharacteristic(), branchesBefore, branchesAfter,
+    Field(after, names::SingularityCount),
+    Field(chain.smoother->GetOutput(), names::SmoothingEnergy, 0),
+    Field(chain.smoother->GetOutput(), names::SmoothingEnergy, 1));
+  // Inner indices are quarters and match the layer shifts.
+  vtkDataArray* index = after->GetPointData()->GetArray(names::SingularityIndex);
+  vtkDataArray* shift = after->GetPointData()->GetArray(names::LayerShift);
+  for (vtkIdType p = 0; p < index->GetNumberOfTuples(); ++p)
+  {
+    if (topo.boundaryVertex[p])
+      continue;
+    const double q = 4.0 * index->GetTuple1(p);
+    ASSERT_EQ(q, std::round(q)) << p;
+    ASSERT_EQ(static_cast<int>(shift->GetTuple1(p)), ((static_cast<int>(q) % 4) + 4) % 4) << p;
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(Surfaces, ChainOn,
+  ::testing::Values("sphere", "torus", "knot", "cylinder", "roundedcube", "bunny-lowres", "spot",
+    "fandisk", "rocker-arm", "cheburashka", "teapot"));
