@@ -1,6 +1,7 @@
 #!/usr/bin/env python3
 """Render a QuadCover result to a PNG: the surface coloured by a cell array, with the guidance
-frame field drawn as short segments along FrameU at every triangle's centre.
+frame field drawn as a small cross (FrameU, FrameV) at every triangle's centre, and (after the
+matching stage) the singular points as balls: red for positive index, blue for negative.
 
     render.py INPUT.vtp -o OUTPUT.png [--array FrameWeight] [--no-frames] [--size 1400x1000]
               [--azimuth DEG] [--elevation DEG]
@@ -31,10 +32,13 @@ def read(path):
     return data
 
 
-def frame_segments(surface, name, scale):
-    """Line segments c - s*u .. c + s*u at each triangle centre c, lifted off the surface."""
-    frame = surface.GetCellData().GetArray(name)
-    if frame is None:
+def frame_segments(surface, names, scale):
+    """Line segments c - s*u .. c + s*u at each triangle centre c for each named frame vector
+    (FrameU and FrameV draw the whole cross: a four-fold field may swap U and V between
+    neighbours without turning), lifted off the surface."""
+    frames = [surface.GetCellData().GetArray(n) for n in names]
+    frames = [f for f in frames if f is not None]
+    if not frames:
         return None
     points = numpy_support.vtk_to_numpy(surface.GetPoints().GetData()).astype(float)
     polys = numpy_support.vtk_to_numpy(surface.GetPolys().GetData())
@@ -44,16 +48,18 @@ def frame_segments(surface, name, scale):
     centre = (a + b + c) / 3.0
     normal = np.cross(b - a, c - a)
     normal /= np.maximum(np.linalg.norm(normal, axis=1), 1e-300)[:, None]
-    u = numpy_support.vtk_to_numpy(frame).astype(float)
     lift = 0.05 * scale * normal
-    ends = np.empty((2 * len(tri), 3))
-    ends[0::2] = centre - scale * u + lift
-    ends[1::2] = centre + scale * u + lift
+    ends = np.empty((2 * len(tri) * len(frames), 3))
+    for j, frame in enumerate(frames):
+        u = numpy_support.vtk_to_numpy(frame).astype(float)
+        part = ends[2 * len(tri) * j: 2 * len(tri) * (j + 1)]
+        part[0::2] = centre - scale * u + lift
+        part[1::2] = centre + scale * u + lift
     pts = vtk.vtkPoints()
     pts.SetData(numpy_support.numpy_to_vtk(ends, deep=True))
     lines = vtk.vtkCellArray()
-    conn = np.arange(2 * len(tri), dtype=np.int64)
-    offsets = np.arange(0, 2 * len(tri) + 1, 2, dtype=np.int64)
+    conn = np.arange(len(ends), dtype=np.int64)
+    offsets = np.arange(0, len(ends) + 1, 2, dtype=np.int64)
     lines.SetData(numpy_support.numpy_to_vtkIdTypeArray(offsets, deep=True),
                   numpy_support.numpy_to_vtkIdTypeArray(conn, deep=True))
     segments = vtk.vtkPolyData()
@@ -67,7 +73,11 @@ def main():
     parser.add_argument("input")
     parser.add_argument("-o", "--output", required=True)
     parser.add_argument("--array", default="FrameWeight", help="cell array for the colours")
-    parser.add_argument("--no-frames", action="store_true", help="do not draw FrameU")
+    parser.add_argument("--no-frames", action="store_true", help="do not draw the frames")
+    parser.add_argument("--frame-u-only", action="store_true",
+                        help="draw FrameU alone, not the whole cross")
+    parser.add_argument("--no-singularities", action="store_true",
+                        help="do not draw the singular points")
     parser.add_argument("--size", default="1400x1000")
     parser.add_argument("--azimuth", type=float, default=30.0)
     parser.add_argument("--elevation", type=float, default=25.0)
@@ -116,7 +126,8 @@ def main():
         quality.Update()
         areas = numpy_support.vtk_to_numpy(quality.GetOutput().GetCellData().GetArray("Area"))
         edge = float(np.sqrt(4.0 * max(float(np.mean(areas)), 1e-300) / np.sqrt(3.0)))
-        segments = frame_segments(surface, "FrameU", 0.4 * edge)
+        segments = frame_segments(surface, ["FrameU"] if args.frame_u_only
+                                  else ["FrameU", "FrameV"], 0.35 * edge)
         if segments is not None:
             seg_mapper = vtk.vtkPolyDataMapper()
             seg_mapper.SetInputData(segments)
@@ -126,6 +137,39 @@ def main():
             seg_actor.GetProperty().SetLineWidth(1.5)
             seg_actor.GetProperty().LightingOff()
             renderer.AddActor(seg_actor)
+
+    index = surface.GetPointData().GetArray("SingularityIndex")
+    if index is not None and not args.no_singularities:
+        values = numpy_support.vtk_to_numpy(index)
+        points = numpy_support.vtk_to_numpy(surface.GetPoints().GetData())
+        bounds = surface.GetBounds()
+        diagonal = float(np.linalg.norm([bounds[1] - bounds[0], bounds[3] - bounds[2],
+                                         bounds[5] - bounds[4]]))
+        # Inner singularities are multiples of 1/4; boundary points carry fractional leftovers.
+        quarter = np.abs(4.0 * values - np.round(4.0 * values)) < 1e-6
+        for sign, colour in ((1, (0.85, 0.1, 0.1)), (-1, (0.1, 0.25, 0.9))):
+            chosen = np.nonzero(quarter & (sign * values > 1e-9))[0]
+            if len(chosen) == 0:
+                continue
+            pts = vtk.vtkPoints()
+            for i in chosen:
+                pts.InsertNextPoint(*points[i])
+            cloud = vtk.vtkPolyData()
+            cloud.SetPoints(pts)
+            ball = vtk.vtkSphereSource()
+            ball.SetRadius(0.008 * diagonal)
+            ball.SetThetaResolution(16)
+            ball.SetPhiResolution(12)
+            glyphs = vtk.vtkGlyph3D()
+            glyphs.SetInputData(cloud)
+            glyphs.SetSourceConnection(ball.GetOutputPort())
+            glyph_mapper = vtk.vtkPolyDataMapper()
+            glyph_mapper.SetInputConnection(glyphs.GetOutputPort())
+            glyph_mapper.ScalarVisibilityOff()
+            glyph_actor = vtk.vtkActor()
+            glyph_actor.SetMapper(glyph_mapper)
+            glyph_actor.GetProperty().SetColor(*colour)
+            renderer.AddActor(glyph_actor)
 
     camera = renderer.GetActiveCamera()
     renderer.ResetCamera()

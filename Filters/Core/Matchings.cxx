@@ -184,10 +184,12 @@ BranchPointReport optimizeBranchPoints(const Eigen::MatrixX3i& F, const MeshTopo
   const Eigen::VectorXd phi = vectorAngles(geometry.bases, frameU);
   BranchPointReport report;
   report.before = topology.branchPoints;
-  report.costBefore = lambda * topology.branchPoints + topology.matchingCost;
+  report.singularitiesBefore = topology.singularities;
+  report.costBefore = lambda * topology.singularities + topology.matchingCost;
   if (!(lambda > 0.0))
   {
     report.after = report.before;
+    report.singularitiesAfter = report.singularitiesBefore;
     report.costAfter = report.costBefore;
     return report;
   }
@@ -231,7 +233,13 @@ BranchPointReport optimizeBranchPoints(const Eigen::MatrixX3i& F, const MeshTopo
     const int r = mod4(M(s.g, s.kg) + delta);
     return std::abs(residual(turning(geometry, phi, s.g, s.kg, s.f), r));
   };
-  Eigen::VectorXi& ls = topology.layerShift;
+  // Work in quarter turns: q = 4 index. Changing the matchings along a path from a to b by
+  // delta adds delta to q(a) and takes it from q(b).
+  std::vector<int> q(nv, 0);
+  for (int v = 0; v < nv; ++v)
+  {
+    q[v] = topo.boundaryVertex[v] ? 0 : static_cast<int>(std::lround(4.0 * topology.index[v]));
+  }
 
   std::vector<double> dist(nv, 0.0);
   std::vector<int> cameFrom(nv, -1), stepIndex(nv, -1), stamp(nv, -1);
@@ -241,12 +249,12 @@ BranchPointReport optimizeBranchPoints(const Eigen::MatrixX3i& F, const MeshTopo
     int changed = 0;
     for (int a = 0; a < nv; ++a)
     {
-      if (ls[a] == 0 || topo.boundaryVertex[a])
+      // A singularity of index +-1/4 or +-1/2 can be cleared by one path.
+      if (q[a] == 0 || std::abs(q[a]) > 2 || topo.boundaryVertex[a])
       {
         continue;
       }
-      // The change that clears a's layer shift.
-      const int delta = ls[a] == 1 ? -1 : (ls[a] == 3 ? 1 : 2);
+      const int delta = -q[a];
       ++search;
       using Item = std::pair<double, int>;
       std::priority_queue<Item, std::vector<Item>, std::greater<Item>> queue;
@@ -265,24 +273,28 @@ BranchPointReport optimizeBranchPoints(const Eigen::MatrixX3i& F, const MeshTopo
           continue; // stale, or no path this long can pay for itself
         }
         ++visited;
-        if (u != a && ls[u] != 0)
+        if (u != a && q[u] != 0)
         {
-          // Ending here: a is cleared; u's shift becomes ls[u] - delta.
-          const int removed = 1 + (mod4(ls[u] - delta) == 0 ? 1 : 0);
-          // The path's true cost (Dijkstra ran on costs clipped at zero).
-          double pathCost = 0.0;
-          for (int x = u; x != a; x = cameFrom[x])
+          // Ending here: a becomes regular; u only if the two cancel. Accept only paths that
+          // make u's index smaller (never merge into a higher-order singularity).
+          const int after = q[u] - delta;
+          if (std::abs(after) < std::abs(q[u]))
           {
-            const Step& s = steps[cameFrom[x]][stepIndex[x]];
-            pathCost += deviationWith(s, delta) - deviationWith(s, 0);
+            const int removed = 1 + (after == 0 ? 1 : 0);
+            double pathCost = 0.0; // the true cost (the search ran on costs clipped at zero)
+            for (int x = u; x != a; x = cameFrom[x])
+            {
+              const Step& s = steps[cameFrom[x]][stepIndex[x]];
+              pathCost += deviationWith(s, delta) - deviationWith(s, 0);
+            }
+            const double gain = lambda * removed - pathCost;
+            if (gain > bestGain + 1e-12)
+            {
+              bestGain = gain;
+              best = u;
+            }
           }
-          const double gain = lambda * removed - pathCost;
-          if (gain > bestGain + 1e-12)
-          {
-            bestGain = gain;
-            best = u;
-          }
-          continue; // paths through another branch point would disturb it
+          continue; // paths through another singularity would disturb it
         }
         for (int i = 0; i < static_cast<int>(steps[u].size()); ++i)
         {
@@ -309,8 +321,8 @@ BranchPointReport optimizeBranchPoints(const Eigen::MatrixX3i& F, const MeshTopo
         M(s.g, s.kg) = mod4(M(s.g, s.kg) + delta);
         M(s.f, s.kf) = mod4(-M(s.g, s.kg));
       }
-      ls[a] = 0;
-      ls[best] = mod4(ls[best] - delta);
+      q[a] = 0;
+      q[best] -= delta;
       ++changed;
       ++report.pathsChanged;
     }
@@ -321,7 +333,8 @@ BranchPointReport optimizeBranchPoints(const Eigen::MatrixX3i& F, const MeshTopo
   }
   topology = evaluateMatchings(F, topo, geometry, frameU, M);
   report.after = topology.branchPoints;
-  report.costAfter = lambda * topology.branchPoints + topology.matchingCost;
+  report.singularitiesAfter = topology.singularities;
+  report.costAfter = lambda * topology.singularities + topology.matchingCost;
   return report;
 }
 

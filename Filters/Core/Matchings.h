@@ -62,7 +62,7 @@ FrameTopology evaluateMatchings(const Eigen::MatrixX3i& F, const MeshTopology& t
 
 struct BranchPointOptions
 {
-  /// lambda of the cost lambda * (number of branch points) + sum of matching deviations
+  /// lambda of the cost lambda * (number of singular inner points) + sum of matching deviations
   /// (radians); a path is changed only when it lowers that cost.
   double weight = 3.0;
   /// Vertices a search may visit from one branch point (a guard on very large meshes).
@@ -72,18 +72,25 @@ struct BranchPointOptions
 
 struct BranchPointReport
 {
-  int before = 0;        ///< branch points before
-  int after = 0;         ///< after
-  double costBefore = 0; ///< lambda * branch points + sum C_ij
+  int before = 0; ///< branch points before
+  int after = 0;  ///< after
+  int singularitiesBefore = 0;
+  int singularitiesAfter = 0;
+  double costBefore = 0; ///< lambda * singularities + sum C_ij
   double costAfter = 0;
   int pathsChanged = 0;
 };
 
 /**
- * Greedy branch-point optimization (Sect. 4.2): from each branch point, search edge paths to
- * other branch points whose layer shifts cancel (or combine into one), and change the matchings
- * along the best path when that lowers lambda * C_b + sum C_ij. The layer shifts of the path's
- * inner vertices do not change, so Poincare-Hopf keeps holding. Updates `topology` in place.
+ * Greedy branch-point optimization (Sect. 4.2): from each singular point of index +-1/4 or
+ * +-1/2, search edge paths (Dijkstra on the added matching deviation) to other singular points,
+ * and change the matchings along the best path when that lowers lambda * C_b + sum C_ij, C_b
+ * counting singular inner points. Changing the matchings along a path by delta quarter turns
+ * adds delta/4 to the start's index and takes it from the end's, leaving the points in between
+ * alone, so Poincare-Hopf keeps holding. A path must clear its start and make its end's index
+ * strictly smaller: pairs whose layer shifts cancel disappear together (the paper's merge), and
+ * no two singularities combine into one of higher order (+1/4 and +1/4 into +1/2, which would
+ * make a valence-2 quad vertex). Updates `topology` in place.
  */
 BranchPointReport optimizeBranchPoints(const Eigen::MatrixX3i& F, const MeshTopology& topo,
   const FrameGeometry& geometry, const Eigen::MatrixX3d& frameU, FrameTopology& topology,
