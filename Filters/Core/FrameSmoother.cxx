@@ -339,7 +339,7 @@ SmootherResult smoothFrames(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F
     const double meanDiag = diag.sum() / n, meanMass = mass.sum() / n;
     const bool aligned = R.numConstrained > 0 || alignTotal > 1e-9 * smoothTotal;
     const double shift = 1e-6 * meanDiag / std::max(meanMass, 1e-300);
-    auto factor = [&](double sigma, Eigen::SimplicialLDLT<Eigen::SparseMatrix<C>>& solver) {
+    auto factor = [&](double sigma, Eigen::SimplicialLDLT<Eigen::SparseMatrix<C>>& solver) -> bool {
       std::vector<Eigen::Triplet<C>> all = t;
       for (int i = 0; i < n; ++i)
       {
@@ -357,24 +357,36 @@ SmootherResult smoothFrames(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F
       if (unknown[f] >= 0)
         u0[unknown[f]] = std::polar(1.0, 4.0 * phi[f]);
     }
+    // One factorization serves both: the shift is far below the smallest nonzero eigenvalue's
+    // scale, so the aligned solution barely feels it.
     Eigen::SimplicialLDLT<Eigen::SparseMatrix<C>> solver;
-    if (aligned && factor(1e-4 * shift, solver))
+    if (factor(shift, solver))
     {
-      u0 = solver.solve(b);
-      starts.push_back(u0);
-    }
-    if (R.numConstrained == 0 && factor(shift, solver))
-    {
-      Eigen::VectorXcd u = u0;
-      for (int it = 0; it < 40; ++it)
+      if (aligned)
       {
-        u = solver.solve((mass.cast<C>().array() * u.array()).matrix());
-        const double norm = std::sqrt((mass.array() * u.array().abs2()).sum());
-        if (!(norm > 0.0) || !std::isfinite(norm))
-          break;
-        u /= norm;
+        u0 = solver.solve(b);
+        starts.push_back(u0);
       }
-      starts.push_back(u);
+      if (R.numConstrained == 0)
+      {
+        Eigen::VectorXcd u = u0;
+        for (int it = 0; it < 40; ++it)
+        {
+          Eigen::VectorXcd next = solver.solve((mass.cast<C>().array() * u.array()).matrix());
+          const double norm = std::sqrt((mass.array() * next.array().abs2()).sum());
+          if (!(norm > 0.0) || !std::isfinite(norm))
+            break;
+          next /= norm;
+          // Settled (up to a global phase, which does not matter for the cross field)?
+          const C overlap = (mass.cast<C>().array() * u.array().conjugate() * next.array()).sum();
+          u = next;
+          // At least a dozen rounds: leftovers of higher modes, however small, add pairs of
+          // singularities where the field is weak.
+          if (it >= 12 && 1.0 - std::abs(overlap) < 1e-10)
+            break;
+        }
+        starts.push_back(u);
+      }
     }
     for (const Eigen::VectorXcd& u : starts)
     {
