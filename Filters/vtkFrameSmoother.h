@@ -13,8 +13,9 @@
  *
  * The minimization starts from the input and from the globally optimal four-fold fields
  * (Knoeppel et al. 2013: the smoothest field blended with the alignment term, and the smoothest
- * field itself when nothing is held), and keeps the run that ends lowest; every run descends
- * monotonically (each iteration minimizes a quadratic upper bound of E, factored once).
+ * field itself when nothing is held and the alignment is weak), and keeps the run that ends
+ * lowest; every run descends monotonically (each iteration minimizes a quadratic upper bound of
+ * E, factored once, and tries longer steps along it).
  *
  * Features and boundaries (AlignToFeatures, AlignToBoundary, on by default): triangles along a
  * boundary edge or a sharp edge (normals more than FeatureAngle degrees apart, as in

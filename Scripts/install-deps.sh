@@ -7,6 +7,7 @@ packages=(
   cmake g++ make pkg-config
   libvtk9-dev python3-vtk9 python3-dev python3-numpy   # VTK 9.1 with its Python wrapping
   libeigen3-dev                                        # Eigen 3.4
+  libsuitesparse-dev                                   # CHOLMOD for the sparse solves
   libgtest-dev                                         # GoogleTest
   xvfb xauth                                           # off-screen pictures without a display
 )

@@ -31,8 +31,9 @@ struct SmootherOptions
   /// Hold the frames of triangles along the boundary aligned to it.
   bool alignToBoundary = true;
   /// Besides the input, start from the globally optimal four-fold fields (Knoeppel et al. 2013):
-  /// the smoothest field blended with the alignment term, and (when no frame is held) the
-  /// smoothest field itself; keep the run that ends with the lowest energy.
+  /// the smoothest field blended with the alignment term, and (when no frame is held and the
+  /// alignment term is weak, below 2% of the smoothing term's weight) the smoothest field
+  /// itself; keep the run that ends with the lowest energy.
   bool globalStart = true;
 };
 
