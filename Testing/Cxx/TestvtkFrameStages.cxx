@@ -240,6 +240,11 @@ TEST_P(ChainOn, IndicesSumToTheEulerCharacteristic)
   const double costAfter = 3.0 * singularAfter + Field(after, names::MatchingCost, 1);
   EXPECT_LE(branchesAfter, branchesBefore);
   EXPECT_LE(singularAfter, singularBefore);
+  if (path == shared)
+  {
+    // Every shared mesh has pairs to cancel (README: bunny-lowres 62 -> 26, ...).
+    EXPECT_LT(singularAfter, singularBefore);
+  }
   EXPECT_LE(costAfter, costBefore + 1e-9);
   std::printf("[ %s ] chi %d, branch points %g -> %g, singularities %g -> %g, smoothing %g -> %g\n",
     name.c_str(), topo.eulerCharacteristic(), branchesBefore, branchesAfter, singularBefore,
