@@ -108,10 +108,8 @@ int vtkCurvatureFrames::RequestData(
     cd->AddArray(vtkQuadCoverEigen::ToArray(field.frameU, names::FrameU));
     cd->AddArray(vtkQuadCoverEigen::ToArray(field.frameV, names::FrameV));
     cd->AddArray(vtkQuadCoverEigen::ToArray(field.weight, names::FrameWeight));
-    vtkNew<vtkDoubleArray> radius;
-    radius->SetName(names::CurvatureRadius);
-    radius->InsertNextValue(field.radius);
-    output->GetFieldData()->AddArray(radius);
+    vtkQuadCoverEigen::AddField<vtkDoubleArray>(
+      output->GetFieldData(), names::CurvatureRadius, { field.radius });
   }
   catch (const std::exception& e)
   {

@@ -137,15 +137,10 @@ int vtkFrameSmoother::RequestData(
       held->SetValue(f, r.constrained[f]);
     }
     cd->AddArray(held);
-    vtkNew<vtkDoubleArray> energy;
-    energy->SetName(names::SmoothingEnergy);
-    energy->InsertNextValue(r.energyBefore);
-    energy->InsertNextValue(r.energyAfter);
-    output->GetFieldData()->AddArray(energy);
-    vtkNew<vtkIntArray> iterations;
-    iterations->SetName(names::SmoothingIterations);
-    iterations->InsertNextValue(r.iterations);
-    output->GetFieldData()->AddArray(iterations);
+    vtkQuadCoverEigen::AddField<vtkDoubleArray>(
+      output->GetFieldData(), names::SmoothingEnergy, { r.energyBefore, r.energyAfter });
+    vtkQuadCoverEigen::AddField<vtkIntArray>(
+      output->GetFieldData(), names::SmoothingIterations, { double(r.iterations) });
   }
   catch (const std::exception& e)
   {

@@ -118,10 +118,9 @@ int vtkMatchingBuilder::RequestData(
     }
     output->GetPointData()->AddArray(shift);
     output->GetPointData()->AddArray(vtkQuadCoverEigen::ToArray(t.index, names::SingularityIndex));
-    vtkNew<vtkIntArray> singularities;
-    singularities->SetName(names::SingularityCount);
-    singularities->InsertNextValue(t.singularities);
-    output->GetFieldData()->AddArray(singularities);
+    vtkFieldData* fd = output->GetFieldData();
+    vtkQuadCoverEigen::AddField<vtkIntArray>(
+      fd, names::SingularityCount, { double(t.singularities) });
     std::map<double, int> histogram;
     for (vtkIdType p = 0; p < nv; ++p)
     {
@@ -137,17 +136,11 @@ int vtkMatchingBuilder::RequestData(
     {
       table->InsertNextTuple2(value, count);
     }
-    output->GetFieldData()->AddArray(table);
-    vtkNew<vtkIntArray> branches;
-    branches->SetName(names::BranchPointCount);
-    branches->InsertNextValue(branchBefore);
-    branches->InsertNextValue(t.branchPoints);
-    output->GetFieldData()->AddArray(branches);
-    vtkNew<vtkDoubleArray> cost;
-    cost->SetName(names::MatchingCost);
-    cost->InsertNextValue(costBefore);
-    cost->InsertNextValue(t.matchingCost);
-    output->GetFieldData()->AddArray(cost);
+    fd->AddArray(table);
+    vtkQuadCoverEigen::AddField<vtkIntArray>(
+      fd, names::BranchPointCount, { double(branchBefore), double(t.branchPoints) });
+    vtkQuadCoverEigen::AddField<vtkDoubleArray>(
+      fd, names::MatchingCost, { costBefore, t.matchingCost });
 
     // The branch points, for glyphs.
     vtkNew<vtkPoints> points;

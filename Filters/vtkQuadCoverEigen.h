@@ -7,6 +7,7 @@
 #include "vtkCellArray.h"
 #include "vtkDataArray.h"
 #include "vtkDoubleArray.h"
+#include "vtkFieldData.h"
 #include "vtkIdList.h"
 #include "vtkNew.h"
 #include "vtkPoints.h"
@@ -19,6 +20,7 @@
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 
+#include <initializer_list>
 #include <string>
 
 namespace vtkQuadCoverEigen
@@ -94,6 +96,19 @@ vtkSmartPointer<vtkDoubleArray> ToArray(const Eigen::MatrixBase<Derived>& M, con
     }
   }
   return a;
+}
+
+/// Adds a field-data array `name` of type ArrayT holding `values` (one component).
+template<typename ArrayT>
+void AddField(vtkFieldData* fd, const char* name, std::initializer_list<double> values)
+{
+  vtkNew<ArrayT> a;
+  a->SetName(name);
+  for (double v : values)
+  {
+    a->InsertNextTuple1(v);
+  }
+  fd->AddArray(a);
 }
 
 /// #tuples x 3 from a 3-component array.

@@ -44,6 +44,18 @@ Eigen::MatrixX3d randomFrames(const Mesh& m, unsigned seed)
   return angleVectors(m.geometry.bases, a);
 }
 
+/// On the cube: in each face the first cube axis lying in it, a field along the cube's edges.
+Eigen::MatrixX3d cubeAxisField(const Mesh& m)
+{
+  Eigen::MatrixX3d U(m.s.F.rows(), 3);
+  for (Eigen::Index f = 0; f < U.rows(); ++f)
+  {
+    const Eigen::Vector3d n = m.geometry.bases.normal.row(f);
+    U.row(f) = std::abs(n.x()) < 0.5 ? Eigen::RowVector3d(1, 0, 0) : Eigen::RowVector3d(0, 1, 0);
+  }
+  return U;
+}
+
 double indexSum(const FrameTopology& t)
 {
   return t.index.sum();
@@ -117,13 +129,7 @@ TEST(Matchings, CubeCornersAreBranchPointsOfLayerShiftOne)
 {
   // The paper's Fig. 4: a field along the cube's edges has a branch point at every corner.
   const Mesh m = prepare(makeRoundedCube(0.0, 6));
-  Eigen::MatrixX3d U(m.s.F.rows(), 3);
-  for (Eigen::Index f = 0; f < U.rows(); ++f)
-  {
-    // A cube axis lying in the face: the first one orthogonal to the normal.
-    const Eigen::Vector3d n = m.geometry.bases.normal.row(f);
-    U.row(f) = std::abs(n.x()) < 0.5 ? Eigen::RowVector3d(1, 0, 0) : Eigen::RowVector3d(0, 1, 0);
-  }
+  const Eigen::MatrixX3d U = cubeAxisField(m);
   const FrameTopology t = computeMatchings(m.s.F, m.topo, m.geometry, U);
   EXPECT_EQ(t.branchPoints, 8);
   EXPECT_EQ(t.singularities, 8);
@@ -142,12 +148,7 @@ TEST(Matchings, HalfTurnResidualsCancelAcrossTheirEdge)
   // matching by two quarter turns leaves a residual of +-pi there, which must cancel between the
   // edge's two sides for Poincare-Hopf to hold (index +-1/2 at the edge's two points).
   const Mesh m = prepare(makeRoundedCube(0.0, 6));
-  Eigen::MatrixX3d U(m.s.F.rows(), 3);
-  for (Eigen::Index f = 0; f < U.rows(); ++f)
-  {
-    const Eigen::Vector3d n = m.geometry.bases.normal.row(f);
-    U.row(f) = std::abs(n.x()) < 0.5 ? Eigen::RowVector3d(1, 0, 0) : Eigen::RowVector3d(0, 1, 0);
-  }
+  const Eigen::MatrixX3d U = cubeAxisField(m);
   FrameTopology t = computeMatchings(m.s.F, m.topo, m.geometry, U);
   for (int f = 0; f < m.topo.numFaces; f += 7)
   {
