@@ -89,14 +89,12 @@ int vtkFrameSmoother::RequestData(
         U.row(f) = geometry.bases.b1.row(f); // no usable direction: any tangent will do
       }
     }
-    Eigen::MatrixX3d Vf(nf, 3);
-    if (v && v->GetNumberOfComponents() == 3 && v->GetNumberOfTuples() == nf)
+    // FrameV as given where it is finite, else n x FrameU.
+    const bool haveV = v && v->GetNumberOfComponents() == 3 && v->GetNumberOfTuples() == nf;
+    Eigen::MatrixX3d Vf = haveV ? vtkQuadCoverEigen::FromArray3(v) : Eigen::MatrixX3d(nf, 3);
+    for (vtkIdType f = 0; f < nf; ++f)
     {
-      Vf = vtkQuadCoverEigen::FromArray3(v);
-    }
-    else
-    {
-      for (vtkIdType f = 0; f < nf; ++f)
+      if (!haveV || !Vf.row(f).allFinite())
       {
         Vf.row(f) = geometry.bases.normal.row(f).cross(U.row(f));
       }

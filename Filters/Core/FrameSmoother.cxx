@@ -56,6 +56,10 @@ SmootherResult smoothFrames(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F
   {
     throw std::invalid_argument("smoothFrames: one frame and one weight per triangle expected");
   }
+  if (!frameU.allFinite() || !frameV.allFinite())
+  {
+    throw std::invalid_argument("smoothFrames: frames must be finite");
+  }
   if (!(options.smoothingWeight >= 0.0 && options.smoothingWeight <= 1.0))
   {
     throw std::invalid_argument("smoothFrames: smoothing weight must lie in [0, 1]");
@@ -229,6 +233,14 @@ SmootherResult smoothFrames(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F
     }
   }
 
+  // Rounding in E is relative to the size of its terms, not to E (which may be ~0).
+  double energyScale = 1e-300;
+  for (const Link& l : P.links)
+  {
+    energyScale += lambda * l.w;
+  }
+  energyScale += (1.0 - lambda) * (P.area.array() * P.weight.array()).sum();
+  int rejected = 0;
   auto descend = [&](Eigen::VectorXd alpha, std::vector<double>& history, int& iterations) {
     double E = P.energy(alpha);
     history.assign(1, E);
@@ -273,11 +285,13 @@ SmootherResult smoothFrames(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F
         next.swap(longer);
         En = El;
       }
-      ++iterations;
       if (!(En <= E))
       {
-        break; // only rounding can do this: the bound guarantees descent
+        // The bound guarantees descent: only rounding at the minimum gets here.
+        rejected += En - E > 1e-12 * energyScale || !std::isfinite(En);
+        break;
       }
+      ++iterations;
       alpha = next;
       history.push_back(En);
       const bool done = E - En <= options.tolerance * std::max(E, 1e-300);
@@ -357,9 +371,11 @@ SmootherResult smoothFrames(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F
     const double shift = 1e-6 * meanDiag / std::max(meanMass, 1e-300);
     auto factor = [&](double sigma, SpdSolver<C>& solver) -> bool {
       std::vector<Eigen::Triplet<C>> all = t;
+      // The floor keeps the matrix definite where a triangle has neither links nor area (an
+      // isolated zero-area triangle), which would otherwise drop the start for the whole mesh.
       for (int i = 0; i < n; ++i)
       {
-        all.emplace_back(i, i, C(diag[i] + sigma * mass[i], 0.0));
+        all.emplace_back(i, i, C(diag[i] + sigma * mass[i] + 1e-9 * meanDiag + 1e-300, 0.0));
       }
       Eigen::SparseMatrix<C> A(n, n);
       A.setFromTriplets(all.begin(), all.end());
@@ -432,6 +448,7 @@ SmootherResult smoothFrames(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F
     }
   }
 
+  R.rejectedSteps = rejected;
   R.rotation = alpha;
   R.energyAfter = R.energyHistory.back();
   R.frameU = frameU;

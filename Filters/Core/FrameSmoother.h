@@ -50,6 +50,9 @@ struct SmootherResult
   double energyAfter = 0.0;
   std::vector<double> energyHistory; ///< E at the start and after every iteration (chosen run)
   int iterations = 0;
+  /// Steps that raised the energy by more than rounding (always 0 if the bound holds: the
+  /// descent would stop at such a step, so only this count can show it).
+  int rejectedSteps = 0;
   bool fromGlobalStart = false; ///< the chosen run started from a global field
 };
 
@@ -64,7 +67,7 @@ struct SmootherResult
  * Frames held along features and boundaries: the triangle's longest such edge wins (at corners,
  * where two meet at about a right angle, the cross fits both).
  * @param[in] frameU, frameV #F x 3 input frames (tangent), @param[in] weight #F
- * @throws std::invalid_argument on sizes that do not match
+ * @throws std::invalid_argument on sizes that do not match or non-finite frames
  */
 SmootherResult smoothFrames(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F,
   const MeshTopology& topo, const FrameGeometry& geometry, const Eigen::MatrixX3d& frameU,

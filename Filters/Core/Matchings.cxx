@@ -299,6 +299,14 @@ BranchPointReport optimizeBranchPoints(const Eigen::MatrixX3i& F, const MeshTopo
         for (int i = 0; i < static_cast<int>(steps[u].size()); ++i)
         {
           const Step& s = steps[u][i];
+          // Changing this edge by delta quarter turns must move exactly delta/4 of index along
+          // the path: not if its residual would wrap past +-pi (possible for delta = +-2, or on
+          // an edge an earlier path changed), which would put a whole turn on a point between.
+          const double r0 = residual(turning(geometry, phi, s.g, s.kg, s.f), M(s.g, s.kg));
+          if (!(std::abs(r0 + delta * Quarter) < Pi))
+          {
+            continue;
+          }
           const double w = std::max(0.0, deviationWith(s, delta) - deviationWith(s, 0));
           const double nd = d + w;
           if (stamp[s.to] != search || nd < dist[s.to])

@@ -10,6 +10,7 @@
 #include <Eigen/Geometry>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 
@@ -224,6 +225,55 @@ TEST(Matchings, BranchPointOptimizationLowersTheCostAndKeepsPoincareHopf)
     FrameTopology u = computeMatchings(m.s.F, m.topo, m.geometry, U);
     opt.weight = 0.0;
     EXPECT_EQ(optimizeBranchPoints(m.s.F, m.topo, m.geometry, U, u, opt).pathsChanged, 0);
+  }
+}
+
+TEST(Matchings, BranchPointOptimizationNeverCreatesSingularities)
+{
+  // With long paths allowed (weight 10) a path may cross edges whose residual would wrap past
+  // +-pi if changed; such an edge would move a whole turn of index onto a point in between.
+  // Whatever the weight, no regular point may become singular and no index may grow past the
+  // largest the field had.
+  for (const char* name : { "sphere", "torus", "knot", "saddle" })
+  {
+    const Mesh m = prepare(testSurface(name));
+    for (unsigned seed : { 3u, 4u })
+    {
+      // A field that is smooth with noise: random fields are all singularities.
+      Eigen::VectorXd a(m.s.F.rows());
+      std::mt19937 rng(seed);
+      for (Eigen::Index f = 0; f < a.size(); ++f)
+      {
+        const Eigen::Vector3d c = (m.s.V.row(m.s.F(f, 0)) + m.s.V.row(m.s.F(f, 1))) / 2.0;
+        a[f] = 3.0 * c.x() + 2.0 * c.y() + 0.9 * (rng() / 4294967296.0 - 0.5);
+      }
+      const Eigen::MatrixX3d U = angleVectors(m.geometry.bases, a);
+      for (double weight : { 3.0, 10.0, 30.0 })
+      {
+        FrameTopology t = computeMatchings(m.s.F, m.topo, m.geometry, U);
+        const FrameTopology before = t;
+        BranchPointOptions opt;
+        opt.weight = weight;
+        optimizeBranchPoints(m.s.F, m.topo, m.geometry, U, t, opt);
+        double largest = 0.0;
+        for (int v = 0; v < m.topo.numVertices; ++v)
+        {
+          if (!m.topo.boundaryVertex[v])
+            largest = std::max(largest, std::abs(before.index[v]));
+        }
+        for (int v = 0; v < m.topo.numVertices; ++v)
+        {
+          if (m.topo.boundaryVertex[v])
+            continue;
+          ASSERT_FALSE(before.index[v] == 0.0 && t.index[v] != 0.0)
+            << name << " seed " << seed << " weight " << weight << " point " << v << " became "
+            << t.index[v];
+          ASSERT_LE(std::abs(t.index[v]), largest) << name << " " << v;
+        }
+        EXPECT_LE(t.singularities, before.singularities);
+        EXPECT_NEAR(t.index.sum(), m.topo.eulerCharacteristic(), 1e-9);
+      }
+    }
   }
 }
 

@@ -188,6 +188,23 @@ TEST(vtkFrameStages, ArraysOfTheChain)
   }
   // Matchings seen from both sides are inverse; boundary-free so no -1.
   EXPECT_GE(matching->GetValueRange()[0], 0);
+  const quadcover::MeshTopology topo =
+    quadcover::buildTopology(vtkQuadCoverEigen::Triangles(out), static_cast<int>(nv));
+  for (vtkIdType f = 0; f < nf; ++f)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      const int g = topo.faceNeighbors(f, k);
+      for (int kk = 0; kk < 3; ++kk)
+      {
+        if (topo.faceNeighbors(g, kk) == f)
+        {
+          ASSERT_EQ(
+            (matching->GetTypedComponent(f, k) + matching->GetTypedComponent(g, kk)) % 4, 0);
+        }
+      }
+    }
+  }
 }
 
 // ---- Poincare-Hopf through the whole chain on every surface ----
