@@ -9,8 +9,9 @@
  *
  * With OptimizeBranchPoints (default on) it then runs the greedy search of Sect. 4.2: paths
  * between nearby branch points whose layer shifts cancel (or combine) get their matchings
- * changed when that lowers BranchPointWeight * (number of branch points) + sum over edges of
- * the matched frames' angle (radians). Poincare-Hopf holds before and after.
+ * changed when that lowers BranchPointWeight * (number of singular points) + sum over edges of
+ * the matched frames' angle (radians). Only pairs that cancel are merged: no singularity grows.
+ * Poincare-Hopf holds before and after.
  *
  * Output 0: the surface with cell data Matching (3 x int: for edge k = (point k, point k+1),
  * X_{neighbour,m} = X_{this,(m - r) mod 4}, X_0 = FrameU, X_1 = n x FrameU, ...; -1 on boundary
@@ -53,8 +54,9 @@ public:
 
   ///@{
   /**
-   * lambda: the cost of one branch point in radians of matching angle, in [0, 100]
-   * (default 3). Larger values remove more branch points at the price of straighter lines.
+   * lambda: the cost of one singular point in radians of matching angle, in [0, 100]
+   * (default 6). Larger values remove more singularities at the price of less straight
+   * parameter lines (larger angles between matched frames along the merge paths).
    */
   vtkSetClampMacro(BranchPointWeight, double, 0.0, 100.0);
   vtkGetMacro(BranchPointWeight, double);
@@ -76,7 +78,7 @@ protected:
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
   bool OptimizeBranchPoints = true;
-  double BranchPointWeight = 3.0;
+  double BranchPointWeight = 6.0;
   int MaximumSearchSize = 20000;
 
 private:

@@ -72,7 +72,7 @@ void Usage(std::ostream& os)
         "  --no-features    do not hold frames along sharp edges\n"
         "  --no-boundary-alignment  do not hold frames along the boundary\n"
         "matching (vtkMatchingBuilder):\n"
-        "  --branch-weight L  cost of a branch point in radians, 0..100 (default 3)\n"
+        "  --branch-weight L  cost of a singular point in radians, 0..100 (default 6)\n"
         "  --no-branch-optimization  keep the smallest-angle matchings\n"
         "\n"
         "Repaired silently: polygons and strips triangulated, vertex/line cells dropped, exactly\n"
@@ -153,7 +153,7 @@ int main(int argc, char* argv[])
   bool verbose = false, useInputFrames = true, features = true, boundary = true,
        optimizeBranches = true;
   double radius = 2.0, threads = 0, smoothing = 0.5, iterations = 200, featureAngle = 60.0,
-         branchWeight = 3.0;
+         branchWeight = 6.0;
   const NumberOption numbers[] = {
     { "--radius", 0.0, 20.0, false, &radius },
     { "--threads", 0.0, 1024.0, true, &threads },

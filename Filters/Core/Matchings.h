@@ -64,7 +64,7 @@ struct BranchPointOptions
 {
   /// lambda of the cost lambda * (number of singular inner points) + sum of matching deviations
   /// (radians); a path is changed only when it lowers that cost.
-  double weight = 3.0;
+  double weight = 6.0;
   /// Vertices a search may visit from one branch point (a guard on very large meshes).
   int maxVisited = 20000;
   int maxPasses = 10;

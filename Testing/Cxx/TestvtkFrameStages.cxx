@@ -99,7 +99,7 @@ TEST(vtkMatchingBuilder, DefaultsClampsAndPrintSelf)
 {
   vtkNew<vtkMatchingBuilder> m;
   EXPECT_TRUE(m->GetOptimizeBranchPoints());
-  EXPECT_EQ(m->GetBranchPointWeight(), 3.0);
+  EXPECT_EQ(m->GetBranchPointWeight(), 6.0);
   EXPECT_EQ(m->GetNumberOfOutputPorts(), 2);
   m->SetBranchPointWeight(-1.0);
   EXPECT_EQ(m->GetBranchPointWeight(), 0.0);
@@ -239,7 +239,8 @@ TEST_P(ChainOn, IndicesSumToTheEulerCharacteristic)
   EXPECT_NEAR(IndexSum(before), topo.eulerCharacteristic(), 1e-9);
   const double branchesBefore = Field(before, names::BranchPointCount, 1);
   const double singularBefore = Field(before, names::SingularityCount);
-  const double costBefore = 3.0 * singularBefore + Field(before, names::MatchingCost, 1);
+  const double costBefore =
+    chain.matching->GetBranchPointWeight() * singularBefore + Field(before, names::MatchingCost, 1);
   double largestBefore = 0.0;
   {
     vtkDataArray* index = before->GetPointData()->GetArray(names::SingularityIndex);
@@ -254,7 +255,8 @@ TEST_P(ChainOn, IndicesSumToTheEulerCharacteristic)
   EXPECT_NEAR(IndexSum(after), topo.eulerCharacteristic(), 1e-9);
   const double branchesAfter = Field(after, names::BranchPointCount, 1);
   const double singularAfter = Field(after, names::SingularityCount);
-  const double costAfter = 3.0 * singularAfter + Field(after, names::MatchingCost, 1);
+  const double costAfter =
+    chain.matching->GetBranchPointWeight() * singularAfter + Field(after, names::MatchingCost, 1);
   EXPECT_LE(branchesAfter, branchesBefore);
   EXPECT_LE(singularAfter, singularBefore);
   if (path == shared)
