@@ -8,12 +8,10 @@
 // runs of the stage on an already loaded surface.
 #include "QuadCoverIO.h"
 
-#include "vtkCellArray.h"
 #include "vtkCurvatureFrames.h"
 #include "vtkFrameSmoother.h"
 #include "vtkMatchingBuilder.h"
 #include "vtkNew.h"
-#include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkQuadCoverEigen.h"
 

@@ -5,7 +5,7 @@
  * First stage of the QuadCover pipeline (Kaelberer, Nieser, Polthier 2007, Sect. 3). For every
  * triangle it estimates the curvature tensor with the normal-cycle measure of Cohen-Steiner and
  * Morvan: every interior edge contributes its signed dihedral angle times its length times the
- * outer product of its direction, summed over the triangles whose centroids lie within
+ * outer product of its direction, summed over the triangles whose centroids lie closer than
  * NeighborhoodRadius median edge lengths (reached across edges; at most 8192 triangles) and
  * divided by their area. The median rather than the mean edge length sets the scale, so that a
  * few outsized triangles do not blow up the neighbourhoods.

@@ -33,7 +33,8 @@
  * SmoothingEnergy (before: the input with held frames already on their edges; after) and
  * SmoothingIterations. Names: vtkQuadCoverArrayNames.h.
  *
- * Errors: everything vtkCurvatureFrames refuses, and a missing FrameU.
+ * Errors: no points, no polygons, point ids out of range, non-finite coordinates, non-manifold
+ * edges, inconsistently oriented neighbours, and a missing FrameU.
  * @sa vtkCurvatureFrames vtkMatchingBuilder
  */
 #ifndef vtkFrameSmoother_h

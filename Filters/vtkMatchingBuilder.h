@@ -8,7 +8,7 @@
  * shift of the branched covering (Def. 4) and the frame field's true index.
  *
  * With OptimizeBranchPoints (default on) it then runs the greedy search of Sect. 4.2: paths
- * between nearby branch points whose layer shifts cancel (or combine) get their matchings
+ * from singular points (index +-1/4 or +-1/2) to nearby singular points get their matchings
  * changed when that lowers BranchPointWeight * (number of singular points) + sum over edges of
  * the matched frames' angle (radians). Only pairs that cancel are merged: no singularity grows.
  * Poincare-Hopf holds before and after.

@@ -35,7 +35,8 @@ constexpr const char* CurvatureRadius = "CurvatureRadius";
 constexpr const char* FrameRotation = "FrameRotation";
 /// cell, 1 x unsigned char: 1 where the frame is held along a boundary or sharp edge.
 constexpr const char* FrameConstrained = "FrameConstrained";
-/// field, 2 x double: the energy of the input frames and of the smoothed ones.
+/// field, 1 x double, 2 tuples: the energy at the start of the descent (held frames already on
+/// their edges) and at its end.
 constexpr const char* SmoothingEnergy = "SmoothingEnergy";
 /// field, 1 x int: iterations of the chosen run.
 constexpr const char* SmoothingIterations = "SmoothingIterations";
@@ -54,10 +55,11 @@ constexpr const char* SingularityCount = "SingularityCount";
 /// field, 2 x double per tuple (index, number of inner points with it), one tuple per non-zero
 /// index, ascending.
 constexpr const char* SingularityHistogram = "SingularityHistogram";
-/// field, 2 x int: branch points (non-zero layer shift) before and after the optimization.
+/// field, 1 x int, 2 tuples: branch points (non-zero layer shift) before and after the
+/// optimization.
 constexpr const char* BranchPointCount = "BranchPointCount";
-/// field, 2 x double: sum over inner edges of the matched frames' angle (C_ij), before and
-/// after the optimization.
+/// field, 1 x double, 2 tuples: sum over inner edges of the matched frames' angle (C_ij), before
+/// and after the optimization.
 constexpr const char* MatchingCost = "MatchingCost";
 /// point data of the branch-point output: the point's id in the surface.
 constexpr const char* SurfacePointId = "SurfacePointId";

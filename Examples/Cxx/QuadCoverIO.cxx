@@ -314,11 +314,6 @@ void ErrorObserver::Attach(vtkAlgorithm* algorithm)
   algorithm->GetExecutive()->AddObserver(vtkCommand::WarningEvent, this);
 }
 
-void ErrorObserver::Clear()
-{
-  this->FirstError.clear();
-  this->WarningList.clear();
-}
 
 std::string ErrorObserver::Clean(const char* message)
 {

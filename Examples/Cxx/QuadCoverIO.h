@@ -30,7 +30,6 @@ public:
   const std::string& Error() const { return this->FirstError; }
   /// The warnings so far, one per entry, prefix removed.
   const std::vector<std::string>& Warnings() const { return this->WarningList; }
-  void Clear();
 
   /// Strips "ERROR: In file, line N\nvtkClass (0x...): " and trailing blanks from a message.
   static std::string Clean(const char* message);

@@ -26,7 +26,6 @@
 #include <cstdlib>
 #include <fstream>
 #include <iostream>
-#include <map>
 #include <sstream>
 #include <string>
 #include <unistd.h>
@@ -80,7 +79,8 @@ void Usage(std::ostream& os)
         "reoriented to agree with their neighbours, and a vertex where separate fans of\n"
         "triangles touch split into one copy per fan (see --stats for the counts).\n"
         "Refused: missing, unreadable or empty files, unknown extensions, no polygons, point\n"
-        "ids out of range, NaN or infinite coordinates, non-manifold edges.\n";
+        "ids out of range, NaN or infinite coordinates, non-manifold edges, surfaces whose\n"
+        "triangles all have zero area.\n";
 }
 
 int Fail(const std::string& message)

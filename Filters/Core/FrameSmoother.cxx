@@ -3,7 +3,6 @@
 #include "SparseSolver.h"
 #include <Eigen/Geometry>
 
-#include <Eigen/Sparse>
 
 #include <cmath>
 #include <complex>

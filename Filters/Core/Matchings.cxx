@@ -33,7 +33,7 @@ double residual(double turn, int r)
 }
 
 /// Position (0..2) in g of the edge g shares with f across f's edge k.
-int twinEdge(const Eigen::MatrixX3i& F, const MeshTopology& topo, int f, int k, int g)
+int twinEdge(const MeshTopology& topo, int f, int k, int g)
 {
   for (int kk = 0; kk < 3; ++kk)
   {
@@ -42,7 +42,6 @@ int twinEdge(const Eigen::MatrixX3i& F, const MeshTopology& topo, int f, int k, 
       return kk;
     }
   }
-  (void)F;
   return -1;
 }
 }
@@ -85,7 +84,7 @@ FrameTopology computeMatchings(const Eigen::MatrixX3i& F, const MeshTopology& to
       const int turns = static_cast<int>(std::lround(turning(geometry, phi, f, k, g) / Quarter));
       const int r = mod4(-turns);
       matching(f, k) = r;
-      matching(g, twinEdge(F, topo, f, k, g)) = mod4(-r);
+      matching(g, twinEdge(topo, f, k, g)) = mod4(-r);
     }
   }
   return evaluateMatchings(F, topo, geometry, frameU, matching);
@@ -111,7 +110,7 @@ FrameTopology evaluateMatchings(const Eigen::MatrixX3i& F, const MeshTopology& t
         continue;
       }
       const int r = matching(f, k);
-      const int kk = twinEdge(F, topo, f, k, g);
+      const int kk = twinEdge(topo, f, k, g);
       if (r < 0 || r > 3 || kk < 0 || mod4(matching(g, kk) + r) != 0)
       {
         throw std::invalid_argument("evaluateMatchings: matchings across the edge between "

@@ -1,6 +1,6 @@
 // SparseSolver.h: the sparse symmetric (Hermitian) positive definite solver of the core.
 // CHOLMOD's supernodal Cholesky (SuiteSparse) when the build found it, else Eigen's
-// SimplicialLDLT. At a million triangles CHOLMOD factors the smoother's complex system about
+// SimplicialLDLT (CMake reports which at configure time). At a million triangles CHOLMOD factors the smoother's complex system about
 // seven times faster (Benchmarks/README.md).
 #ifndef quadcover_SparseSolver_h
 #define quadcover_SparseSolver_h
@@ -17,11 +17,9 @@ namespace quadcover
 #ifdef QUADCOVER_HAVE_CHOLMOD
 template<typename Scalar>
 using SpdSolver = Eigen::CholmodSupernodalLLT<Eigen::SparseMatrix<Scalar>>;
-constexpr const char* SparseSolverName = "CHOLMOD supernodal LLT";
 #else
 template<typename Scalar>
 using SpdSolver = Eigen::SimplicialLDLT<Eigen::SparseMatrix<Scalar>>;
-constexpr const char* SparseSolverName = "Eigen SimplicialLDLT";
 #endif
 }
 
