@@ -85,7 +85,7 @@ int vtkMatchingBuilder::RequestData(
     quadcover::FrameTopology t = quadcover::computeMatchings(mesh.F, mesh.topo, geometry, U);
     this->UpdateProgress(0.4);
     const int branchBefore = t.branchPoints;
-    const double costBefore = t.matchingCost;
+    const double costBefore = t.matchingCost; // before the optimization changes t
     if (this->OptimizeBranchPoints && !this->GetAbortExecute())
     {
       quadcover::BranchPointOptions options;

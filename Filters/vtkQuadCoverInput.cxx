@@ -10,6 +10,16 @@
 #include <cmath>
 #include <limits>
 
+namespace
+{
+/// Three distinct point ids: a triangle that can carry surface.
+bool ProperTriangle(vtkIdList* cell)
+{
+  return cell->GetNumberOfIds() == 3 && cell->GetId(0) != cell->GetId(1) &&
+    cell->GetId(1) != cell->GetId(2) && cell->GetId(2) != cell->GetId(0);
+}
+}
+
 namespace vtkQuadCoverInput
 {
 std::string CheckPointIds(vtkPolyData* in)
@@ -89,8 +99,7 @@ std::string Triangulate(vtkPolyData* in, vtkPolyData* out, std::string& warning)
     for (vtkIdType c = 0; c < polys->GetNumberOfCells() && onlyTriangles; ++c)
     {
       polys->GetCellAtId(c, cell);
-      onlyTriangles = cell->GetNumberOfIds() == 3 && cell->GetId(0) != cell->GetId(1) &&
-        cell->GetId(1) != cell->GetId(2) && cell->GetId(2) != cell->GetId(0);
+      onlyTriangles = ProperTriangle(cell);
     }
   }
   if (onlyTriangles)
@@ -113,8 +122,7 @@ std::string Triangulate(vtkPolyData* in, vtkPolyData* out, std::string& warning)
   for (vtkIdType c = 0; c < polys->GetNumberOfCells(); ++c)
   {
     polys->GetCellAtId(c, cell);
-    if (cell->GetNumberOfIds() == 3 && cell->GetId(0) != cell->GetId(1) &&
-      cell->GetId(1) != cell->GetId(2) && cell->GetId(2) != cell->GetId(0))
+    if (ProperTriangle(cell))
     {
       kept->InsertNextCell(cell);
       keptIds->InsertNextId(c);

@@ -314,7 +314,6 @@ void ErrorObserver::Attach(vtkAlgorithm* algorithm)
   algorithm->GetExecutive()->AddObserver(vtkCommand::WarningEvent, this);
 }
 
-
 std::string ErrorObserver::Clean(const char* message)
 {
   std::string s = message ? message : "";
@@ -578,7 +577,9 @@ vtkSmartPointer<vtkPolyData> PrepareSurface(
       "surface";
     return nullptr;
   }
-  const std::vector<int> copies = quadcover::splitNonManifoldVertices(V, F);
+  const std::vector<int> copies = topo.nonManifoldVertices.empty()
+    ? std::vector<int>()
+    : quadcover::splitNonManifoldVertices(V, F);
   repairs.splitVertices = static_cast<long long>(copies.size());
   if (!copies.empty())
   {

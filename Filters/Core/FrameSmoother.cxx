@@ -1,12 +1,11 @@
 #include "FrameSmoother.h"
 
 #include "SparseSolver.h"
+#include "UnionFind.h"
 #include <Eigen/Geometry>
-
 
 #include <cmath>
 #include <complex>
-#include <functional>
 #include <stdexcept>
 
 namespace quadcover
@@ -100,39 +99,30 @@ SmootherResult smoothFrames(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F
     }
   }
   {
-    std::vector<int> parent(ne), size(ne, 1), firstAt(topo.numVertices, -1);
+    std::vector<int> parent(ne), firstAt(topo.numVertices, -1);
     for (int e = 0; e < ne; ++e)
     {
       parent[e] = e;
     }
-    std::function<int(int)> root = [&](int x) {
-      while (parent[x] != x)
-      {
-        x = parent[x] = parent[parent[x]];
-      }
-      return x;
-    };
     for (int e = 0; e < ne; ++e)
     {
       for (int j = 0; sharp[e] && j < 2; ++j)
       {
         int& other = firstAt[topo.edges(e, j)];
-        if (other < 0)
-        {
-          other = e;
-        }
-        else if (root(other) != root(e))
-        {
-          size[root(other)] += size[root(e)];
-          parent[root(e)] = root(other);
-        }
+        other = other < 0 ? e : other;
+        unite(parent, other, e);
       }
+    }
+    std::vector<int> size(ne, 0);
+    for (int e = 0; e < ne; ++e)
+    {
+      size[findRoot(parent, e)] += sharp[e];
     }
     for (int e = 0; e < ne; ++e)
     {
       if (sharp[e])
       {
-        sharp[e] = size[root(e)] >= options.minimumFeatureLength;
+        sharp[e] = size[findRoot(parent, e)] >= options.minimumFeatureLength;
         R.featureEdges += sharp[e];
       }
     }

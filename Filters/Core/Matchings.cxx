@@ -306,7 +306,8 @@ BranchPointReport optimizeBranchPoints(const Eigen::MatrixX3i& F, const MeshTopo
           {
             continue;
           }
-          const double w = std::max(0.0, deviationWith(s, delta) - deviationWith(s, 0));
+          // No wrap, so the changed residual is r0 + delta quarter turns.
+          const double w = std::max(0.0, std::abs(r0 + delta * Quarter) - std::abs(r0));
           const double nd = d + w;
           if (stamp[s.to] != search || nd < dist[s.to])
           {

@@ -1,5 +1,7 @@
 #include "MeshTopology.h"
 
+#include "UnionFind.h"
+
 #include <algorithm>
 #include <numeric>
 #include <sstream>
@@ -9,26 +11,6 @@ namespace quadcover
 {
 namespace
 {
-int findRoot(std::vector<int>& parent, int x)
-{
-  while (parent[x] != x)
-  {
-    parent[x] = parent[parent[x]];
-    x = parent[x];
-  }
-  return x;
-}
-
-void unite(std::vector<int>& parent, int a, int b)
-{
-  a = findRoot(parent, a);
-  b = findRoot(parent, b);
-  if (a != b)
-  {
-    parent[std::max(a, b)] = std::min(a, b);
-  }
-}
-
 bool isDegenerate(const Eigen::MatrixX3i& F, int f)
 {
   return F(f, 0) == F(f, 1) || F(f, 1) == F(f, 2) || F(f, 2) == F(f, 0);
@@ -282,13 +264,10 @@ MeshTopology buildTopology(const Eigen::MatrixX3i& F, int numVertices)
     {
       continue; // only degenerate triangles here: reported as such
     }
-    if (fans.Label(T, F, v, incident.data() + begin, n, fan) > 1)
-    {
-      T.nonManifoldVertices.push_back(v);
-      continue;
-    }
-    // One fan. Walk it counterclockwise: the next face is across edge k+2 (k = v's corner), the
-    // previous across edge k. A boundary fan starts where there is no previous face.
+    // Walk the triangles counterclockwise: the next face is across edge k+2 (k = v's corner),
+    // the previous across edge k; a boundary fan starts where there is no previous face. A walk
+    // that visits all n faces once and ends where it should proves one fan; otherwise the fans
+    // are labelled (orientation aside) to tell a non-manifold vertex from a misoriented one.
     int start = incident[begin], starts = 0;
     for (int i = begin; i < begin + n; ++i)
     {
@@ -299,29 +278,32 @@ MeshTopology buildTopology(const Eigen::MatrixX3i& F, int numVertices)
         start = f;
       }
     }
-    if (starts > 1)
-    {
-      continue; // only with misoriented or non-manifold edges at v; left unordered
-    }
+    bool ok = false;
     std::vector<int> ring;
-    ring.reserve(n);
-    int f = start;
-    bool ok = true;
-    while (f >= 0 && !visited[f] && static_cast<int>(ring.size()) < n)
+    if (starts <= 1)
     {
-      visited[f] = 1;
-      ring.push_back(f);
-      f = T.faceNeighbors(f, (MeshTopology::cornerOf(F, f, v) + 2) % 3);
-    }
-    ok = static_cast<int>(ring.size()) == n && (starts == 0 ? f == start : f < 0);
-    for (int g : ring)
-    {
-      visited[g] = 0;
+      ring.reserve(n);
+      int f = start;
+      while (f >= 0 && !visited[f] && static_cast<int>(ring.size()) < n)
+      {
+        visited[f] = 1;
+        ring.push_back(f);
+        f = T.faceNeighbors(f, (MeshTopology::cornerOf(F, f, v) + 2) % 3);
+      }
+      ok = static_cast<int>(ring.size()) == n && (starts == 0 ? f == start : f < 0);
+      for (int g : ring)
+      {
+        visited[g] = 0;
+      }
     }
     if (ok)
     {
       std::copy(ring.begin(), ring.end(), T.ringFaces.begin() + begin);
       T.ringOrdered[v] = 1;
+    }
+    else if (fans.Label(T, F, v, incident.data() + begin, n, fan) > 1)
+    {
+      T.nonManifoldVertices.push_back(v);
     }
   }
 

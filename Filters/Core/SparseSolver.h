@@ -1,7 +1,7 @@
 // SparseSolver.h: the sparse symmetric (Hermitian) positive definite solver of the core.
 // CHOLMOD's supernodal Cholesky (SuiteSparse) when the build found it, else Eigen's
-// SimplicialLDLT (CMake reports which at configure time). At a million triangles CHOLMOD factors the smoother's complex system about
-// seven times faster (Benchmarks/README.md).
+// SimplicialLDLT (CMake reports which at configure time). At a million triangles CHOLMOD factors
+// the smoother's complex system about seven times faster (Benchmarks/README.md).
 #ifndef quadcover_SparseSolver_h
 #define quadcover_SparseSolver_h
 
