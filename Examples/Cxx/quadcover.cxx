@@ -38,16 +38,18 @@ const char* const StageFilters[] = { "vtkCurvatureFrames", "vtkFrameSmoother", "
   "vtkQuadCoverSolver", "vtkQuadExtractor" };
 const int BuiltStages = 3; // the first three exist; the others come with their issues
 
-/// A numeric option: its flag, range, whether it must be whole, and where it goes.
+/// A numeric option of one stage: its flag, meaning, range and default, all but the flag and
+/// meaning taken from the filter it sets (its vtkSetClampMacro range and initial value).
 struct NumberOption
 {
+  int stage;
   const char* flag;
-  double low, high;
+  const char* meaning;
+  double low, high, value;
   bool whole;
-  double* value;
 };
 
-void Usage(std::ostream& os)
+void Usage(std::ostream& os, const std::vector<NumberOption>& numbers)
 {
   os << "usage: quadcover INPUT -o OUTPUT [--stage STAGE] [--stats FILE.json] [-v] [options]\n"
         "\n"
@@ -59,21 +61,29 @@ void Usage(std::ostream& os)
         "  --stats FILE     write a JSON summary: input size, repairs, seconds per stage, and\n"
         "                   what each stage counts\n"
         "  -v, --verbose    seconds per stage, and VTK's own messages (progress shows\n"
-        "                   whenever stderr is a terminal)\n"
-        "curvature (vtkCurvatureFrames):\n"
-        "  --radius R       neighbourhood radius in median edge lengths, 0..20 (default 2)\n"
-        "  --threads N      worker threads, 0 = all cores (default 0)\n"
-        "  --no-input-frames  ignore a FrameU cell array on the input; use curvature frames\n"
-        "smooth (vtkFrameSmoother):\n"
-        "  --smoothing L    lambda: smoothness against curvature alignment, 0..1 (default 0.5)\n"
-        "  --iterations N   at most N iterations per run (default 200)\n"
-        "  --feature-angle D  edges sharper than D degrees are features (default 60)\n"
-        "  --no-features    do not hold frames along sharp edges\n"
-        "  --no-boundary-alignment  do not hold frames along the boundary\n"
-        "matching (vtkMatchingBuilder):\n"
-        "  --branch-weight L  cost of a singular point in radians, 0..100 (default 6)\n"
-        "  --no-branch-optimization  keep the smallest-angle matchings\n"
-        "\n"
+        "                   whenever stderr is a terminal)\n";
+  const char* const flags[] = {
+    "  --no-input-frames  ignore a FrameU cell array on the input; use curvature frames\n",
+    "  --no-features      do not hold frames along sharp edges\n"
+    "  --no-boundary-alignment  do not hold frames along the boundary\n",
+    "  --no-branch-optimization  keep the smallest-angle matchings\n",
+  };
+  for (int stage = 0; stage < BuiltStages; ++stage)
+  {
+    os << StageNames[stage] << " (" << StageFilters[stage] << "):\n";
+    for (const NumberOption& n : numbers)
+    {
+      if (n.stage == stage)
+      {
+        char line[200];
+        std::snprintf(line, sizeof line, "  %-18s %s, %g..%g (default %g)\n", n.flag, n.meaning,
+          n.low, n.high, n.value);
+        os << line;
+      }
+    }
+    os << flags[stage];
+  }
+  os << "\n"
         "Repaired silently: polygons and strips triangulated, vertex/line cells dropped, exactly\n"
         "coincident points merged, triangles with a repeated point removed, triangles\n"
         "reoriented to agree with their neighbours, and a vertex where separate fans of\n"
@@ -152,23 +162,39 @@ int main(int argc, char* argv[])
   std::string input, output, stage, statsPath;
   bool verbose = false, useInputFrames = true, features = true, boundary = true,
        optimizeBranches = true;
-  double radius = 2.0, threads = 0, smoothing = 0.5, iterations = 200, featureAngle = 60.0,
-         branchWeight = 6.0;
-  const NumberOption numbers[] = {
-    { "--radius", 0.0, 20.0, false, &radius },
-    { "--threads", 0.0, 1024.0, true, &threads },
-    { "--smoothing", 0.0, 1.0, false, &smoothing },
-    { "--iterations", 0.0, 100000.0, true, &iterations },
-    { "--feature-angle", 0.0, 180.0, false, &featureAngle },
-    { "--branch-weight", 0.0, 100.0, false, &branchWeight },
+  // The filters first: their defaults and ranges are the options'.
+  vtkNew<vtkCurvatureFrames> curvature;
+  vtkNew<vtkFrameSmoother> smoother;
+  vtkNew<vtkMatchingBuilder> matching;
+  std::vector<NumberOption> numbers = {
+    { 0, "--radius R", "neighbourhood radius in median edge lengths",
+      curvature->GetNeighborhoodRadiusMinValue(), curvature->GetNeighborhoodRadiusMaxValue(),
+      curvature->GetNeighborhoodRadius(), false },
+    { 0, "--threads N", "worker threads, 0 = all cores", 0.0,
+      double(curvature->GetNumberOfThreadsMaxValue()), double(curvature->GetNumberOfThreads()),
+      true },
+    { 1, "--smoothing L", "lambda: smoothness against curvature alignment",
+      smoother->GetSmoothingWeightMinValue(), smoother->GetSmoothingWeightMaxValue(),
+      smoother->GetSmoothingWeight(), false },
+    { 1, "--iterations N", "at most N iterations per run",
+      double(smoother->GetMaximumNumberOfIterationsMinValue()),
+      double(smoother->GetMaximumNumberOfIterationsMaxValue()),
+      double(smoother->GetMaximumNumberOfIterations()), true },
+    { 1, "--feature-angle D", "edges sharper than D degrees are features",
+      smoother->GetFeatureAngleMinValue(), smoother->GetFeatureAngleMaxValue(),
+      smoother->GetFeatureAngle(), false },
+    { 2, "--branch-weight L", "cost of a singular point in radians",
+      matching->GetBranchPointWeightMinValue(), matching->GetBranchPointWeightMaxValue(),
+      matching->GetBranchPointWeight(), false },
   };
   for (int i = 1; i < argc; ++i)
   {
     const std::string a = argv[i];
-    const NumberOption* number = nullptr;
-    for (const NumberOption& n : numbers)
+    NumberOption* number = nullptr;
+    for (NumberOption& n : numbers)
     {
-      number = a == n.flag ? &n : number;
+      const std::string flag = n.flag;
+      number = a == flag.substr(0, flag.find(' ')) ? &n : number;
     }
     const bool takesText = a == "-o" || a == "--output" || a == "--stage" || a == "--stats";
     if ((number || takesText) && i + 1 >= argc)
@@ -177,7 +203,7 @@ int main(int argc, char* argv[])
     }
     if (a == "-h" || a == "--help")
     {
-      Usage(std::cout);
+      Usage(std::cout, numbers);
       return 0;
     }
     else if (a == "-v" || a == "--verbose")
@@ -199,7 +225,7 @@ int main(int argc, char* argv[])
       {
         return UsageError("invalid value '" + std::string(v) + "' for " + a);
       }
-      *number->value = x;
+      number->value = x;
     }
     else if (a == "--no-input-frames")
       useInputFrames = false;
@@ -287,22 +313,19 @@ int main(int argc, char* argv[])
   timings.push_back({ "read", since(t0) });
 
   // The pipeline, stage by stage.
-  vtkNew<vtkCurvatureFrames> curvature;
   curvature->SetInputData(surface);
-  curvature->SetNeighborhoodRadius(radius);
-  curvature->SetNumberOfThreads(static_cast<int>(threads));
+  curvature->SetNeighborhoodRadius(numbers[0].value);
+  curvature->SetNumberOfThreads(static_cast<int>(numbers[1].value));
   curvature->SetUseInputFrames(useInputFrames);
-  vtkNew<vtkFrameSmoother> smoother;
   smoother->SetInputConnection(curvature->GetOutputPort());
-  smoother->SetSmoothingWeight(smoothing);
-  smoother->SetMaximumNumberOfIterations(static_cast<int>(iterations));
-  smoother->SetFeatureAngle(featureAngle);
+  smoother->SetSmoothingWeight(numbers[2].value);
+  smoother->SetMaximumNumberOfIterations(static_cast<int>(numbers[3].value));
+  smoother->SetFeatureAngle(numbers[4].value);
   smoother->SetAlignToFeatures(features);
   smoother->SetAlignToBoundary(boundary);
-  vtkNew<vtkMatchingBuilder> matching;
   matching->SetInputConnection(smoother->GetOutputPort());
   matching->SetOptimizeBranchPoints(optimizeBranches);
-  matching->SetBranchPointWeight(branchWeight);
+  matching->SetBranchPointWeight(numbers[5].value);
   vtkAlgorithm* const pipeline[] = { curvature, smoother, matching };
   vtkPolyData* result = nullptr;
   for (int s = 0; s <= lastStage; ++s)
