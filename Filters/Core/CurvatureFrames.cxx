@@ -135,12 +135,8 @@ CurvatureField computeCurvatureField(const Eigen::MatrixX3d& V, const Eigen::Mat
     }
     const Eigen::Vector3d n0 = N.row(f0), n1 = N.row(f1);
     // Orient the edge as it runs in f0.
-    const int k0 = MeshTopology::cornerOf(F, f0, topo.edges(e, 0));
-    int from = topo.edges(e, 0), to = topo.edges(e, 1);
-    if (F(f0, (k0 + 1) % 3) != to)
-    {
-      std::swap(from, to);
-    }
+    const int k0 = topo.edgeCorners(e, 0) % 3;
+    const int from = F(f0, k0), to = F(f0, (k0 + 1) % 3);
     Eigen::Vector3d d = V.row(to) - V.row(from);
     const double len = d.norm();
     if (len == 0.0)

@@ -35,14 +35,10 @@ double residual(double turn, int r)
 /// Position (0..2) in g of the edge g shares with f across f's edge k.
 int twinEdge(const MeshTopology& topo, int f, int k, int g)
 {
-  for (int kk = 0; kk < 3; ++kk)
-  {
-    if (topo.faceNeighbors(g, kk) == f && topo.faceEdges(g, kk) == topo.faceEdges(f, k))
-    {
-      return kk;
-    }
-  }
-  return -1;
+  const int e = topo.faceEdges(f, k);
+  const int c =
+    topo.edgeCorners(e, 0) == 3 * f + k ? topo.edgeCorners(e, 1) : topo.edgeCorners(e, 0);
+  return c >= 0 && c / 3 == g ? c % 3 : -1;
 }
 }
 
@@ -214,12 +210,7 @@ BranchPointReport optimizeBranchPoints(const Eigen::MatrixX3i& F, const MeshTopo
       continue;
     }
     const int f0 = topo.edgeFaces(e, 0), f1 = topo.edgeFaces(e, 1);
-    int k0 = 0, k1 = 0;
-    for (int k = 0; k < 3; ++k)
-    {
-      k0 = topo.faceEdges(f0, k) == e ? k : k0;
-      k1 = topo.faceEdges(f1, k) == e ? k : k1;
-    }
+    const int k0 = topo.edgeCorners(e, 0) % 3, k1 = topo.edgeCorners(e, 1) % 3;
     // In f0 the edge runs F(f0,k0) -> F(f0,k0+1).
     const int from0 = F(f0, k0);
     // u = from0, w = the other: f = f0 (runs u -> w), g = f1.

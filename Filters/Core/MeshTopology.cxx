@@ -160,7 +160,7 @@ MeshTopology buildTopology(const Eigen::MatrixX3i& F, int numVertices)
   T.faceEdges.setConstant(nf, 3, -1);
   T.faceNeighbors.setConstant(nf, 3, -1);
   std::vector<Eigen::Vector2i> edgeList;
-  std::vector<Eigen::Vector2i> edgeFaceList;
+  std::vector<Eigen::Vector2i> edgeFaceList, edgeCornerList;
   std::vector<int> edgeCount;
   edgeList.reserve(he.size() / 2 + 1);
   for (size_t i = 0; i < he.size();)
@@ -174,16 +174,18 @@ MeshTopology buildTopology(const Eigen::MatrixX3i& F, int numVertices)
     edgeList.emplace_back(he[i].a, he[i].b);
     const int count = static_cast<int>(j - i);
     edgeCount.push_back(count);
-    Eigen::Vector2i ef(-1, -1);
+    Eigen::Vector2i ef(-1, -1), ec(-1, -1);
     for (size_t h = i; h < j; ++h)
     {
       T.faceEdges(he[h].corner / 3, he[h].corner % 3) = e;
       if (h - i < 2)
       {
         ef[static_cast<int>(h - i)] = he[h].corner / 3;
+        ec[static_cast<int>(h - i)] = he[h].corner;
       }
     }
     edgeFaceList.push_back(ef);
+    edgeCornerList.push_back(ec);
     if (count > 2)
     {
       T.nonManifoldEdges.push_back(e);
@@ -204,11 +206,13 @@ MeshTopology buildTopology(const Eigen::MatrixX3i& F, int numVertices)
   const int ne = static_cast<int>(edgeList.size());
   T.edges.resize(ne, 2);
   T.edgeFaces.resize(ne, 2);
+  T.edgeCorners.resize(ne, 2);
   T.edgeFaceCount.resize(ne);
   for (int e = 0; e < ne; ++e)
   {
     T.edges.row(e) = edgeList[e].transpose();
     T.edgeFaces.row(e) = edgeFaceList[e].transpose();
+    T.edgeCorners.row(e) = edgeCornerList[e].transpose();
     T.edgeFaceCount[e] = edgeCount[e];
   }
 

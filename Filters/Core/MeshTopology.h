@@ -43,7 +43,10 @@ struct MeshTopology
   Eigen::MatrixX3i faceEdges;     ///< #F x 3 edge index of edge k
   Eigen::MatrixX3i faceNeighbors; ///< #F x 3 face across edge k; -1 on boundary/non-manifold
   Eigen::MatrixX2i edgeFaces;     ///< #E x 2 the first two faces on the edge (-1 if absent)
-  Eigen::VectorXi edgeFaceCount;  ///< #E number of faces on the edge
+  /// #E x 2 the edge's slot in those faces, as corner 3f+k (the edge is edge k of face f, running
+  /// F(f,k) -> F(f,k+1)); -1 if absent. edgeCorners(e,i) / 3 == edgeFaces(e,i).
+  Eigen::MatrixX2i edgeCorners;
+  Eigen::VectorXi edgeFaceCount; ///< #E number of faces on the edge
 
   std::vector<int> ringOffsets; ///< #V+1, CSR offsets into ringFaces
   /// Non-degenerate faces around each vertex: counterclockwise where ringOrdered, else (at

@@ -49,6 +49,8 @@ TEST(MeshTopology, EulerGenusAndBoundaryOfGeneratedSurfaces)
         const std::set<int> a = { s.F(f, k), s.F(f, (k + 1) % 3) };
         const std::set<int> b = { T.edges(e, 0), T.edges(e, 1) };
         EXPECT_EQ(a, b);
+        // The edge knows its slot in this face.
+        ASSERT_TRUE(T.edgeCorners(e, 0) == 3 * f + k || T.edgeCorners(e, 1) == 3 * f + k);
         const int g = T.faceNeighbors(f, k);
         if (g >= 0)
         {
