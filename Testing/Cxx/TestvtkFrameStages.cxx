@@ -17,6 +17,7 @@
 #include "vtkQuadCoverEigen.h"
 #include "vtkUnsignedCharArray.h"
 
+#include "CutGraph.h"
 #include "MeshTopology.h"
 #include "Surfaces.h"
 
@@ -281,6 +282,18 @@ TEST_P(ChainOn, IndicesSumToTheEulerCharacteristic)
     const double q = 4.0 * index->GetTuple1(p);
     ASSERT_EQ(q, std::round(q)) << p;
     ASSERT_EQ(static_cast<int>(shift->GetTuple1(p)), ((static_cast<int>(q) % 4) + 4) % 4) << p;
+  }
+  // The cut graph through the singular points makes every component a disk (genus-0 closed
+  // components have at least two singular points by Poincare-Hopf with quarter indices).
+  std::vector<char> terminal(topo.numVertices, 0);
+  for (vtkIdType p = 0; p < index->GetNumberOfTuples(); ++p)
+  {
+    terminal[p] = !topo.boundaryVertex[p] && index->GetTuple1(p) != 0.0;
+  }
+  const quadcover::CutGraph cut = quadcover::computeCutGraph(topo, terminal);
+  for (int c = 0; c < topo.numComponents(); ++c)
+  {
+    EXPECT_EQ(cut.cutEuler[c], 1) << name << " component " << c;
   }
 }
 
