@@ -48,28 +48,28 @@ CutGraph computeCutGraph(const MeshTopology& topo, const std::vector<char>& term
       }
     }
   }
+  // Inner edges around each point; degree counts those on the cut, kept current below.
+  std::vector<std::vector<std::pair<int, int>>> adjacent(nv); // (neighbour, inner edge)
   std::vector<int> degree(nv, 0);
   for (int e = 0; e < ne; ++e)
   {
-    if (topo.edgeFaceCount[e] == 2 && !crossed[e])
+    if (topo.edgeFaceCount[e] != 2)
+    {
+      continue;
+    }
+    const int a = topo.edges(e, 0), b = topo.edges(e, 1);
+    adjacent[a].push_back({ b, e });
+    adjacent[b].push_back({ a, e });
+    if (!crossed[e])
     {
       G.onCut[e] = 1;
-      ++degree[topo.edges(e, 0)];
-      ++degree[topo.edges(e, 1)];
+      ++degree[a];
+      ++degree[b];
     }
   }
 
   // Prune dangling branches: a point with one cut edge that is neither a terminal nor on the
   // boundary (where the cut surface's border already runs) lets its edge go.
-  std::vector<std::vector<int>> cutAt(nv);
-  for (int e = 0; e < ne; ++e)
-  {
-    if (G.onCut[e])
-    {
-      cutAt[topo.edges(e, 0)].push_back(e);
-      cutAt[topo.edges(e, 1)].push_back(e);
-    }
-  }
   auto anchored = [&](
                     int v) { return topo.boundaryVertex[v] || (!terminal.empty() && terminal[v]); };
   std::vector<int> stack;
@@ -88,14 +88,13 @@ CutGraph computeCutGraph(const MeshTopology& topo, const std::vector<char>& term
     {
       continue;
     }
-    for (int e : cutAt[v])
+    for (const auto& [w, e] : adjacent[v])
     {
       if (!G.onCut[e])
       {
         continue;
       }
       G.onCut[e] = 0;
-      const int w = topo.edges(e, 0) == v ? topo.edges(e, 1) : topo.edges(e, 0);
       --degree[v];
       if (--degree[w] == 1 && !anchored(w))
       {
@@ -107,27 +106,10 @@ CutGraph computeCutGraph(const MeshTopology& topo, const std::vector<char>& term
   // A terminal that no cut reaches (a closed disk-like component whose tree left nothing, e.g.
   // a sphere with one terminal) needs a path: join it to the cut, or to a boundary, or to the
   // component's first terminal, by the shortest edge path.
-  std::vector<char> onCutVertex(nv, 0);
-  for (int e = 0; e < ne; ++e)
-  {
-    if (G.onCut[e])
-    {
-      onCutVertex[topo.edges(e, 0)] = onCutVertex[topo.edges(e, 1)] = 1;
-    }
-  }
-  std::vector<std::vector<std::pair<int, int>>> adjacent(nv); // (neighbour, inner edge)
-  for (int e = 0; e < ne; ++e)
-  {
-    if (topo.edgeFaceCount[e] == 2)
-    {
-      adjacent[topo.edges(e, 0)].push_back({ topo.edges(e, 1), e });
-      adjacent[topo.edges(e, 1)].push_back({ topo.edges(e, 0), e });
-    }
-  }
   std::vector<int> from(nv, -1), via(nv, -1), stamp(nv, -1);
   for (int v = 0; v < nv && !terminal.empty(); ++v)
   {
-    if (!terminal[v] || onCutVertex[v] || topo.boundaryVertex[v])
+    if (!terminal[v] || degree[v] > 0 || topo.boundaryVertex[v])
     {
       continue;
     }
@@ -150,7 +132,7 @@ CutGraph computeCutGraph(const MeshTopology& topo, const std::vector<char>& term
         stamp[w] = v;
         from[w] = u;
         via[w] = e;
-        if (onCutVertex[w] || topo.boundaryVertex[w] || (terminal[w] && w < v))
+        if (degree[w] > 0 || topo.boundaryVertex[w] || (terminal[w] && w < v))
         {
           target = w;
           break;
@@ -161,7 +143,8 @@ CutGraph computeCutGraph(const MeshTopology& topo, const std::vector<char>& term
     for (int x = target; x >= 0 && x != v; x = from[x])
     {
       G.onCut[via[x]] = 1;
-      onCutVertex[x] = onCutVertex[from[x]] = 1;
+      ++degree[x];
+      ++degree[from[x]];
     }
   }
 
@@ -177,14 +160,9 @@ CutGraph computeCutGraph(const MeshTopology& topo, const std::vector<char>& term
     {
       continue;
     }
-    int cuts = 0;
-    for (const auto& [w, e] : adjacent[v])
-    {
-      cuts += G.onCut[e];
-    }
     // Around an inner point c cut edges make c sectors (one if none); on the boundary the fan
     // is already open, so c cuts make c + 1.
-    G.copies[v] = topo.boundaryVertex[v] ? cuts + 1 : std::max(cuts, 1);
+    G.copies[v] = topo.boundaryVertex[v] ? degree[v] + 1 : std::max(degree[v], 1);
   }
   G.cutEuler.assign(topo.numComponents(), 0);
   for (int v = 0; v < nv; ++v)
