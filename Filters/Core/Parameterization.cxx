@@ -1,0 +1,773 @@
+#include "Parameterization.h"
+
+#include "FrameField.h"
+#include "SparseSolver.h"
+#include "UnionFind.h"
+
+#include <Eigen/Geometry>
+#include <Eigen/Sparse>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <deque>
+#include <numeric>
+#include <stdexcept>
+#include <string>
+
+namespace quadcover
+{
+namespace
+{
+constexpr double Pi = 3.14159265358979323846;
+
+int mod4(int r)
+{
+  return ((r % 4) + 4) % 4;
+}
+
+/// A linear combination of unknowns, sorted by unknown, without zero coefficients.
+using Expr = std::vector<std::pair<int, double>>;
+
+void normalize(Expr& e)
+{
+  std::sort(e.begin(), e.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+  std::size_t out = 0;
+  for (std::size_t i = 0; i < e.size();)
+  {
+    double sum = 0.0;
+    const int var = e[i].first;
+    for (; i < e.size() && e[i].first == var; ++i)
+    {
+      sum += e[i].second;
+    }
+    if (std::abs(sum) > 1e-12)
+    {
+      e[out++] = { var, sum };
+    }
+  }
+  e.resize(out);
+}
+
+/**
+ * Eliminates homogeneous linear constraints sum a_j x_j = 0 one at a time, expressing one
+ * unknown (the pivot) through the others. Pivots are chosen so that integer unknowns stay
+ * integer: a constraint with a real unknown is solved for a real one; a constraint among
+ * integer unknowns only is solved for one with coefficient +-1, so it becomes an integer
+ * combination of the others. When no such unknown exists the pivot is counted (nonUnitPivots).
+ */
+class Eliminator
+{
+public:
+  int add(bool integer)
+  {
+    IsInteger.push_back(integer);
+    Eliminated.push_back(0);
+    Substitute.emplace_back();
+    return static_cast<int>(IsInteger.size()) - 1;
+  }
+  int size() const { return static_cast<int>(IsInteger.size()); }
+  bool isInteger(int x) const { return IsInteger[x] != 0; }
+  bool isEliminated(int x) const { return Eliminated[x] != 0; }
+
+  /// The unknown as a combination of unknowns not eliminated (path-compressed).
+  const Expr& resolve(int x)
+  {
+    if (!Eliminated[x])
+    {
+      Identity = { { x, 1.0 } };
+      return Identity;
+    }
+    Expr& e = Substitute[x];
+    bool stale = false;
+    for (const auto& t : e)
+    {
+      stale = stale || Eliminated[t.first];
+    }
+    if (stale)
+    {
+      Expr out;
+      const Expr copy = e;
+      for (const auto& t : copy)
+      {
+        if (!Eliminated[t.first])
+        {
+          out.push_back(t);
+        }
+        else
+        {
+          const Expr& sub = resolve(t.first);
+          for (const auto& s : sub)
+          {
+            out.emplace_back(s.first, s.second * t.second);
+          }
+        }
+      }
+      normalize(out);
+      Substitute[x] = std::move(out);
+    }
+    return Substitute[x];
+  }
+
+  Expr resolve(const Expr& e)
+  {
+    Expr out;
+    for (const auto& t : e)
+    {
+      const Expr& sub = resolve(t.first);
+      for (const auto& s : sub)
+      {
+        out.emplace_back(s.first, s.second * t.second);
+      }
+    }
+    normalize(out);
+    return out;
+  }
+
+  void constrain(const Expr& c)
+  {
+    ++Constraints;
+    Expr e = resolve(c);
+    if (e.empty())
+    {
+      return; // implied by earlier constraints
+    }
+    // Integer coefficients with a common divisor (2 (x + y - z) = 0, as the cycles around the
+    // branch points of a sphere add up to): divide it out, so a coefficient +-1 appears.
+    long divisor = 0;
+    for (const auto& t : e)
+    {
+      const double rounded = std::round(t.second);
+      divisor = std::abs(t.second - rounded) < 1e-9 && divisor >= 0
+        ? std::gcd(divisor, std::abs(static_cast<long>(rounded)))
+        : -1;
+    }
+    if (divisor > 1)
+    {
+      for (auto& t : e)
+      {
+        t.second /= static_cast<double>(divisor);
+      }
+    }
+    int pivot = -1;
+    for (std::size_t i = 0; i < e.size(); ++i) // a real unknown, the largest coefficient
+    {
+      if (!IsInteger[e[i].first] &&
+        (pivot < 0 || std::abs(e[i].second) >= std::abs(e[pivot].second)))
+      {
+        pivot = static_cast<int>(i);
+      }
+    }
+    if (pivot < 0) // integers only: one with coefficient +-1, the newest
+    {
+      for (std::size_t i = 0; i < e.size(); ++i)
+      {
+        if (std::abs(std::abs(e[i].second) - 1.0) < 1e-9)
+        {
+          pivot = static_cast<int>(i);
+        }
+      }
+    }
+    if (pivot < 0)
+    {
+      ++NonUnitPivots;
+
+      for (std::size_t i = 0; i < e.size(); ++i)
+      {
+        if (pivot < 0 || std::abs(e[i].second) > std::abs(e[pivot].second))
+        {
+          pivot = static_cast<int>(i);
+        }
+      }
+    }
+    const int x = e[pivot].first;
+    const double a = e[pivot].second;
+    Expr sub;
+    for (std::size_t i = 0; i < e.size(); ++i)
+    {
+      if (static_cast<int>(i) != pivot)
+      {
+        sub.emplace_back(e[i].first, -e[i].second / a);
+      }
+    }
+    Eliminated[x] = 1;
+    Substitute[x] = std::move(sub);
+  }
+
+  int Constraints = 0;
+  int NonUnitPivots = 0;
+
+private:
+  std::vector<char> IsInteger;
+  std::vector<char> Eliminated;
+  std::vector<Expr> Substitute;
+  Expr Identity;
+};
+
+double seconds(std::chrono::steady_clock::time_point since)
+{
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - since).count();
+}
+
+using SparseMatrix = Eigen::SparseMatrix<double>;
+
+/// Factors A (symmetric positive definite) and solves for the right-hand sides B.
+Eigen::MatrixXd solveSpd(const SparseMatrix& A, const Eigen::MatrixXd& B, const char* what)
+{
+  SpdSolver<double> solver;
+  solver.compute(A);
+  if (solver.info() != Eigen::Success)
+  {
+    throw std::runtime_error(std::string("the ") + what +
+      " system could not be factored (is a component without any fixed point?)");
+  }
+  Eigen::MatrixXd X(A.rows(), B.cols());
+  constexpr Eigen::Index Block = 64; // right-hand sides per solve call (bounded memory)
+  for (Eigen::Index c = 0; c < B.cols(); c += Block)
+  {
+    const Eigen::Index n = std::min(Block, B.cols() - c);
+    X.middleCols(c, n) = solver.solve(B.middleCols(c, n));
+  }
+  return X;
+}
+}
+
+double gridSizeForQuadCount(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F, double quads)
+{
+  if (!(quads > 0))
+  {
+    throw std::invalid_argument("the quad count must be positive");
+  }
+  double area = 0.0;
+  for (Eigen::Index f = 0; f < F.rows(); ++f)
+  {
+    const Eigen::Vector3d a = V.row(F(f, 1)) - V.row(F(f, 0));
+    const Eigen::Vector3d b = V.row(F(f, 2)) - V.row(F(f, 0));
+    area += 0.5 * a.cross(b).norm();
+  }
+  return std::sqrt(area / quads);
+}
+
+Parameterization computeParameterization(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F,
+  const MeshTopology& topo, const FrameGeometry& geometry, const Eigen::MatrixX3d& frameU,
+  const Eigen::MatrixX3i& matching, const ParameterizationOptions& options)
+{
+  const int nF = static_cast<int>(F.rows());
+  const int nV = static_cast<int>(V.rows());
+  if (topo.numFaces != nF || topo.numVertices != nV || frameU.rows() != nF ||
+    matching.rows() != nF || geometry.bases.b1.rows() != nF)
+  {
+    throw std::invalid_argument("computeParameterization: sizes do not match");
+  }
+  if (!(options.gridSize > 0) || !std::isfinite(options.gridSize))
+  {
+    throw std::invalid_argument("computeParameterization: the grid size must be positive");
+  }
+  if (!topo.isManifold() || !topo.isOriented())
+  {
+    throw std::invalid_argument("computeParameterization: " + topo.describeDefects());
+  }
+  Parameterization out;
+  out.gridSize = options.gridSize;
+#ifdef QUADCOVER_HAVE_CHOLMOD
+  out.solver = "CHOLMOD supernodal LLT";
+#else
+  out.solver = "Eigen SimplicialLDLT";
+#endif
+
+  // ---- the singular points and a cut through them ----
+  const FrameTopology ft = evaluateMatchings(F, topo, geometry, frameU, matching);
+  std::vector<char> terminal(nV, 0);
+  std::vector<char> branch(nV, 0);
+  for (int v = 0; v < nV; ++v)
+  {
+    if (!topo.boundaryVertex[v])
+    {
+      branch[v] = ft.layerShift[v] != 0;
+      terminal[v] = branch[v] || std::abs(ft.index[v]) > 1e-6;
+      out.branchPoints += branch[v];
+    }
+  }
+  out.cut = computeCutGraph(topo, terminal);
+  const std::vector<char>& onCut = out.cut.onCut;
+  out.seamEdges = out.cut.numCutEdges;
+
+  // ---- comb: quarter turns so that matchings vanish across every edge off the cut ----
+  out.comb = Eigen::VectorXi::Constant(nF, -1);
+  for (int seed = 0; seed < nF; ++seed)
+  {
+    if (out.comb[seed] >= 0)
+    {
+      continue;
+    }
+    out.comb[seed] = 0;
+    std::deque<int> queue{ seed };
+    while (!queue.empty())
+    {
+      const int f = queue.front();
+      queue.pop_front();
+      for (int k = 0; k < 3; ++k)
+      {
+        const int g = topo.faceNeighbors(f, k);
+        if (g >= 0 && !onCut[topo.faceEdges(f, k)] && out.comb[g] < 0)
+        {
+          out.comb[g] = mod4(matching(f, k) + out.comb[f]);
+          queue.push_back(g);
+        }
+      }
+    }
+  }
+  out.combedMatching.resize(nF, 3);
+  out.seam = Eigen::MatrixX3i::Zero(nF, 3);
+  for (int f = 0; f < nF; ++f)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      const int g = topo.faceNeighbors(f, k);
+      const int e = topo.faceEdges(f, k);
+      out.combedMatching(f, k) = g < 0 ? -1 : mod4(matching(f, k) + out.comb[f] - out.comb[g]);
+      out.seam(f, k) = onCut[e] ? 1 : 0;
+      if (g >= 0 && !onCut[e] && out.combedMatching(f, k) != 0)
+      {
+        throw std::logic_error("computeParameterization: the frames cannot be combed off the cut "
+                               "(a singular point is not on it)");
+      }
+    }
+  }
+
+  // ---- sectors: the corners of a point between cut (or boundary) edges ----
+  std::vector<int> parent(3 * nF);
+  for (int c = 0; c < 3 * nF; ++c)
+  {
+    parent[c] = c;
+  }
+  for (int e = 0; e < topo.numEdges(); ++e)
+  {
+    if (topo.edgeFaceCount[e] != 2 || onCut[e])
+    {
+      continue;
+    }
+    const int c0 = topo.edgeCorners(e, 0);
+    const int f = c0 / 3;
+    const int g = topo.edgeCorners(e, 1) / 3;
+    for (int end = 0; end < 2; ++end)
+    {
+      const int p = F(f, (c0 % 3 + end) % 3);
+      unite(parent, 3 * f + (c0 % 3 + end) % 3, 3 * g + MeshTopology::cornerOf(F, g, p));
+    }
+  }
+  out.cornerSector.assign(3 * nF, -1);
+  for (int c = 0; c < 3 * nF; ++c)
+  {
+    const int root = findRoot(parent, c);
+    if (root == c)
+    {
+      out.cornerSector[c] = static_cast<int>(out.sectorPoint.size());
+      out.sectorPoint.push_back(F(c / 3, c % 3));
+    }
+    out.cornerSector[c] = out.cornerSector[root];
+  }
+  const int nS = static_cast<int>(out.sectorPoint.size());
+  auto sectorOf = [&](int f, int p) {
+    return out.cornerSector[3 * f + MeshTopology::cornerOf(F, f, p)];
+  };
+
+  // ---- unknowns and constraints ----
+  Eliminator elim;
+  for (int s = 0; s < nS; ++s)
+  {
+    const bool integer = options.pureQuads && branch[out.sectorPoint[s]];
+    elim.add(integer); // u = 2s
+    elim.add(integer); // v = 2s + 1
+  }
+  // z_B - i^r z_A - t_e = 0 at both ends of every cut edge (f = side A, g = side B).
+  std::vector<std::vector<int>> cutAt(nV);
+  std::vector<int> translation(topo.numEdges(), -1);
+  for (int e = 0; e < topo.numEdges(); ++e)
+  {
+    if (onCut[e])
+    {
+      translation[e] = elim.add(true);
+      elim.add(true);
+      cutAt[topo.edges(e, 0)].push_back(e);
+      cutAt[topo.edges(e, 1)].push_back(e);
+    }
+  }
+  for (int p = 0; p < nV; ++p)
+  {
+    for (const int e : cutAt[p])
+    {
+      const int c0 = topo.edgeCorners(e, 0);
+      const int f = c0 / 3;
+      const int g = topo.edgeCorners(e, 1) / 3;
+      const int r = out.combedMatching(f, c0 % 3);
+      const int a = sectorOf(f, p);
+      const int b = sectorOf(g, p);
+      // i^r (uA + i vA): r = 0: (uA, vA), 1: (-vA, uA), 2: (-uA, -vA), 3: (vA, -uA)
+      const int reU = (r % 2 == 0) ? 2 * a : 2 * a + 1;
+      const double reS = (r == 0 || r == 3) ? 1.0 : -1.0;
+      const int imU = (r % 2 == 0) ? 2 * a + 1 : 2 * a;
+      const double imS = (r == 0 || r == 1) ? 1.0 : -1.0;
+      elim.constrain({ { 2 * b, 1.0 }, { reU, -reS }, { translation[e], -1.0 } });
+      elim.constrain({ { 2 * b + 1, 1.0 }, { imU, -imS }, { translation[e] + 1, -1.0 } });
+    }
+  }
+  // Boundary edges along a combed frame direction: the other coordinate is an integer line.
+  const Eigen::VectorXd theta = vectorAngles(geometry.bases, frameU);
+  if (options.alignBoundary)
+  {
+    const double tolerance = options.boundaryTolerance * Pi / 180.0;
+    for (int e = 0; e < topo.numEdges(); ++e)
+    {
+      if (topo.edgeFaceCount[e] != 1)
+      {
+        continue;
+      }
+      const int c0 = topo.edgeCorners(e, 0);
+      const int f = c0 / 3;
+      const int k = c0 % 3;
+      const Eigen::Vector3d d = V.row(F(f, (k + 1) % 3)) - V.row(F(f, k));
+      const double alpha = std::atan2(
+        d.dot(geometry.bases.b2.row(f).transpose()), d.dot(geometry.bases.b1.row(f).transpose()));
+      double delta = wrapAngle(alpha - theta[f] - out.comb[f] * Pi / 2);
+      // delta modulo pi in (-pi/2, pi/2]: near 0 along u (v constant), near +-pi/2 along v
+      if (delta > Pi / 2)
+      {
+        delta -= Pi;
+      }
+      else if (delta <= -Pi / 2)
+      {
+        delta += Pi;
+      }
+      int component = -1;
+      if (std::abs(delta) <= tolerance)
+      {
+        component = 1;
+      }
+      else if (Pi / 2 - std::abs(delta) <= tolerance)
+      {
+        component = 0;
+      }
+      if (component < 0)
+      {
+        continue;
+      }
+      ++out.alignedBoundaryEdges;
+      const int line = elim.add(true);
+      for (int end = 0; end < 2; ++end)
+      {
+        const int s = out.cornerSector[3 * f + (k + end) % 3];
+        elim.constrain({ { 2 * s + component, 1.0 }, { line, -1.0 } });
+      }
+    }
+  }
+  // One point per component fixed at (0, 0): the map is defined up to translation.
+  {
+    std::vector<char> pinned(topo.numComponents(), 0);
+    for (int f = 0; f < nF; ++f)
+    {
+      const int c = topo.faceComponent[f];
+      if (c >= 0 && !pinned[c])
+      {
+        pinned[c] = 1;
+        const int s = out.cornerSector[3 * f];
+        elim.constrain({ { 2 * s, 1.0 } });
+        elim.constrain({ { 2 * s + 1, 1.0 } });
+      }
+    }
+  }
+  out.constraints = elim.Constraints;
+  out.nonUnitPivots = elim.NonUnitPivots;
+
+  // Columns: real unknowns first, then integer ones.
+  std::vector<int> column(elim.size(), -1);
+  int numReal = 0;
+  int numInteger = 0;
+  for (int x = 0; x < elim.size(); ++x)
+  {
+    if (!elim.isEliminated(x) && !elim.isInteger(x))
+    {
+      column[x] = numReal++;
+    }
+  }
+  for (int x = 0; x < elim.size(); ++x)
+  {
+    if (!elim.isEliminated(x) && elim.isInteger(x))
+    {
+      column[x] = numReal + numInteger++;
+    }
+  }
+  const int n = numReal + numInteger;
+  out.unknowns = n;
+  out.integerUnknowns = numInteger;
+  // Each sector's u and v in columns.
+  std::vector<Expr> sectorExpr(2 * nS);
+  for (int x = 0; x < 2 * nS; ++x)
+  {
+    sectorExpr[x] = elim.resolve(x);
+    for (auto& t : sectorExpr[x])
+    {
+      t.first = column[t.first];
+    }
+  }
+
+  // ---- the energy: 4 rows per triangle, sqrt(A) (grad u - U'/h, grad v - V'/h) ----
+  const double scale = 1.0 / options.gridSize;
+  double totalArea = 0.0;
+  std::vector<Eigen::Triplet<double>> triplets;
+  triplets.reserve(static_cast<std::size_t>(nF) * 14);
+  Eigen::VectorXd rhs = Eigen::VectorXd::Zero(4 * static_cast<Eigen::Index>(nF));
+  for (int f = 0; f < nF; ++f)
+  {
+    Eigen::Vector2d p[3];
+    const Eigen::Vector3d b1 = geometry.bases.b1.row(f).transpose();
+    const Eigen::Vector3d b2 = geometry.bases.b2.row(f).transpose();
+    for (int k = 0; k < 3; ++k)
+    {
+      const Eigen::Vector3d d = V.row(F(f, k)) - V.row(F(f, 0));
+      p[k] = Eigen::Vector2d(d.dot(b1), d.dot(b2));
+    }
+    const double twiceArea =
+      (p[1] - p[0]).x() * (p[2] - p[0]).y() - (p[1] - p[0]).y() * (p[2] - p[0]).x();
+    if (!(twiceArea > 0))
+    {
+      continue;
+    }
+    totalArea += 0.5 * twiceArea;
+    const double w = std::sqrt(0.5 * twiceArea);
+    const double angle = theta[f] + out.comb[f] * Pi / 2;
+    const double c = std::cos(angle);
+    const double s = std::sin(angle);
+    rhs[4 * f + 0] = w * scale * c;  // grad u . x = U'.x
+    rhs[4 * f + 1] = w * scale * s;  // grad u . y
+    rhs[4 * f + 2] = w * scale * -s; // grad v . x = V'.x
+    rhs[4 * f + 3] = w * scale * c;  // grad v . y
+    for (int k = 0; k < 3; ++k)
+    {
+      const Eigen::Vector2d edge = p[(k + 2) % 3] - p[(k + 1) % 3];
+      const Eigen::Vector2d grad = Eigen::Vector2d(-edge.y(), edge.x()) * (w / twiceArea);
+      const int sector = out.cornerSector[3 * f + k];
+      for (int uv = 0; uv < 2; ++uv)
+      {
+        for (const auto& t : sectorExpr[2 * sector + uv])
+        {
+          triplets.emplace_back(4 * f + 2 * uv, t.first, grad.x() * t.second);
+          triplets.emplace_back(4 * f + 2 * uv + 1, t.first, grad.y() * t.second);
+        }
+      }
+    }
+  }
+  SparseMatrix D(4 * static_cast<Eigen::Index>(nF), n);
+  D.setFromTriplets(triplets.begin(), triplets.end());
+  triplets.clear();
+  triplets.shrink_to_fit();
+  const double energyNorm = 2.0 * scale * scale * std::max(totalArea, 1e-300);
+  auto energyOf = [&](
+                    const Eigen::VectorXd& x) { return (D * x - rhs).squaredNorm() / energyNorm; };
+
+  auto uvOf = [&](const Eigen::VectorXd& x) {
+    Eigen::MatrixX2d uv(nS, 2);
+    for (int s = 0; s < nS; ++s)
+    {
+      for (int c = 0; c < 2; ++c)
+      {
+        double value = 0.0;
+        for (const auto& t : sectorExpr[2 * s + c])
+        {
+          value += t.second * x[t.first];
+        }
+        uv(s, c) = value;
+      }
+    }
+    return uv;
+  };
+  auto flippedFaces = [&](const Eigen::MatrixX2d& uv) {
+    std::vector<int> flipped;
+    for (int f = 0; f < nF; ++f)
+    {
+      const Eigen::Vector2d a = uv.row(out.cornerSector[3 * f]).transpose();
+      const Eigen::Vector2d b = uv.row(out.cornerSector[3 * f + 1]).transpose();
+      const Eigen::Vector2d c = uv.row(out.cornerSector[3 * f + 2]).transpose();
+      const double area = (b - a).x() * (c - a).y() - (b - a).y() * (c - a).x();
+      if (!(area > 0))
+      {
+        flipped.push_back(f);
+      }
+    }
+    return flipped;
+  };
+
+  // ---- the continuous minimizer ----
+  auto start = std::chrono::steady_clock::now();
+  const SparseMatrix H = (D.transpose() * D).pruned();
+  const bool round = options.rounding != Rounding::None && numInteger > 0;
+  Eigen::MatrixXd B(n, 1 + (round ? numInteger : 0));
+  B.setZero();
+  B.col(0) = D.transpose() * rhs;
+  for (int j = 0; round && j < numInteger; ++j)
+  {
+    B(numReal + j, 1 + j) = 1.0; // columns of H^-1 at the integer unknowns
+  }
+  Eigen::MatrixXd X = n > 0 ? solveSpd(H, B, "Poisson") : Eigen::MatrixXd(0, 1);
+  out.solveSeconds.push_back(seconds(start));
+  Eigen::VectorXd x = n > 0 ? Eigen::VectorXd(X.col(0)) : Eigen::VectorXd();
+  out.energyContinuous = energyOf(x);
+  out.flippedContinuous = static_cast<int>(flippedFaces(uvOf(x)).size());
+
+  // ---- rounding: the integer unknowns' values are Gaussian given the ones fixed so far; fixing
+  // one conditions the others exactly (x -= S_j (x_j - c_j) / S_jj, S -= S_j S_j^T / S_jj with
+  // S the integer block of H^-1), which is the re-solve with the same factorization ----
+  Eigen::VectorXd fixedValues;
+  if (round)
+  {
+    Eigen::VectorXd xi = x.tail(numInteger);
+    Eigen::MatrixXd S = X.block(numReal, 1, numInteger, numInteger);
+    X.resize(0, 0);
+    fixedValues = xi.array().round().matrix();
+    if (options.rounding == Rounding::Greedy)
+    {
+      std::vector<char> fixed(numInteger, 0);
+      for (int step = 0; step < numInteger; ++step)
+      {
+        int best = -1;
+        double bestDistance = 2.0;
+        for (int j = 0; j < numInteger; ++j)
+        {
+          const double distance = std::abs(xi[j] - std::round(xi[j]));
+          if (!fixed[j] && distance < bestDistance)
+          {
+            best = j;
+            bestDistance = distance;
+          }
+        }
+        fixed[best] = 1;
+        const double value = std::round(xi[best]);
+        fixedValues[best] = value;
+        const double pivot = S(best, best);
+        if (pivot > 1e-14 * std::max(1.0, S.diagonal().cwiseAbs().maxCoeff()))
+        {
+          const Eigen::VectorXd col = S.col(best);
+          xi -= col * ((xi[best] - value) / pivot);
+          S.noalias() -= col * (col.transpose() / pivot);
+        }
+        xi[best] = value;
+      }
+    }
+  }
+
+  // ---- the real unknowns with the integers fixed, stiffening flipped triangles ----
+  Eigen::VectorXd weight = Eigen::VectorXd::Ones(4 * static_cast<Eigen::Index>(nF));
+  auto solveFixed = [&]() {
+    const auto started = std::chrono::steady_clock::now();
+    Eigen::VectorXd result(n);
+    if (round)
+    {
+      result.tail(numInteger) = fixedValues;
+    }
+    const int free = round ? numReal : n;
+    if (free > 0)
+    {
+      const SparseMatrix Dw = weight.asDiagonal() * D;
+      const SparseMatrix Dfree = Dw.leftCols(free);
+      Eigen::VectorXd r = weight.asDiagonal() * rhs;
+      if (round)
+      {
+        r -= Dw.rightCols(numInteger) * fixedValues;
+      }
+      const SparseMatrix Hfree = (Dfree.transpose() * Dfree).pruned();
+      Eigen::MatrixXd b = Dfree.transpose() * r;
+      result.head(free) = solveSpd(Hfree, b, "Poisson").col(0);
+    }
+    out.solveSeconds.push_back(seconds(started));
+    return result;
+  };
+  if (round)
+  {
+    x = solveFixed();
+  }
+  out.energyRounded = energyOf(x);
+  std::vector<int> flipped = flippedFaces(uvOf(x));
+  out.flippedRounded = static_cast<int>(flipped.size());
+  while (!flipped.empty() && out.stiffeningIterations < options.maxStiffeningIterations)
+  {
+    ++out.stiffeningIterations;
+    std::vector<char> raised(nF, 0);
+    for (const int f : flipped)
+    {
+      for (int k = 0; k < 3; ++k)
+      {
+        const int p = F(f, k);
+        for (int i = topo.ringOffsets[p]; i < topo.ringOffsets[p + 1]; ++i)
+        {
+          raised[topo.ringFaces[i]] = std::max<char>(raised[topo.ringFaces[i]], 1);
+        }
+      }
+    }
+    for (const int f : flipped)
+    {
+      raised[f] = 2;
+    }
+    for (int f = 0; f < nF; ++f)
+    {
+      // rows hold sqrt(weight): flipped triangles x4, their neighbours x2 in weight
+      const double factor = raised[f] == 2 ? 2.0 : (raised[f] == 1 ? std::sqrt(2.0) : 1.0);
+      weight.segment(4 * f, 4) *= factor;
+    }
+    x = solveFixed();
+    flipped = flippedFaces(uvOf(x));
+  }
+  out.flipped = static_cast<int>(flipped.size());
+  out.energyFinal = energyOf(x);
+
+  // ---- the map per corner, and how well it meets the grid ----
+  out.sectorUV = uvOf(x);
+  out.cornerUV.resize(nF, 6);
+  for (int f = 0; f < nF; ++f)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      out.cornerUV.block<1, 2>(f, 2 * k) = out.sectorUV.row(out.cornerSector[3 * f + k]);
+    }
+  }
+  for (int e = 0; e < topo.numEdges(); ++e)
+  {
+    if (!onCut[e])
+    {
+      continue;
+    }
+    const int c0 = topo.edgeCorners(e, 0);
+    const int f = c0 / 3;
+    const int g = topo.edgeCorners(e, 1) / 3;
+    const int r = out.combedMatching(f, c0 % 3);
+    for (int end = 0; end < 2; ++end)
+    {
+      const int p = topo.edges(e, end);
+      const Eigen::Vector2d a = out.sectorUV.row(sectorOf(f, p)).transpose();
+      const Eigen::Vector2d b = out.sectorUV.row(sectorOf(g, p)).transpose();
+      Eigen::Vector2d rotated = a;
+      for (int q = 0; q < r; ++q)
+      {
+        rotated = Eigen::Vector2d(-rotated.y(), rotated.x());
+      }
+      const Eigen::Vector2d t = b - rotated;
+      out.maxSeamError =
+        std::max(out.maxSeamError, (t - t.array().round().matrix()).cwiseAbs().maxCoeff());
+    }
+  }
+  for (int s = 0; s < nS; ++s)
+  {
+    const int p = out.sectorPoint[s];
+    if (branch[p])
+    {
+      const Eigen::RowVector2d uv = out.sectorUV.row(s);
+      if ((uv - uv.array().round().matrix()).cwiseAbs().maxCoeff() < 1e-6)
+      {
+        branch[p] = 0; // count each point once
+        ++out.branchPointsOnGrid;
+      }
+    }
+  }
+  return out;
+}
+
+}

@@ -1,0 +1,118 @@
+// Parameterization.h: the seamless integer-grid map of stage 4 (QuadCover Sect. 2.5, 4, 4.1):
+// a Poisson solve on the surface cut open along a cut graph, with the covering's transition
+// functions z' = J^r z + t across the cut, integer translations and branch points on the grid.
+#ifndef quadcover_Parameterization_h
+#define quadcover_Parameterization_h
+
+#include "CutGraph.h"
+#include "Matchings.h"
+#include "MeshTopology.h"
+
+#include <Eigen/Core>
+
+#include <string>
+#include <vector>
+
+namespace quadcover
+{
+
+enum class Rounding
+{
+  None,   ///< the continuous minimizer (translations and branch points not integer)
+  Simple, ///< round every integer unknown of the continuous minimizer at once, then re-solve
+  Greedy  ///< fix the unknown closest to an integer, update the others exactly, repeat
+};
+
+struct ParameterizationOptions
+{
+  /// World length of one parameter unit (the quads' edge length); must be positive.
+  double gridSize = 0.0;
+  /// Branch points on grid points (integer unknowns), so extraction gives only quads. Without
+  /// it only the seam translations are integer and a branch point may lie at the middle of a
+  /// grid cell or edge (Theorem 2).
+  bool pureQuads = true;
+  Rounding rounding = Rounding::Greedy;
+  /// Boundary edges along a frame direction (within boundaryTolerance degrees) lie on an integer
+  /// grid line (constant u or v), so quads end cleanly at the border.
+  bool alignBoundary = true;
+  double boundaryTolerance = 10.0;
+  /// After rounding: at most this many solves that stiffen flipped triangles and their
+  /// neighbours (as in mixed-integer quadrangulation) until no triangle is flipped.
+  int maxStiffeningIterations = 20;
+};
+
+/**
+ * The map and what it took. Complex notation: z = u + i v, J = multiplication by i (a quarter
+ * turn). Across edge k of face f, on the cut, the neighbour g's values at the two shared points
+ * are z_g = i^r z_f + t with r = combedMatching(f,k) and t in Z^2 once rounded (Rounding::None
+ * leaves t real); off the cut z_g = z_f.
+ */
+struct Parameterization
+{
+  Eigen::MatrixXd cornerUV;        ///< #F x 6: u, v at corners 0, 1, 2
+  Eigen::MatrixX3i seam;           ///< #F x 3: 1 where edge k is on the cut graph
+  Eigen::VectorXi comb;            ///< #F: quarter turns added to the frame (u follows X_comb)
+  Eigen::MatrixX3i combedMatching; ///< #F x 3 matchings after combing: 0 off the cut, -1 boundary
+  CutGraph cut;
+  /// The surface cut open: one point per sector (corners of a point between cut or boundary
+  /// edges), sectorPoint its original point, sectorUV its (u, v), cornerSector per corner 3f+k.
+  std::vector<int> sectorPoint;
+  Eigen::MatrixX2d sectorUV;
+  std::vector<int> cornerSector;
+
+  // ---- figures ----
+  double gridSize = 0.0;
+  int branchPoints = 0;         ///< inner points with a non-zero layer shift
+  int branchPointsOnGrid = 0;   ///< of those, mapped to integer (u, v) within 1e-6
+  int seamEdges = 0;            ///< cut edges
+  int alignedBoundaryEdges = 0; ///< boundary edges put on grid lines
+  int unknowns = 0;             ///< real unknowns of the solve
+  int integerUnknowns = 0;      ///< of which integer
+  int constraints = 0;          ///< real linear constraints eliminated
+  /// constraints whose elimination could not keep integers integer (0 unless the cut graph
+  /// is unusual); the map may then miss the grid there (see maxSeamError)
+  int nonUnitPivots = 0;
+  /// Energy sum A_f |grad phi - K|^2 / (area * |K|^2) (0 for a perfect fit): the continuous
+  /// minimizer, the rounded map before stiffening, and the final map.
+  double energyContinuous = 0.0;
+  double energyRounded = 0.0;
+  double energyFinal = 0.0;
+  int flippedContinuous = 0; ///< triangles with a non-positive (u, v) area
+  int flippedRounded = 0;
+  int flipped = 0; ///< in the final map
+  int stiffeningIterations = 0;
+  double maxSeamError = 0.0; ///< largest distance of a seam translation from Z^2, in grid units
+  std::vector<double> solveSeconds; ///< factorization + solve, one entry per sparse solve
+  std::string solver;               ///< sparse solver used
+};
+
+/**
+ * Computes the integer-grid map of a frame field with given matchings.
+ *
+ * The surface is cut into disks through every singular point (computeCutGraph), the frames
+ * are combed (turned by quarter turns) so that matchings vanish off the cut, and the map is
+ * unknown per sector. The cut's transition functions z_B = i^r z_A + t_e (one t_e per cut edge)
+ * and the boundary lines are linear constraints with integer coefficients; they are eliminated
+ * so that every remaining integer unknown (translations, branch points, boundary lines) keeps
+ * every dependent one integer. The energy sum_f A_f |grad phi - K_f|^2 with K_f the combed
+ * frame (X_c, X_{c+1}) / gridSize is minimized (one sparse Cholesky), the integer unknowns are
+ * rounded (Rounding), and the rest is solved again with the integers fixed, stiffening flipped
+ * triangles.
+ *
+ * @param[in] geometry computeFrameGeometry(V, F, topo)
+ * @param[in] frameU   #F x 3 tangent frame directions (four-fold symmetric)
+ * @param[in] matching #F x 3 in the convention of FrameTopology (vtkMatchingBuilder's Matching)
+ * @throws std::invalid_argument on sizes that do not match, a non-manifold or misoriented
+ *         surface, matchings that are not inverse across an edge, or gridSize <= 0
+ * @throws std::runtime_error when the sparse factorization fails
+ */
+Parameterization computeParameterization(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F,
+  const MeshTopology& topo, const FrameGeometry& geometry, const Eigen::MatrixX3d& frameU,
+  const Eigen::MatrixX3i& matching, const ParameterizationOptions& options);
+
+/// The grid size that gives about `quads` quads: sqrt(total area / quads).
+double gridSizeForQuadCount(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F, double quads);
+
+}
+
+#endif

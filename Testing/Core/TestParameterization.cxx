@@ -1,0 +1,384 @@
+// The integer-grid map: seamless transitions z' = i^r z + t with integer t, branch points on
+// grid points with their index kept, no flipped triangle, rounding close to the continuous
+// energy, boundaries on grid lines. Every check reads only cornerUV and the mesh, not the
+// solver's own figures.
+#include "CurvatureFrames.h"
+#include "FrameField.h"
+#include "FrameSmoother.h"
+#include "Matchings.h"
+#include "MeshTopology.h"
+#include "Parameterization.h"
+#include "Surfaces.h"
+#include "TestSurfaces.h"
+
+#include <Eigen/Geometry>
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <complex>
+
+using namespace quadcover;
+
+namespace
+{
+constexpr double Pi = 3.14159265358979323846;
+using Complex = std::complex<double>;
+
+struct Chain
+{
+  Surface s;
+  MeshTopology topo;
+  FrameGeometry geometry;
+  Eigen::MatrixX3d frameU;
+  FrameTopology field;
+  Parameterization map;
+};
+
+/// The whole chain with default options, then the map at about `quads` quads.
+Chain runChain(Surface s, double quads, ParameterizationOptions options = ParameterizationOptions())
+{
+  Chain r{ std::move(s), {}, {}, {}, {}, {} };
+  r.topo = buildTopology(r.s.F, static_cast<int>(r.s.V.rows()));
+  r.geometry = computeFrameGeometry(r.s.V, r.s.F, r.topo);
+  const CurvatureField c = computeCurvatureField(r.s.V, r.s.F, r.topo);
+  const SmootherResult smooth =
+    smoothFrames(r.s.V, r.s.F, r.topo, r.geometry, c.frameU, c.frameV, c.weight);
+  r.frameU = smooth.frameU;
+  r.field = computeMatchings(r.s.F, r.topo, r.geometry, r.frameU);
+  optimizeBranchPoints(r.s.F, r.topo, r.geometry, r.frameU, r.field);
+  options.gridSize = gridSizeForQuadCount(r.s.V, r.s.F, quads);
+  r.map =
+    computeParameterization(r.s.V, r.s.F, r.topo, r.geometry, r.frameU, r.field.matching, options);
+  return r;
+}
+
+Complex cornerZ(const Parameterization& m, int f, int k)
+{
+  return { m.cornerUV(f, 2 * k), m.cornerUV(f, 2 * k + 1) };
+}
+
+Complex rotate(Complex z, int r)
+{
+  for (int q = 0; q < r; ++q)
+  {
+    z *= Complex(0, 1);
+  }
+  return z;
+}
+
+bool isInteger(double x, double tolerance = 1e-6)
+{
+  return std::abs(x - std::round(x)) <= tolerance;
+}
+
+/// Across every inner edge: some quarter turn r and an integer t with z_g = i^r z_f + t at both
+/// shared points. Returns the number of edges where that fails.
+int seamViolations(const Chain& r, double translationTolerance = 1e-6)
+{
+  int bad = 0;
+  const auto& F = r.s.F;
+  for (int f = 0; f < F.rows(); ++f)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      const int g = r.topo.faceNeighbors(f, k);
+      if (g < 0)
+      {
+        continue;
+      }
+      const int a = F(f, k);
+      const int b = F(f, (k + 1) % 3);
+      const int ga = MeshTopology::cornerOf(F, g, a);
+      const int gb = MeshTopology::cornerOf(F, g, b);
+      const Complex fa = cornerZ(r.map, f, k);
+      const Complex fb = cornerZ(r.map, f, (k + 1) % 3);
+      const Complex za = cornerZ(r.map, g, ga);
+      const Complex zb = cornerZ(r.map, g, gb);
+      bool ok = false;
+      for (int q = 0; q < 4 && !ok; ++q)
+      {
+        const Complex ta = za - rotate(fa, q);
+        const Complex tb = zb - rotate(fb, q);
+        ok = std::abs(ta - tb) < 1e-6 && isInteger(ta.real(), translationTolerance) &&
+          isInteger(ta.imag(), translationTolerance);
+      }
+      bad += !ok;
+    }
+  }
+  return bad;
+}
+
+/// Triangles whose (u, v) image has non-positive area.
+int flippedTriangles(const Parameterization& m)
+{
+  int flipped = 0;
+  for (int f = 0; f < m.cornerUV.rows(); ++f)
+  {
+    const Complex a = cornerZ(m, f, 0);
+    const Complex b = cornerZ(m, f, 1);
+    const Complex c = cornerZ(m, f, 2);
+    flipped += !(std::imag(std::conj(b - a) * (c - a)) > 0);
+  }
+  return flipped;
+}
+
+/// Inner points with a non-zero layer shift whose (u, v) is not integer (in some triangle).
+int branchPointsOffGrid(const Chain& r, double tolerance = 1e-6)
+{
+  int off = 0;
+  for (int f = 0; f < r.s.F.rows(); ++f)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      const int p = r.s.F(f, k);
+      if (!r.topo.boundaryVertex[p] && r.field.layerShift[p] != 0)
+      {
+        const Complex z = cornerZ(r.map, f, k);
+        off += !(isInteger(z.real(), tolerance) && isInteger(z.imag(), tolerance));
+      }
+    }
+  }
+  return off;
+}
+
+/// Sum of the (u, v) angles at the corners around each inner point minus 2 pi (1 - index):
+/// the largest deviation over the points (0 when the map keeps every point's index).
+double indexDeviation(const Chain& r)
+{
+  Eigen::VectorXd angle = Eigen::VectorXd::Zero(r.s.V.rows());
+  for (int f = 0; f < r.s.F.rows(); ++f)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      const Complex z = cornerZ(r.map, f, k);
+      const Complex a = cornerZ(r.map, f, (k + 1) % 3) - z;
+      const Complex b = cornerZ(r.map, f, (k + 2) % 3) - z;
+      angle[r.s.F(f, k)] += std::arg(b / a);
+    }
+  }
+  double worst = 0.0;
+  for (int p = 0; p < r.s.V.rows(); ++p)
+  {
+    if (!r.topo.boundaryVertex[p])
+    {
+      worst = std::max(worst, std::abs(angle[p] - 2 * Pi * (1 - r.field.index[p])));
+    }
+  }
+  return worst;
+}
+
+void expectIntegerGridMap(const Chain& r, const std::string& name)
+{
+  SCOPED_TRACE(name);
+  EXPECT_EQ(seamViolations(r), 0);
+  EXPECT_EQ(branchPointsOffGrid(r), 0);
+  EXPECT_EQ(flippedTriangles(r.map), 0);
+  EXPECT_LT(indexDeviation(r), 1e-6);
+  // the solver's own figures agree with the checks above
+  EXPECT_EQ(r.map.flipped, flippedTriangles(r.map));
+  EXPECT_EQ(r.map.branchPointsOnGrid, r.map.branchPoints);
+  EXPECT_LT(r.map.maxSeamError, 1e-6);
+  EXPECT_EQ(r.map.nonUnitPivots, 0);
+}
+}
+
+TEST(Parameterization, TorusCurvatureLinesGiveTheAnalyticIntegerGrid)
+{
+  // Torus of revolution about z, radii R and r. Along the tube (meridians) the best coordinate
+  // has |grad w| = P_meridian / (2 pi r), constant; around the axis |grad w'| = P / (2 pi rho)
+  // with rho the distance from the axis, and least squares picks P = 2 pi sqrt(R^2 - r^2) / h
+  // (the mean of 1/rho around a meridian is 1/sqrt(R^2 - r^2)), rounded to an integer.
+  const double R = 1.0;
+  const double r = 0.4;
+  const Chain c = runChain(makeTorus(R, r, 96, 48), 1500);
+  EXPECT_EQ(c.map.branchPoints, 0);
+  EXPECT_EQ(c.map.integerUnknowns, 4) << "the two periods of a torus, u and v each";
+  expectIntegerGridMap(c, "torus");
+  const double h = c.map.gridSize;
+  const double expectedMeridian = 2 * Pi * r / h;
+  const double expectedParallel = 2 * Pi * std::sqrt(R * R - r * r) / h;
+  std::vector<double> meridian; // 2 pi r |grad w| per triangle
+  std::vector<double> parallel; // 2 pi rho |grad w'|
+  for (int f = 0; f < c.s.F.rows(); ++f)
+  {
+    const Eigen::Vector3d p0 = c.s.V.row(c.s.F(f, 0));
+    const Eigen::Vector3d e1 = Eigen::Vector3d(c.s.V.row(c.s.F(f, 1))) - p0;
+    const Eigen::Vector3d e2 = Eigen::Vector3d(c.s.V.row(c.s.F(f, 2))) - p0;
+    const Eigen::Vector3d centre =
+      (p0 + Eigen::Vector3d(c.s.V.row(c.s.F(f, 1))) + Eigen::Vector3d(c.s.V.row(c.s.F(f, 2)))) / 3;
+    const double rho = std::hypot(centre.x(), centre.y());
+    const Eigen::Vector3d around = Eigen::Vector3d(-centre.y(), centre.x(), 0).normalized();
+    // gradient of a linear function with differences (d1, d2) along e1, e2, in the plane
+    Eigen::Matrix2d G;
+    G << e1.dot(e1), e1.dot(e2), e1.dot(e2), e2.dot(e2);
+    for (int uv = 0; uv < 2; ++uv)
+    {
+      const Eigen::Vector2d d(c.map.cornerUV(f, 2 + uv) - c.map.cornerUV(f, uv),
+        c.map.cornerUV(f, 4 + uv) - c.map.cornerUV(f, uv));
+      const Eigen::Vector2d a = G.ldlt().solve(d);
+      const Eigen::Vector3d grad = a[0] * e1 + a[1] * e2;
+      if (std::abs(grad.normalized().dot(around)) > 0.9)
+      {
+        parallel.push_back(2 * Pi * rho * grad.norm());
+      }
+      else
+      {
+        meridian.push_back(2 * Pi * r * grad.norm());
+      }
+    }
+  }
+  ASSERT_EQ(meridian.size(), parallel.size()) << "one coordinate along each family of lines";
+  const auto [pMin, pMax] = std::minmax_element(parallel.begin(), parallel.end());
+  const auto [mMin, mMax] = std::minmax_element(meridian.begin(), meridian.end());
+  const double pSpread = *pMax - *pMin;
+  const double mSpread = *mMax - *mMin;
+  // medians: a triangle's centroid is a tube segment's width (2 pi r / 48) off the parallel
+  // its gradient belongs to, which spreads 2 pi rho |grad| by a few percent either way
+  std::nth_element(parallel.begin(), parallel.begin() + parallel.size() / 2, parallel.end());
+  std::nth_element(meridian.begin(), meridian.begin() + meridian.size() / 2, meridian.end());
+  const double periodParallel = std::round(parallel[parallel.size() / 2]);
+  const double periodMeridian = std::round(meridian[meridian.size() / 2]);
+  EXPECT_NEAR(periodParallel, expectedParallel, 1.0);
+  EXPECT_NEAR(periodMeridian, expectedMeridian, 1.0);
+  EXPECT_LT(pSpread / periodParallel, 0.05) << "|grad| ~ 1/rho around the axis";
+  EXPECT_LT(mSpread / periodMeridian, 0.03) << "|grad| constant along the tube";
+  EXPECT_LT(c.map.energyFinal, 0.05);
+}
+
+TEST(Parameterization, ClosedSurfacesGiveSeamlessGridMapsWithoutFlips)
+{
+  for (const char* name : { "sphere", "knot", "roundedcube" })
+  {
+    const Chain r = runChain(testSurface(name), 3000);
+    EXPECT_EQ(r.map.branchPoints > 0, std::string(name) != "knot") << name << " (genus 1)";
+    expectIntegerGridMap(r, name);
+    // rounding costs little: within a few percent of the continuous minimizer's energy
+    EXPECT_LT(r.map.energyFinal, r.map.energyContinuous * 1.1 + 1e-3) << name;
+    std::cout << name << ": " << r.map.branchPoints << " branch points, energy "
+              << r.map.energyContinuous << " -> " << r.map.energyFinal << ", "
+              << r.map.integerUnknowns << " integer unknowns, flips " << r.map.flippedRounded
+              << " -> " << r.map.flipped << " in " << r.map.stiffeningIterations
+              << " stiffening solves\n";
+  }
+}
+
+TEST(Parameterization, GreedyRoundingIsNoWorseThanSimple)
+{
+  ParameterizationOptions simple;
+  simple.rounding = Rounding::Simple;
+  for (const char* name : { "sphere", "roundedcube" })
+  {
+    const Chain greedy = runChain(testSurface(name), 800);
+    const Chain once = runChain(testSurface(name), 800, simple);
+    EXPECT_EQ(seamViolations(once), 0) << name;
+    EXPECT_EQ(branchPointsOffGrid(once), 0) << name;
+    EXPECT_LE(greedy.map.energyRounded, once.map.energyRounded * (1 + 1e-9)) << name;
+  }
+}
+
+TEST(Parameterization, WithoutPureQuadsBranchPointsMayLieOnHalfGridOnly)
+{
+  ParameterizationOptions options;
+  options.pureQuads = false;
+  const Chain r = runChain(testSurface("sphere"), 1000, options);
+  EXPECT_EQ(seamViolations(r), 0);
+  // Theorem 2: at worst the middle of a grid cell
+  for (int f = 0; f < r.s.F.rows(); ++f)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      const int p = r.s.F(f, k);
+      if (r.field.layerShift[p] != 0)
+      {
+        const Complex z = 2.0 * cornerZ(r.map, f, k);
+        EXPECT_TRUE(isInteger(z.real()) && isInteger(z.imag())) << z;
+      }
+    }
+  }
+}
+
+TEST(Parameterization, ContinuousMapIsSeamlessUpToTranslationsAndHasTheLowestEnergy)
+{
+  ParameterizationOptions options;
+  options.rounding = Rounding::None;
+  const Chain r = runChain(testSurface("roundedcube"), 1000, options);
+  // rotations match, translations are real: the seam check fails on integrality only
+  EXPECT_EQ(seamViolations(r, 0.5), 0);
+  EXPECT_GT(seamViolations(r), 0);
+  const Chain rounded = runChain(testSurface("roundedcube"), 1000);
+  EXPECT_LE(r.map.energyFinal, rounded.map.energyFinal);
+  EXPECT_NEAR(r.map.energyContinuous, rounded.map.energyContinuous, 1e-9);
+}
+
+TEST(Parameterization, BoundariesLieOnGridLines)
+{
+  const Chain r = runChain(testSurface("cylinder"), 800);
+  expectIntegerGridMap(r, "cylinder");
+  EXPECT_EQ(r.map.alignedBoundaryEdges, 2 * 48);
+  // along every boundary edge one coordinate is constant and integer
+  for (int e = 0; e < r.topo.numEdges(); ++e)
+  {
+    if (r.topo.edgeFaceCount[e] != 1)
+    {
+      continue;
+    }
+    const int c = r.topo.edgeCorners(e, 0);
+    const Complex a = cornerZ(r.map, c / 3, c % 3);
+    const Complex b = cornerZ(r.map, c / 3, (c % 3 + 1) % 3);
+    const bool uLine = std::abs(a.real() - b.real()) < 1e-9 && isInteger(a.real());
+    const bool vLine = std::abs(a.imag() - b.imag()) < 1e-9 && isInteger(a.imag());
+    EXPECT_TRUE(uLine || vLine) << "boundary edge " << e << ": " << a << " " << b;
+  }
+}
+
+TEST(Parameterization, SectorsCutTheSurfaceOpenConsistently)
+{
+  const Chain r = runChain(testSurface("knot"), 1000);
+  int total = 0;
+  for (const int c : r.map.cut.copies)
+  {
+    total += c;
+  }
+  EXPECT_EQ(static_cast<int>(r.map.sectorPoint.size()), total);
+  for (int f = 0; f < r.s.F.rows(); ++f)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      EXPECT_EQ(r.map.sectorPoint[r.map.cornerSector[3 * f + k]], r.s.F(f, k));
+    }
+  }
+}
+
+TEST(Parameterization, GridSizeFollowsTheQuadCount)
+{
+  const Surface s = makeIcosphere(1.0, 3);
+  const double h = gridSizeForQuadCount(s.V, s.F, 1000);
+  double area = 0.0;
+  for (int f = 0; f < s.F.rows(); ++f)
+  {
+    const Eigen::Vector3d a = s.V.row(s.F(f, 1)) - s.V.row(s.F(f, 0));
+    const Eigen::Vector3d b = s.V.row(s.F(f, 2)) - s.V.row(s.F(f, 0));
+    area += 0.5 * a.cross(b).norm();
+  }
+  EXPECT_NEAR(h * h * 1000, area, 1e-9 * area);
+  EXPECT_THROW(gridSizeForQuadCount(s.V, s.F, 0), std::invalid_argument);
+}
+
+TEST(Parameterization, RefusesBadArguments)
+{
+  Chain r = runChain(makeTorus(1.0, 0.4, 24, 12), 100);
+  ParameterizationOptions options;
+  options.gridSize = 0.0;
+  EXPECT_THROW(
+    computeParameterization(r.s.V, r.s.F, r.topo, r.geometry, r.frameU, r.field.matching, options),
+    std::invalid_argument);
+  options.gridSize = 0.1;
+  Eigen::MatrixX3i broken = r.field.matching;
+  broken(0, 0) = (broken(0, 0) + 1) % 4; // no longer the inverse of its twin
+  EXPECT_THROW(computeParameterization(r.s.V, r.s.F, r.topo, r.geometry, r.frameU, broken, options),
+    std::invalid_argument);
+  EXPECT_THROW(computeParameterization(
+                 r.s.V, r.s.F, r.topo, r.geometry, r.frameU.topRows(10), r.field.matching, options),
+    std::invalid_argument);
+}
