@@ -86,16 +86,58 @@ int vtkMatchingBuilder::RequestData(
     this->UpdateProgress(0.4);
     const int branchBefore = t.branchPoints;
     const double costBefore = t.matchingCost; // before the optimization changes t
+    int pathsChanged = 0;
     if (this->OptimizeBranchPoints && !this->GetAbortExecute())
     {
       quadcover::BranchPointOptions options;
       options.weight = this->BranchPointWeight;
       options.maxVisited = this->MaximumSearchSize;
-      quadcover::optimizeBranchPoints(mesh.F, mesh.topo, geometry, U, t, options);
+      const quadcover::BranchPointReport report =
+        quadcover::optimizeBranchPoints(mesh.F, mesh.topo, geometry, U, t, options);
+      pathsChanged = report.pathsChanged;
+    }
+    this->UpdateProgress(0.7);
+    Eigen::MatrixX3d fittedU;
+    Eigen::MatrixX3d fittedV;
+    if (this->FitFramesToMatchings && pathsChanged > 0 && !this->GetAbortExecute())
+    {
+      vtkDataArray* w = surface->GetCellData()->GetArray(names::FrameWeight);
+      Eigen::VectorXd weight;
+      if (w && w->GetNumberOfComponents() == 1 && w->GetNumberOfTuples() == nf)
+      {
+        weight.resize(nf);
+        for (vtkIdType f = 0; f < nf; ++f)
+        {
+          weight[f] = w->GetComponent(f, 0);
+        }
+        weight = weight.array().isFinite().select(weight, 0.0);
+      }
+      const Eigen::VectorXd alpha =
+        quadcover::fitFramesToMatchings(mesh.V, mesh.F, mesh.topo, geometry, U, t.matching, weight);
+      fittedU = U;
+      vtkDataArray* v = surface->GetCellData()->GetArray(names::FrameV);
+      fittedV = v && v->GetNumberOfComponents() == 3 && v->GetNumberOfTuples() == nf
+        ? vtkQuadCoverEigen::FromArray3(v)
+        : U;
+      if (fittedV.data() == U.data() || fittedV.rows() != nf)
+      {
+        for (vtkIdType f = 0; f < nf; ++f)
+        {
+          fittedV.row(f) = geometry.bases.normal.row(f).cross(U.row(f));
+        }
+      }
+      quadcover::rotateFrames(geometry.bases, alpha, fittedU, fittedV);
+      t = quadcover::evaluateMatchings(mesh.F, mesh.topo, geometry, fittedU, t.matching);
     }
     this->UpdateProgress(0.9);
 
     output->ShallowCopy(surface);
+    if (fittedU.rows() == nf)
+    {
+      // new arrays: the input's stay untouched
+      output->GetCellData()->AddArray(vtkQuadCoverEigen::ToArray(fittedU, u->GetName()));
+      output->GetCellData()->AddArray(vtkQuadCoverEigen::ToArray(fittedV, names::FrameV));
+    }
     vtkNew<vtkIntArray> matching;
     matching->SetName(names::Matching);
     matching->SetNumberOfComponents(3);
@@ -185,4 +227,5 @@ void vtkMatchingBuilder::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "OptimizeBranchPoints: " << (this->OptimizeBranchPoints ? "On" : "Off") << "\n";
   os << indent << "BranchPointWeight: " << this->BranchPointWeight << "\n";
   os << indent << "MaximumSearchSize: " << this->MaximumSearchSize << "\n";
+  os << indent << "FitFramesToMatchings: " << (this->FitFramesToMatchings ? "On" : "Off") << "\n";
 }

@@ -68,6 +68,19 @@ public:
   vtkGetMacro(MaximumSearchSize, int);
   ///@}
 
+  ///@{
+  /**
+   * After the optimization changed matchings, turn the frames (FrameU, FrameV) so that they
+   * agree with them (default on): the turning a changed matching leaves on its path spreads
+   * smoothly over the surface (vtkFrameSmoother's energy to second order, weighted 0.97 towards
+   * smoothness, FrameWeight as alignment weight when present), indices unchanged. Without it the
+   * parameterization has to absorb a quarter turn along every merge path, which folds it.
+   */
+  vtkSetMacro(FitFramesToMatchings, bool);
+  vtkGetMacro(FitFramesToMatchings, bool);
+  vtkBooleanMacro(FitFramesToMatchings, bool);
+  ///@}
+
   /** The branch points (output port 1). */
   vtkPolyData* GetBranchPointsOutput();
 
@@ -80,6 +93,7 @@ protected:
   bool OptimizeBranchPoints = true;
   double BranchPointWeight = 6.0;
   int MaximumSearchSize = 20000;
+  bool FitFramesToMatchings = true;
 
 private:
   vtkMatchingBuilder(const vtkMatchingBuilder&) = delete;

@@ -1,7 +1,13 @@
 #include "Matchings.h"
 
+#include "SparseSolver.h"
+
+#include <Eigen/Geometry>
+#include <Eigen/Sparse>
+
 #include <cmath>
 #include <functional>
+#include <limits>
 #include <queue>
 #include <stdexcept>
 #include <string>
@@ -170,33 +176,19 @@ FrameTopology evaluateMatchings(const Eigen::MatrixX3i& F, const MeshTopology& t
   return T;
 }
 
-BranchPointReport optimizeBranchPoints(const Eigen::MatrixX3i& F, const MeshTopology& topo,
-  const FrameGeometry& geometry, const Eigen::MatrixX3d& frameU, FrameTopology& topology,
-  const BranchPointOptions& options)
+namespace
 {
-  const int nv = topo.numVertices;
-  const double lambda = options.weight;
-  const Eigen::VectorXd phi = vectorAngles(geometry.bases, frameU);
-  BranchPointReport report;
-  report.before = topology.branchPoints;
-  report.singularitiesBefore = topology.singularities;
-  report.costBefore = lambda * topology.singularities + topology.matchingCost;
-  if (!(lambda > 0.0))
-  {
-    report.after = report.before;
-    report.singularitiesAfter = report.singularitiesBefore;
-    report.costAfter = report.costBefore;
-    return report;
-  }
+/// Primal adjacency over inner edges between inner vertices. Walking an edge from u to `to` and
+/// adding `delta` to the matching from g to f (g: the face where the edge runs to -> u, f: where
+/// it runs u -> to) adds delta to the layer shift of u and takes it from `to`.
+struct Step
+{
+  int to, g, kg, f, kf;
+};
 
-  // Primal adjacency over inner edges between inner vertices. Walking an edge from u to w and
-  // adding `delta` to the matching from g to f (g: the face where the edge runs w -> u, f: where
-  // it runs u -> w) adds delta to the layer shift of u and takes it from w.
-  struct Step
-  {
-    int to, g, kg, f, kf;
-  };
-  std::vector<std::vector<Step>> steps(nv);
+std::vector<std::vector<Step>> pathSteps(const Eigen::MatrixX3i& F, const MeshTopology& topo)
+{
+  std::vector<std::vector<Step>> steps(topo.numVertices);
   for (int e = 0; e < topo.numEdges(); ++e)
   {
     if (topo.edgeFaceCount[e] != 2)
@@ -217,23 +209,193 @@ BranchPointReport optimizeBranchPoints(const Eigen::MatrixX3i& F, const MeshTopo
     steps[from0].push_back({ from0 == a ? b : a, f1, k1, f0, k0 });
     steps[from0 == a ? b : a].push_back({ from0, f0, k0, f1, k1 });
   }
+  return steps;
+}
 
+/// Changes the matchings along the path that cameFrom/stepIndex record from `start` to `end` by
+/// delta quarter turns.
+void changePath(const std::vector<std::vector<Step>>& steps, const std::vector<int>& cameFrom,
+  const std::vector<int>& stepIndex, int start, int end, int delta, Eigen::MatrixX3i& M)
+{
+  for (int x = end; x != start; x = cameFrom[x])
+  {
+    const Step& s = steps[cameFrom[x]][stepIndex[x]];
+    M(s.g, s.kg) = mod4(M(s.g, s.kg) + delta);
+    M(s.f, s.kf) = mod4(-M(s.g, s.kg));
+  }
+}
+
+/// Would changing the step's matching by delta quarter turns wrap its residual past +-pi (and so
+/// move a whole turn of index onto a point between)? If not, what it adds to the deviation.
+bool stepCost(const FrameGeometry& geometry, const Eigen::VectorXd& phi, const Eigen::MatrixX3i& M,
+  const Step& s, int delta, double& added)
+{
+  const double r0 = residual(turning(geometry, phi, s.g, s.kg, s.f), M(s.g, s.kg));
+  if (!(std::abs(r0 + delta * Quarter) < Pi))
+  {
+    return false;
+  }
+  added = std::abs(r0 + delta * Quarter) - std::abs(r0);
+  return true;
+}
+}
+
+BranchPointReport optimizeBranchPoints(const Eigen::MatrixX3i& F, const MeshTopology& topo,
+  const FrameGeometry& geometry, const Eigen::MatrixX3d& frameU, FrameTopology& topology,
+  const BranchPointOptions& options)
+{
+  const int nv = topo.numVertices;
+  const double lambda = options.weight;
+  const Eigen::VectorXd phi = vectorAngles(geometry.bases, frameU);
+  BranchPointReport report;
+  report.before = topology.branchPoints;
+  report.singularitiesBefore = topology.singularities;
+  report.costBefore = lambda * topology.singularities + topology.matchingCost;
+  const std::vector<std::vector<Step>> steps = pathSteps(F, topo);
   Eigen::MatrixX3i& M = topology.matching;
+  std::vector<double> dist(nv, 0.0);
+  std::vector<int> cameFrom(nv, -1), stepIndex(nv, -1), stamp(nv, -1);
+  int search = 0;
+
+  // Split every inner singularity of index >= 1/2 into quarters: no grid can follow a field
+  // that turns once around a point (index 1 maps to a corner of angle 0), and index 1/2 makes
+  // a quad vertex of valence 2. Each quarter moves along the cheapest path to a regular point at
+  // least splitDistance edges from the singularity, from the quarters placed before and from
+  // other singularities.
+  std::vector<int> q(nv, 0);
+  for (int v = 0; v < nv; ++v)
+  {
+    q[v] = topo.boundaryVertex[v] ? 0 : static_cast<int>(std::lround(4.0 * topology.index[v]));
+  }
+  if (options.splitDistance > 0)
+  {
+    // hops from the nearest singular point (and later from each placed quarter)
+    std::vector<int> hops(nv, std::numeric_limits<int>::max());
+    auto spreadHops = [&](std::vector<int> front) {
+      for (const int v : front)
+      {
+        hops[v] = 0;
+      }
+      while (!front.empty())
+      {
+        std::vector<int> next;
+        for (const int u : front)
+        {
+          for (const Step& s : steps[u])
+          {
+            if (hops[u] + 1 < hops[s.to] && hops[u] + 1 < options.splitDistance)
+            {
+              hops[s.to] = hops[u] + 1;
+              next.push_back(s.to);
+            }
+          }
+        }
+        front.swap(next);
+      }
+    };
+    std::vector<int> high;
+    std::vector<int> singular;
+    for (int v = 0; v < nv; ++v)
+    {
+      if (q[v] != 0)
+      {
+        singular.push_back(v);
+      }
+      if (q[v] >= 2)
+      {
+        high.push_back(v);
+      }
+    }
+    std::vector<int> pathHops(nv, 0);
+    for (const int a : high)
+    {
+      ++report.split;
+      while (q[a] > 0)
+      {
+        // targets: regular, splitDistance edges from a along the path, and outside every other
+        // singular point's (and placed quarter's) neighbourhood
+        std::fill(hops.begin(), hops.end(), std::numeric_limits<int>::max());
+        std::vector<int> others;
+        for (int v = 0; v < nv; ++v)
+        {
+          if (q[v] != 0 && v != a)
+          {
+            others.push_back(v);
+          }
+        }
+        spreadHops(others);
+        ++search;
+        using Item = std::pair<double, int>;
+        std::priority_queue<Item, std::vector<Item>, std::greater<Item>> queue;
+        dist[a] = 0.0;
+        stamp[a] = search;
+        cameFrom[a] = -1;
+        pathHops[a] = 0;
+        queue.push({ 0.0, a });
+        int visited = 0;
+        int target = -1;
+        while (!queue.empty() && visited < options.maxVisited && target < 0)
+        {
+          const auto [d, u] = queue.top();
+          queue.pop();
+          if (d > dist[u])
+          {
+            continue;
+          }
+          ++visited;
+          if (u != a && pathHops[u] >= options.splitDistance &&
+            hops[u] == std::numeric_limits<int>::max())
+          {
+            target = u;
+            break;
+          }
+          for (int i = 0; i < static_cast<int>(steps[u].size()); ++i)
+          {
+            const Step& s = steps[u][i];
+            double added = 0.0;
+            if (q[s.to] != 0 || !stepCost(geometry, phi, M, s, -1, added))
+            {
+              continue;
+            }
+            const double nd = d + std::max(0.0, added) + 1e-9; // ties: fewer edges
+            if (stamp[s.to] != search || nd < dist[s.to])
+            {
+              stamp[s.to] = search;
+              dist[s.to] = nd;
+              cameFrom[s.to] = u;
+              stepIndex[s.to] = i;
+              pathHops[s.to] = pathHops[u] + 1;
+              queue.push({ nd, s.to });
+            }
+          }
+        }
+        if (target < 0)
+        {
+          ++report.splitFailed;
+          break;
+        }
+        changePath(steps, cameFrom, stepIndex, a, target, -1, M);
+        q[a] -= 1;
+        q[target] += 1;
+        ++report.pathsChanged;
+      }
+    }
+  }
+  if (!(lambda > 0.0))
+  {
+    topology = evaluateMatchings(F, topo, geometry, frameU, M);
+    report.after = topology.branchPoints;
+    report.singularitiesAfter = topology.singularities;
+    report.costAfter = lambda * topology.singularities + topology.matchingCost;
+    return report;
+  }
+
   auto deviationWith = [&](const Step& s, int delta) {
     const int r = mod4(M(s.g, s.kg) + delta);
     return std::abs(residual(turning(geometry, phi, s.g, s.kg, s.f), r));
   };
   // Work in quarter turns: q = 4 index. Changing the matchings along a path from a to b by
   // delta adds delta to q(a) and takes it from q(b).
-  std::vector<int> q(nv, 0);
-  for (int v = 0; v < nv; ++v)
-  {
-    q[v] = topo.boundaryVertex[v] ? 0 : static_cast<int>(std::lround(4.0 * topology.index[v]));
-  }
-
-  std::vector<double> dist(nv, 0.0);
-  std::vector<int> cameFrom(nv, -1), stepIndex(nv, -1), stamp(nv, -1);
-  int search = 0;
   for (int pass = 0; pass < options.maxPasses; ++pass)
   {
     int changed = 0;
@@ -292,14 +454,12 @@ BranchPointReport optimizeBranchPoints(const Eigen::MatrixX3i& F, const MeshTopo
           // Changing this edge by delta quarter turns must move exactly delta/4 of index along
           // the path: not if its residual would wrap past +-pi (possible for delta = +-2, or on
           // an edge an earlier path changed), which would put a whole turn on a point between.
-          const double r0 = residual(turning(geometry, phi, s.g, s.kg, s.f), M(s.g, s.kg));
-          if (!(std::abs(r0 + delta * Quarter) < Pi))
+          double added = 0.0;
+          if (!stepCost(geometry, phi, M, s, delta, added))
           {
             continue;
           }
-          // No wrap, so the changed residual is r0 + delta quarter turns.
-          const double w = std::max(0.0, std::abs(r0 + delta * Quarter) - std::abs(r0));
-          const double nd = d + w;
+          const double nd = d + std::max(0.0, added);
           if (stamp[s.to] != search || nd < dist[s.to])
           {
             stamp[s.to] = search;
@@ -314,12 +474,7 @@ BranchPointReport optimizeBranchPoints(const Eigen::MatrixX3i& F, const MeshTopo
       {
         continue;
       }
-      for (int x = best; x != a; x = cameFrom[x])
-      {
-        const Step& s = steps[cameFrom[x]][stepIndex[x]];
-        M(s.g, s.kg) = mod4(M(s.g, s.kg) + delta);
-        M(s.f, s.kf) = mod4(-M(s.g, s.kg));
-      }
+      changePath(steps, cameFrom, stepIndex, a, best, delta, M);
       q[a] = 0;
       q[best] -= delta;
       ++changed;
@@ -337,4 +492,66 @@ BranchPointReport optimizeBranchPoints(const Eigen::MatrixX3i& F, const MeshTopo
   return report;
 }
 
+Eigen::VectorXd fitFramesToMatchings(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F,
+  const MeshTopology& topo, const FrameGeometry& geometry, const Eigen::MatrixX3d& frameU,
+  const Eigen::MatrixX3i& matching, const Eigen::VectorXd& weight, double lambda)
+{
+  const int nF = static_cast<int>(F.rows());
+  if (frameU.rows() != nF || matching.rows() != nF || topo.numFaces != nF ||
+    (weight.size() != 0 && weight.size() != nF))
+  {
+    throw std::invalid_argument("fitFramesToMatchings: sizes do not match");
+  }
+  if (!(lambda > 0.0 && lambda <= 1.0))
+  {
+    throw std::invalid_argument("fitFramesToMatchings: lambda must lie in (0, 1]");
+  }
+  const Eigen::VectorXd phi = vectorAngles(geometry.bases, frameU);
+  Eigen::VectorXd area(nF);
+  for (int f = 0; f < nF; ++f)
+  {
+    const Eigen::Vector3d a = V.row(F(f, 1)) - V.row(F(f, 0));
+    const Eigen::Vector3d b = V.row(F(f, 2)) - V.row(F(f, 0));
+    area[f] = 0.5 * a.cross(b).norm();
+  }
+  // Diagonal: the alignment term, plus a tiny multiple of the area so that the system stays
+  // definite where no frame is weighted (the field is then fixed up to a common turn).
+  std::vector<Eigen::Triplet<double>> t;
+  t.reserve(static_cast<std::size_t>(nF) * 7);
+  Eigen::VectorXd rhs = Eigen::VectorXd::Zero(nF);
+  for (int f = 0; f < nF; ++f)
+  {
+    const double w = weight.size() ? weight[f] : 0.0;
+    t.emplace_back(f, f, (1.0 - lambda) * area[f] * w + 1e-9 * area[f]);
+  }
+  for (int f = 0; f < nF; ++f)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      const int g = topo.faceNeighbors(f, k);
+      if (g < 0 || g < f || matching(f, k) < 0)
+      {
+        continue;
+      }
+      // residual after the rotations: delta + alpha_g - alpha_f
+      const double delta = residual(turning(geometry, phi, f, k, g), matching(f, k));
+      const double c = 8.0 * lambda * (area[f] + area[g]) / 3.0;
+      t.emplace_back(f, f, c);
+      t.emplace_back(g, g, c);
+      t.emplace_back(f, g, -c);
+      t.emplace_back(g, f, -c);
+      rhs[f] += c * delta;
+      rhs[g] -= c * delta;
+    }
+  }
+  Eigen::SparseMatrix<double> H(nF, nF);
+  H.setFromTriplets(t.begin(), t.end());
+  SpdSolver<double> solver;
+  solver.compute(H);
+  if (solver.info() != Eigen::Success)
+  {
+    throw std::runtime_error("fitFramesToMatchings: the system could not be factored");
+  }
+  return solver.solve(rhs);
+}
 }

@@ -210,6 +210,7 @@ TEST(Matchings, BranchPointOptimizationLowersTheCostAndKeepsPoincareHopf)
     FrameTopology t = computeMatchings(m.s.F, m.topo, m.geometry, U);
     BranchPointOptions opt;
     opt.weight = 1.0;
+    opt.splitDistance = 0; // the merges alone (splits add singular points on purpose)
     const BranchPointReport r = optimizeBranchPoints(m.s.F, m.topo, m.geometry, U, t, opt);
     SCOPED_TRACE(name);
     std::printf("[ %s, random field ] singularities %d -> %d, cost %.2f -> %.2f\n", name,
@@ -254,6 +255,7 @@ TEST(Matchings, BranchPointOptimizationNeverCreatesSingularities)
         const FrameTopology before = t;
         BranchPointOptions opt;
         opt.weight = weight;
+        opt.splitDistance = 0; // the merges alone (splits add singular points on purpose)
         optimizeBranchPoints(m.s.F, m.topo, m.geometry, U, t, opt);
         double largest = 0.0;
         for (int v = 0; v < m.topo.numVertices; ++v)
@@ -275,6 +277,159 @@ TEST(Matchings, BranchPointOptimizationNeverCreatesSingularities)
       }
     }
   }
+}
+
+namespace
+{
+/// A unit sphere of nu meridians and nv - 1 parallels, closed by a fan at each pole (points 0
+/// and 1): poles of valence nu, as in surfaces of revolution.
+Surface latLongSphere(int nu, int nv)
+{
+  Surface s;
+  s.V.resize(2 + nu * (nv - 1), 3);
+  s.V.row(0) << 0, 0, 1;
+  s.V.row(1) << 0, 0, -1;
+  for (int j = 1; j < nv; ++j)
+  {
+    for (int i = 0; i < nu; ++i)
+    {
+      const double theta = Pi * j / nv, phi = 2 * Pi * i / nu;
+      s.V.row(2 + (j - 1) * nu + i) << std::sin(theta) * std::cos(phi),
+        std::sin(theta) * std::sin(phi), std::cos(theta);
+    }
+  }
+  std::vector<Eigen::Vector3i> tris;
+  auto at = [&](int j, int i) { return 2 + (j - 1) * nu + (i % nu); };
+  for (int i = 0; i < nu; ++i)
+  {
+    tris.emplace_back(0, at(1, i), at(1, i + 1));
+    tris.emplace_back(1, at(nv - 1, i + 1), at(nv - 1, i));
+    for (int j = 1; j + 1 < nv; ++j)
+    {
+      tris.emplace_back(at(j, i), at(j + 1, i), at(j + 1, i + 1));
+      tris.emplace_back(at(j, i), at(j + 1, i + 1), at(j, i + 1));
+    }
+  }
+  s.F.resize(static_cast<Eigen::Index>(tris.size()), 3);
+  for (std::size_t f = 0; f < tris.size(); ++f)
+  {
+    s.F.row(static_cast<Eigen::Index>(f)) = tris[f].transpose();
+  }
+  return s;
+}
+
+/// Frames along the parallels about the axis through point `pole`: index +1 at the pole and at
+/// the antipode.
+Eigen::MatrixX3d parallelField(const Mesh& m, int pole)
+{
+  const Eigen::Vector3d axis = m.s.V.row(pole).normalized();
+  Eigen::MatrixX3d U(m.s.F.rows(), 3);
+  for (int f = 0; f < m.s.F.rows(); ++f)
+  {
+    const Eigen::Vector3d c =
+      (m.s.V.row(m.s.F(f, 0)) + m.s.V.row(m.s.F(f, 1)) + m.s.V.row(m.s.F(f, 2))) / 3.0;
+    U.row(f) = axis.cross(c).normalized();
+  }
+  return U;
+}
+
+/// Edge hops between two points.
+int hops(const Mesh& m, int from, int to)
+{
+  std::vector<int> d(m.s.V.rows(), -1);
+  std::vector<int> queue{ from };
+  d[from] = 0;
+  for (std::size_t i = 0; i < queue.size(); ++i)
+  {
+    const int u = queue[i];
+    for (int j = m.topo.ringOffsets[u]; j < m.topo.ringOffsets[u + 1]; ++j)
+    {
+      const int f = m.topo.ringFaces[j];
+      for (int k = 0; k < 3; ++k)
+      {
+        const int w = m.s.F(f, k);
+        if (d[w] < 0)
+        {
+          d[w] = d[u] + 1;
+          queue.push_back(w);
+        }
+      }
+    }
+  }
+  return d[to];
+}
+}
+
+TEST(Matchings, WholeTurnSingularitiesAreSplitIntoQuarters)
+{
+  // No quad grid can follow a field that turns once around a point (index 1): the split moves
+  // its four quarters to separate points, at least splitDistance edges apart.
+  const Mesh m = prepare(latLongSphere(32, 24));
+  const Eigen::MatrixX3d U = parallelField(m, 0);
+  FrameTopology t = computeMatchings(m.s.F, m.topo, m.geometry, U);
+  int whole = 0;
+  for (int v = 0; v < m.topo.numVertices; ++v)
+  {
+    whole += std::abs(t.index[v] - 1.0) < 1e-9;
+  }
+  ASSERT_EQ(whole, 2) << "the field turns once around each pole";
+  ASSERT_EQ(t.singularities, 2);
+  BranchPointOptions opt;
+  const BranchPointReport r = optimizeBranchPoints(m.s.F, m.topo, m.geometry, U, t, opt);
+  EXPECT_EQ(r.split, 2);
+  EXPECT_EQ(r.splitFailed, 0);
+  EXPECT_EQ(t.singularities, 8);
+  EXPECT_EQ(t.branchPoints, 8);
+  std::vector<int> quarters;
+  for (int v = 0; v < m.topo.numVertices; ++v)
+  {
+    if (t.index[v] != 0.0)
+    {
+      EXPECT_NEAR(t.index[v], 0.25, 1e-9) << v;
+      quarters.push_back(v);
+    }
+  }
+  EXPECT_NEAR(t.index.sum(), 2.0, 1e-9);
+  for (std::size_t i = 0; i < quarters.size(); ++i)
+  {
+    for (std::size_t j = i + 1; j < quarters.size(); ++j)
+    {
+      EXPECT_GE(hops(m, quarters[i], quarters[j]), opt.splitDistance);
+    }
+  }
+  // splitDistance 0: left alone
+  FrameTopology kept = computeMatchings(m.s.F, m.topo, m.geometry, U);
+  opt.splitDistance = 0;
+  EXPECT_EQ(optimizeBranchPoints(m.s.F, m.topo, m.geometry, U, kept, opt).split, 0);
+  EXPECT_EQ(kept.singularities, 2);
+}
+
+TEST(Matchings, FittingFramesToChangedMatchingsKeepsIndicesAndSpreadsTheTurn)
+{
+  // After the split the matchings along the paths disagree with the frames by about a quarter
+  // turn; the fit turns the frames so that every edge agrees within a small angle, and changes
+  // neither matchings nor indices.
+  const Mesh m = prepare(latLongSphere(32, 24));
+  const Eigen::MatrixX3d U = parallelField(m, 0);
+  FrameTopology t = computeMatchings(m.s.F, m.topo, m.geometry, U);
+  optimizeBranchPoints(m.s.F, m.topo, m.geometry, U, t);
+  const double before = t.deviation.cwiseAbs().maxCoeff();
+  const Eigen::VectorXd alpha =
+    fitFramesToMatchings(m.s.V, m.s.F, m.topo, m.geometry, U, t.matching, Eigen::VectorXd());
+  Eigen::MatrixX3d fitted = U;
+  Eigen::MatrixX3d V = U;
+  rotateFrames(m.geometry.bases, alpha, fitted, V);
+  const FrameTopology after = evaluateMatchings(m.s.F, m.topo, m.geometry, fitted, t.matching);
+  EXPECT_EQ((after.index - t.index).cwiseAbs().maxCoeff(), 0.0);
+  EXPECT_EQ(computeMatchings(m.s.F, m.topo, m.geometry, fitted).matching, t.matching)
+    << "the fitted field's own smallest-angle matchings are the given ones";
+  std::printf(
+    "largest matched angle %.3f -> %.3f rad\n", before, after.deviation.cwiseAbs().maxCoeff());
+  EXPECT_GT(before, 1.0);
+  EXPECT_LT(after.deviation.cwiseAbs().maxCoeff(), 0.35);
+  EXPECT_THROW(fitFramesToMatchings(
+                 m.s.V, m.s.F, m.topo, m.geometry, U.topRows(3), t.matching, Eigen::VectorXd()),
+    std::invalid_argument);
 }
 
 TEST(Matchings, RejectsMatchingsThatAreNotInverse)
