@@ -61,8 +61,34 @@ constexpr const char* BranchPointCount = "BranchPointCount";
 /// field, 1 x double, 2 tuples: sum over inner edges of the matched frames' angle (C_ij), before
 /// and after the optimization.
 constexpr const char* MatchingCost = "MatchingCost";
-/// point data of the branch-point output: the point's id in the surface.
+/// point data of the branch-point output (and of vtkQuadCoverSolver's SplitSeams output): the
+/// point's id in the surface.
 constexpr const char* SurfacePointId = "SurfacePointId";
+
+// ---- vtkQuadCoverSolver ----
+/// cell, 6 x double: the map (u0, v0, u1, v1, u2, v2) at the triangle's points, in grid units.
+constexpr const char* CornerUV = "CornerUV";
+/// cell, 3 x unsigned char: 1 where edge k (point k to point k+1) is on the cut graph.
+constexpr const char* Seam = "Seam";
+/// point, 2 x double, SplitSeams output only: (u, v) of each point of the cut-open surface, the
+/// active texture coordinates.
+constexpr const char* UV = "UV";
+/// field, 1 x double: world length of one grid unit (the quads' edge length).
+constexpr const char* GridScale = "GridScale";
+/// field, 1 x int, 3 tuples: triangles with a flipped or degenerate (u, v) image in the
+/// continuous minimizer, after rounding, and in the output map (after untangling).
+constexpr const char* FlippedTriangles = "FlippedTriangles";
+/// field, 1 x double, 3 tuples: sum_f A_f |grad phi - K|^2 / (A |K|^2) of the continuous
+/// minimizer, after rounding, and of the output map (0 is a perfect fit, 1 a constant map).
+constexpr const char* ParameterizationEnergy = "ParameterizationEnergy";
+/// field, 1 x double, one tuple per sparse factorization and solve: seconds.
+constexpr const char* SolveSeconds = "SolveSeconds";
+/// field, 1 x int: edges on the cut graph.
+constexpr const char* SeamEdgeCount = "SeamEdgeCount";
+/// field, 1 x int, 2 tuples: branch points, and those mapped to a grid point.
+constexpr const char* BranchPointsOnGrid = "BranchPointsOnGrid";
+/// field, 1 x double: largest distance of a seam translation from Z^2 (grid units).
+constexpr const char* SeamTranslationError = "SeamTranslationError";
 }
 
 #endif

@@ -17,6 +17,7 @@
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
 #include "vtkQuadCoverArrayNames.h"
+#include "vtkQuadCoverSolver.h"
 #include "vtkSmartPointer.h"
 #include "vtkStringOutputWindow.h"
 
@@ -36,7 +37,7 @@ namespace
 const char* const StageNames[] = { "curvature", "smooth", "matching", "param", "quads" };
 const char* const StageFilters[] = { "vtkCurvatureFrames", "vtkFrameSmoother", "vtkMatchingBuilder",
   "vtkQuadCoverSolver", "vtkQuadExtractor" };
-const int BuiltStages = 3; // the first three exist; the others come with their issues
+const int BuiltStages = 4; // the extractor comes with its issue
 
 /// A numeric option of one stage: its flag, meaning, range and default, all but the flag and
 /// meaning taken from the filter it sets (its vtkSetClampMacro range and initial value).
@@ -57,7 +58,7 @@ void Usage(std::ostream& os, const std::vector<NumberOption>& numbers)
         "  INPUT            .obj .ply .stl .vtp or .vtk surface\n"
         "  -o OUTPUT        .vtp or .vtk (all arrays kept), .obj or .ply (geometry only)\n"
         "  --stage STAGE    curvature|smooth|matching|param|quads (default: the last built one,\n"
-        "                   now matching)\n"
+        "                   now param)\n"
         "  --stats FILE     write a JSON summary: input size, repairs, seconds per stage, and\n"
         "                   what each stage counts\n"
         "  -v, --verbose    seconds per stage, and VTK's own messages (progress shows\n"
@@ -67,6 +68,10 @@ void Usage(std::ostream& os, const std::vector<NumberOption>& numbers)
     "  --no-features      do not hold frames along sharp edges\n"
     "  --no-boundary-alignment  do not hold frames along the boundary\n",
     "  --no-branch-optimization  keep the smallest-angle matchings\n",
+    "  --no-pure-quads    only seam translations integer (branch points may lie mid-cell)\n"
+    "  --rounding MODE    greedy|simple|none (default greedy)\n"
+    "  --split-seams      write the surface cut open along the seams, with UV texture\n"
+    "                     coordinates (view it with a checkerboard texture)\n",
   };
   for (int stage = 0; stage < BuiltStages; ++stage)
   {
@@ -166,6 +171,9 @@ int main(int argc, char* argv[])
   vtkNew<vtkCurvatureFrames> curvature;
   vtkNew<vtkFrameSmoother> smoother;
   vtkNew<vtkMatchingBuilder> matching;
+  vtkNew<vtkQuadCoverSolver> solver;
+  bool pureQuads = true, splitSeams = false;
+  int rounding = solver->GetRoundingMode();
   std::vector<NumberOption> numbers = {
     { 0, "--radius R", "neighbourhood radius in median edge lengths",
       curvature->GetNeighborhoodRadiusMinValue(), curvature->GetNeighborhoodRadiusMaxValue(),
@@ -186,6 +194,16 @@ int main(int argc, char* argv[])
     { 2, "--branch-weight L", "cost of a singular point in radians",
       matching->GetBranchPointWeightMinValue(), matching->GetBranchPointWeightMaxValue(),
       matching->GetBranchPointWeight(), false },
+    { 3, "--target-quads N", "about N quads (when no --edge-length)",
+      double(solver->GetTargetQuadCountMinValue()), double(solver->GetTargetQuadCountMaxValue()),
+      double(solver->GetTargetQuadCount()), true },
+    { 3, "--edge-length L", "quad edge length in world units, 0 = from --target-quads",
+      solver->GetTargetEdgeLengthMinValue(), solver->GetTargetEdgeLengthMaxValue(),
+      solver->GetTargetEdgeLength(), false },
+    { 3, "--untangle N", "rounds of untangling per flipped neighbourhood",
+      double(solver->GetMaximumUntangleRoundsMinValue()),
+      double(solver->GetMaximumUntangleRoundsMaxValue()),
+      double(solver->GetMaximumUntangleRounds()), true },
   };
   for (int i = 1; i < argc; ++i)
   {
@@ -196,7 +214,8 @@ int main(int argc, char* argv[])
       const std::string flag = n.flag;
       number = a == flag.substr(0, flag.find(' ')) ? &n : number;
     }
-    const bool takesText = a == "-o" || a == "--output" || a == "--stage" || a == "--stats";
+    const bool takesText =
+      a == "-o" || a == "--output" || a == "--stage" || a == "--stats" || a == "--rounding";
     if ((number || takesText) && i + 1 >= argc)
     {
       return UsageError(a + " needs a value");
@@ -235,6 +254,24 @@ int main(int argc, char* argv[])
       boundary = false;
     else if (a == "--no-branch-optimization")
       optimizeBranches = false;
+    else if (a == "--pure-quads")
+      pureQuads = true;
+    else if (a == "--no-pure-quads")
+      pureQuads = false;
+    else if (a == "--split-seams")
+      splitSeams = true;
+    else if (a == "--rounding")
+    {
+      const std::string mode = argv[++i];
+      if (mode == "greedy")
+        rounding = vtkQuadCoverSolver::ROUNDING_GREEDY;
+      else if (mode == "simple")
+        rounding = vtkQuadCoverSolver::ROUNDING_SIMPLE;
+      else if (mode == "none")
+        rounding = vtkQuadCoverSolver::ROUNDING_NONE;
+      else
+        return UsageError("invalid value '" + mode + "' for --rounding (greedy, simple, none)");
+    }
     else if (!a.empty() && a[0] == '-' && a != "-")
       return UsageError("unknown option " + a);
     else if (input.empty())
@@ -270,7 +307,7 @@ int main(int argc, char* argv[])
     if (found >= BuiltStages)
     {
       return UsageError("stage '" + stage + "' (" + StageFilters[found] +
-        ") is not built yet; built: curvature, smooth, matching");
+        ") is not built yet; built: curvature, smooth, matching, param");
     }
     lastStage = found;
   }
@@ -326,7 +363,14 @@ int main(int argc, char* argv[])
   matching->SetInputConnection(smoother->GetOutputPort());
   matching->SetOptimizeBranchPoints(optimizeBranches);
   matching->SetBranchPointWeight(numbers[5].value);
-  vtkAlgorithm* const pipeline[] = { curvature, smoother, matching };
+  solver->SetInputConnection(matching->GetOutputPort());
+  solver->SetTargetQuadCount(static_cast<int>(numbers[6].value));
+  solver->SetTargetEdgeLength(numbers[7].value);
+  solver->SetMaximumUntangleRounds(static_cast<int>(numbers[8].value));
+  solver->SetPureQuads(pureQuads);
+  solver->SetRoundingMode(rounding);
+  solver->SetSplitSeams(splitSeams);
+  vtkAlgorithm* const pipeline[] = { curvature, smoother, matching, solver };
   vtkPolyData* result = nullptr;
   for (int s = 0; s <= lastStage; ++s)
   {
@@ -446,6 +490,27 @@ int main(int argc, char* argv[])
         js << (i ? ", " : "") << JsonString(key) << ": " << table->GetComponent(i, 1);
       }
       js << "}}";
+    }
+    if (lastStage >= 3)
+    {
+      js << ",\n  \"param\": {\"grid_size\": " << field(solver, names::GridScale, 0)
+         << ", \"seam_edges\": " << field(solver, names::SeamEdgeCount, 0)
+         << ", \"branch_points\": " << field(solver, names::BranchPointsOnGrid, 0)
+         << ", \"branch_points_on_grid\": " << field(solver, names::BranchPointsOnGrid, 1)
+         << ", \"flipped_continuous\": " << field(solver, names::FlippedTriangles, 0)
+         << ", \"flipped_rounded\": " << field(solver, names::FlippedTriangles, 1)
+         << ", \"flipped\": " << field(solver, names::FlippedTriangles, 2)
+         << ", \"energy_continuous\": " << field(solver, names::ParameterizationEnergy, 0)
+         << ", \"energy_rounded\": " << field(solver, names::ParameterizationEnergy, 1)
+         << ", \"energy\": " << field(solver, names::ParameterizationEnergy, 2)
+         << ", \"seam_translation_error\": " << field(solver, names::SeamTranslationError, 0)
+         << ", \"solve_seconds\": [";
+      vtkDataArray* solves = solver->GetOutput()->GetFieldData()->GetArray(names::SolveSeconds);
+      for (vtkIdType i = 0; solves && i < solves->GetNumberOfTuples(); ++i)
+      {
+        js << (i ? ", " : "") << solves->GetTuple1(i);
+      }
+      js << "]}";
     }
     js << "\n}\n";
     std::ofstream out(statsPath);

@@ -2,6 +2,8 @@
 """Render a QuadCover result to a PNG: the surface coloured by a cell array, with the guidance
 frame field drawn as a small cross (FrameU, FrameV) at every triangle's centre, and (after the
 matching stage) the singular points as balls: red for positive index, blue for negative.
+A surface with texture coordinates (the solver's --split-seams output) is drawn with a
+checkerboard of one square per grid cell instead of the frames, so the parameter lines show.
 
     render.py INPUT.vtp -o OUTPUT.png [--array FrameWeight] [--no-frames] [--size 1400x1000]
               [--azimuth DEG] [--elevation DEG]
@@ -68,6 +70,58 @@ def frame_segments(surface, names, scale):
     return segments
 
 
+def flipped_triangles(surface):
+    """The triangles whose CornerUV image is flipped or degenerate, or None."""
+    corner_uv = surface.GetCellData().GetArray("CornerUV")
+    if corner_uv is None:
+        return None
+    uv = numpy_support.vtk_to_numpy(corner_uv).astype(float)
+    e1 = uv[:, 2:4] - uv[:, 0:2]
+    e2 = uv[:, 4:6] - uv[:, 0:2]
+    chosen = np.nonzero(e1[:, 0] * e2[:, 1] - e1[:, 1] * e2[:, 0] <= 0)[0]
+    if len(chosen) == 0:
+        return None
+    ids = vtk.vtkIdTypeArray()
+    ids.SetNumberOfTuples(len(chosen))
+    for i, c in enumerate(chosen):
+        ids.SetValue(i, int(c))
+    node = vtk.vtkSelectionNode()
+    node.SetFieldType(vtk.vtkSelectionNode.CELL)
+    node.SetContentType(vtk.vtkSelectionNode.INDICES)
+    node.SetSelectionList(ids)
+    selection = vtk.vtkSelection()
+    selection.AddNode(node)
+    extract = vtk.vtkExtractSelection()
+    extract.SetInputData(0, surface)
+    extract.SetInputData(1, selection)
+    geometry = vtk.vtkGeometryFilter()
+    geometry.SetInputConnection(extract.GetOutputPort())
+    geometry.Update()
+    return geometry.GetOutput()
+
+
+def checkerboard(pixels=64):
+    """A 2 x 2 checkerboard texture: with (u, v) in grid units and repeat on, one square per grid
+    cell, with thin dark lines on the integer grid lines."""
+    size = 2 * pixels
+    image = np.empty((size, size, 3), dtype=np.uint8)
+    cells = (np.arange(size) // pixels)
+    light = (cells[:, None] + cells[None, :]) % 2 == 0
+    image[light] = (235, 235, 225)
+    image[~light] = (175, 195, 225)
+    line = (np.arange(size) % pixels) < 2
+    image[line[:, None] | line[None, :]] = (40, 40, 40)
+    data = vtk.vtkImageData()
+    data.SetDimensions(size, size, 1)
+    data.GetPointData().SetScalars(numpy_support.numpy_to_vtk(image.reshape(-1, 3), deep=True))
+    texture = vtk.vtkTexture()
+    texture.SetInputData(data)
+    texture.RepeatOn()
+    texture.InterpolateOn()
+    texture.MipmapOn()
+    return texture
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("input")
@@ -116,9 +170,30 @@ def main():
     actor = vtk.vtkActor()
     actor.SetMapper(mapper)
     actor.GetProperty().SetColor(0.85, 0.85, 0.8)
+    textured = surface.GetPointData().GetTCoords() is not None
+    if textured:
+        # the texture holds 2 x 2 cells: texture coordinates (u, v) / 2
+        uv = numpy_support.vtk_to_numpy(surface.GetPointData().GetTCoords()).astype(float)
+        half = numpy_support.numpy_to_vtk(0.5 * uv, deep=True)
+        half.SetName("HalfUV")
+        surface.GetPointData().SetTCoords(half)
+        mapper.ScalarVisibilityOff()
+        for a in renderer.GetActors2D():
+            renderer.RemoveActor2D(a)
+        actor.SetTexture(checkerboard())
+        actor.GetProperty().SetColor(1.0, 1.0, 1.0)
     renderer.AddActor(actor)
+    flipped = flipped_triangles(surface)
+    if flipped is not None:
+        flipped_mapper = vtk.vtkPolyDataMapper()
+        flipped_mapper.SetInputData(flipped)
+        flipped_mapper.ScalarVisibilityOff()
+        flipped_actor = vtk.vtkActor()
+        flipped_actor.SetMapper(flipped_mapper)
+        flipped_actor.GetProperty().SetColor(0.9, 0.1, 0.1)
+        renderer.AddActor(flipped_actor)
 
-    if not args.no_frames:
+    if not args.no_frames and not textured:
         # Segment half-length: 40% of the mean edge length, from the mean triangle area.
         quality = vtk.vtkCellSizeFilter()
         quality.SetInputData(surface)

@@ -11,6 +11,7 @@
 #include <chrono>
 #include <cmath>
 #include <deque>
+#include <limits>
 #include <numeric>
 #include <stdexcept>
 #include <string>
@@ -230,6 +231,285 @@ Eigen::MatrixXd solveSpd(const SparseMatrix& A, const Eigen::MatrixXd& B, const 
   }
   return X;
 }
+
+/**
+ * Removes flipped triangles from a map x = (real unknowns, integer unknowns) by moving only real
+ * unknowns near them: the foldover-free untangling of Garanzha et al. (2021). Each triangle's
+ * Jacobian J (relative to the grid, so 1 is a perfect unit cell) pays
+ *   (1 - theta) tr(J^T J) / chi(det J) + theta (det^2 J + 1) / chi(det J),
+ *   chi(d) = (d + sqrt(eps^2 + d^2)) / 2,
+ * a smooth stand-in for a barrier against det J <= 0 that stays finite on flipped triangles; eps
+ * shrinks with the most negative determinant, so the minimizer (L-BFGS) becomes foldover-free.
+ * The unknowns moved are those of the triangles within `rings` rings of a flipped one; every
+ * triangle they touch is in the energy. Returns the triangles still flipped among those.
+ */
+struct Untangler
+{
+  const Eigen::SparseMatrix<double, Eigen::RowMajor>& Dr; // rows of D: 4 per triangle
+  const SparseMatrix& Dc;                                 // the same, by column
+  const Eigen::VectorXd& sqrtArea;                        // per triangle, 0 if skipped
+  double gridScale;                                       // h: J relative to the unit cell
+  int numReal;
+  double theta = 0.25;
+
+  Eigen::Matrix2d jacobian(int f, const Eigen::VectorXd& x) const
+  {
+    Eigen::Matrix2d J;
+    for (int i = 0; i < 4; ++i)
+    {
+      double value = 0.0;
+      for (Eigen::SparseMatrix<double, Eigen::RowMajor>::InnerIterator it(Dr, 4 * f + i); it; ++it)
+      {
+        value += it.value() * x[it.col()];
+      }
+      J(i / 2, i % 2) = value * gridScale / sqrtArea[f];
+    }
+    return J;
+  }
+
+  /// Energy of the listed triangles; with `gradient`, adds dE/dx.
+  double energy(const std::vector<int>& faces, const Eigen::VectorXd& x, double eps,
+    Eigen::VectorXd* gradient) const
+  {
+    double total = 0.0;
+    for (const int f : faces)
+    {
+      const Eigen::Matrix2d J = jacobian(f, x);
+      const double det = J.determinant();
+      const double root = std::sqrt(eps * eps + det * det);
+      const double chi = 0.5 * (det + root);
+      const double chiPrime = 0.5 * (1.0 + det / root);
+      const double trace = J.squaredNorm();
+      const double area = sqrtArea[f] * sqrtArea[f];
+      total += area * ((1 - theta) * trace / chi + theta * (det * det + 1) / chi);
+      if (gradient)
+      {
+        Eigen::Matrix2d dDet;
+        dDet << J(1, 1), -J(1, 0), -J(0, 1), J(0, 0);
+        const Eigen::Matrix2d dE =
+          (1 - theta) * (2.0 * J / chi - trace * chiPrime / (chi * chi) * dDet) +
+          theta * (2.0 * det / chi - (det * det + 1) * chiPrime / (chi * chi)) * dDet;
+        for (int i = 0; i < 4; ++i)
+        {
+          const double g = area * dE(i / 2, i % 2) * gridScale / sqrtArea[f];
+          for (Eigen::SparseMatrix<double, Eigen::RowMajor>::InnerIterator it(Dr, 4 * f + i); it;
+               ++it)
+          {
+            (*gradient)[it.col()] += g * it.value();
+          }
+        }
+      }
+    }
+    return total;
+  }
+
+  /// Untangles around `flipped` (faces), moving real unknowns; returns the faces still flipped.
+  std::vector<int> run(const MeshTopology& topo, const Eigen::MatrixX3i& F,
+    const std::vector<int>& flipped, int rings, int maxRounds, Eigen::VectorXd& x) const
+  {
+    const int nF = static_cast<int>(F.rows());
+    // the region: faces within `rings` vertex rings of a flipped face
+    std::vector<char> inRegion(nF, 0);
+    std::vector<int> front = flipped;
+    for (const int f : flipped)
+    {
+      inRegion[f] = 1;
+    }
+    for (int ring = 0; ring < rings && !front.empty(); ++ring)
+    {
+      std::vector<int> next;
+      for (const int f : front)
+      {
+        for (int k = 0; k < 3; ++k)
+        {
+          const int p = F(f, k);
+          for (int i = topo.ringOffsets[p]; i < topo.ringOffsets[p + 1]; ++i)
+          {
+            const int g = topo.ringFaces[i];
+            if (!inRegion[g])
+            {
+              inRegion[g] = 1;
+              next.push_back(g);
+            }
+          }
+        }
+      }
+      front.swap(next);
+    }
+    // free unknowns: the real ones the region's rows use; energy: every face they touch
+    std::vector<int> freeColumns;
+    std::vector<char> isFree(Dc.cols(), 0);
+    for (int f = 0; f < nF; ++f)
+    {
+      if (!inRegion[f] || sqrtArea[f] <= 0)
+      {
+        continue;
+      }
+      for (int i = 0; i < 4; ++i)
+      {
+        for (Eigen::SparseMatrix<double, Eigen::RowMajor>::InnerIterator it(Dr, 4 * f + i); it;
+             ++it)
+        {
+          if (it.col() < numReal && !isFree[it.col()])
+          {
+            isFree[it.col()] = 1;
+            freeColumns.push_back(static_cast<int>(it.col()));
+          }
+        }
+      }
+    }
+    std::vector<char> inEnergy(nF, 0);
+    std::vector<int> faces;
+    for (const int c : freeColumns)
+    {
+      for (SparseMatrix::InnerIterator it(Dc, c); it; ++it)
+      {
+        const int f = static_cast<int>(it.row() / 4);
+        if (!inEnergy[f] && sqrtArea[f] > 0)
+        {
+          inEnergy[f] = 1;
+          faces.push_back(f);
+        }
+      }
+    }
+    const int m = static_cast<int>(freeColumns.size());
+    auto minDet = [&](const Eigen::VectorXd& at) {
+      double lowest = std::numeric_limits<double>::max();
+      for (const int f : faces)
+      {
+        lowest = std::min(lowest, jacobian(f, at).determinant());
+      }
+      return lowest;
+    };
+    auto restrictTo = [&](const Eigen::VectorXd& full) {
+      Eigen::VectorXd y(m);
+      for (int i = 0; i < m; ++i)
+      {
+        y[i] = full[freeColumns[i]];
+      }
+      return y;
+    };
+    Eigen::VectorXd full = x;
+    Eigen::VectorXd gradFull = Eigen::VectorXd::Zero(x.size());
+    auto evaluate = [&](const Eigen::VectorXd& y, double eps, Eigen::VectorXd& g) {
+      for (int i = 0; i < m; ++i)
+      {
+        full[freeColumns[i]] = y[i];
+      }
+      for (const int c : freeColumns)
+      {
+        gradFull[c] = 0.0;
+      }
+      const double e = energy(faces, full, eps, &gradFull);
+      g = restrictTo(gradFull);
+      return e;
+    };
+    Eigen::VectorXd y = restrictTo(x);
+    double previous = std::numeric_limits<double>::max();
+    for (int round = 0; round < maxRounds && m > 0; ++round)
+    {
+      for (int i = 0; i < m; ++i)
+      {
+        full[freeColumns[i]] = y[i];
+      }
+      const double lowest = minDet(full);
+      const double eps = lowest < 0 ? std::sqrt(1e-8 + 0.04 * lowest * lowest) : 1e-8;
+      // L-BFGS, 8 pairs, Armijo backtracking
+      std::vector<Eigen::VectorXd> S, Y;
+      Eigen::VectorXd g;
+      double e = evaluate(y, eps, g);
+      for (int it = 0; it < 200; ++it)
+      {
+        Eigen::VectorXd d = -g;
+        std::vector<double> alpha(S.size());
+        for (int j = static_cast<int>(S.size()) - 1; j >= 0; --j)
+        {
+          alpha[j] = S[j].dot(d) / Y[j].dot(S[j]);
+          d -= alpha[j] * Y[j];
+        }
+        if (!S.empty())
+        {
+          d *= S.back().dot(Y.back()) / Y.back().squaredNorm();
+        }
+        for (std::size_t j = 0; j < S.size(); ++j)
+        {
+          const double beta = Y[j].dot(d) / Y[j].dot(S[j]);
+          d += S[j] * (alpha[j] - beta);
+        }
+        double slope = g.dot(d);
+        if (!(slope < 0))
+        {
+          d = -g;
+          slope = -g.squaredNorm();
+          S.clear();
+          Y.clear();
+        }
+        double step = S.empty() ? std::min(1.0, 1.0 / std::max(1e-300, g.norm())) : 1.0;
+        Eigen::VectorXd gNew;
+        double eNew = e;
+        Eigen::VectorXd yNew;
+        bool moved = false;
+        for (int tries = 0; tries < 40; ++tries, step *= 0.5)
+        {
+          yNew = y + step * d;
+          eNew = evaluate(yNew, eps, gNew);
+          if (std::isfinite(eNew) && eNew <= e + 1e-4 * step * slope)
+          {
+            moved = true;
+            break;
+          }
+        }
+        if (!moved)
+        {
+          break;
+        }
+        S.push_back(yNew - y);
+        Y.push_back(gNew - g);
+        if (S.back().dot(Y.back()) <= 1e-300)
+        {
+          S.pop_back();
+          Y.pop_back();
+        }
+        if (S.size() > 8)
+        {
+          S.erase(S.begin());
+          Y.erase(Y.begin());
+        }
+        const double change = e - eNew;
+        y = yNew;
+        g = gNew;
+        e = eNew;
+        if (change <= 1e-9 * std::abs(e))
+        {
+          break;
+        }
+      }
+      for (int i = 0; i < m; ++i)
+      {
+        full[freeColumns[i]] = y[i];
+      }
+      const double after = minDet(full);
+      if (after > 0 && previous - e <= 1e-3 * std::abs(e))
+      {
+        break;
+      }
+      previous = e;
+    }
+    for (int i = 0; i < m; ++i)
+    {
+      x[freeColumns[i]] = y[i];
+    }
+    std::vector<int> still;
+    for (const int f : faces)
+    {
+      if (!(jacobian(f, x).determinant() > 0))
+      {
+        still.push_back(f);
+      }
+    }
+    return still;
+  }
+};
 }
 
 double gridSizeForQuadCount(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F, double quads)
@@ -514,6 +794,7 @@ Parameterization computeParameterization(const Eigen::MatrixX3d& V, const Eigen:
   // ---- the energy: 4 rows per triangle, sqrt(A) (grad u - U'/h, grad v - V'/h) ----
   const double scale = 1.0 / options.gridSize;
   double totalArea = 0.0;
+  Eigen::VectorXd faceArea = Eigen::VectorXd::Zero(nF);
   std::vector<Eigen::Triplet<double>> triplets;
   triplets.reserve(static_cast<std::size_t>(nF) * 14);
   Eigen::VectorXd rhs = Eigen::VectorXd::Zero(4 * static_cast<Eigen::Index>(nF));
@@ -534,6 +815,7 @@ Parameterization computeParameterization(const Eigen::MatrixX3d& V, const Eigen:
       continue;
     }
     totalArea += 0.5 * twiceArea;
+    faceArea[f] = 0.5 * twiceArea;
     const double w = std::sqrt(0.5 * twiceArea);
     const double angle = theta[f] + out.comb[f] * Pi / 2;
     const double c = std::cos(angle);
@@ -601,10 +883,11 @@ Parameterization computeParameterization(const Eigen::MatrixX3d& V, const Eigen:
   auto start = std::chrono::steady_clock::now();
   const SparseMatrix H = (D.transpose() * D).pruned();
   const bool round = options.rounding != Rounding::None && numInteger > 0;
-  Eigen::MatrixXd B(n, 1 + (round ? numInteger : 0));
+  const bool greedy = round && options.rounding == Rounding::Greedy;
+  Eigen::MatrixXd B(n, 1 + (greedy ? numInteger : 0));
   B.setZero();
   B.col(0) = D.transpose() * rhs;
-  for (int j = 0; round && j < numInteger; ++j)
+  for (int j = 0; greedy && j < numInteger; ++j)
   {
     B(numReal + j, 1 + j) = 1.0; // columns of H^-1 at the integer unknowns
   }
@@ -621,15 +904,105 @@ Parameterization computeParameterization(const Eigen::MatrixX3d& V, const Eigen:
   if (round)
   {
     Eigen::VectorXd xi = x.tail(numInteger);
-    Eigen::MatrixXd S = X.block(numReal, 1, numInteger, numInteger);
+    Eigen::MatrixXd S =
+      greedy ? Eigen::MatrixXd(X.block(numReal, 1, numInteger, numInteger)) : Eigen::MatrixXd();
     X.resize(0, 0);
-    fixedValues = xi.array().round().matrix();
-    if (options.rounding == Rounding::Greedy)
+    // Two branch points of one triangle must not land on the same grid point (their triangles
+    // would collapse): the differences of their (u, v), in integer unknowns.
+    struct Pair
     {
-      std::vector<char> fixed(numInteger, 0);
-      for (int step = 0; step < numInteger; ++step)
+      Expr du, dv;
+    };
+    std::vector<Pair> pairs;
+    std::vector<std::vector<int>> pairsOf(numInteger);
+    if (options.pureQuads)
+    {
+      auto local = [&](const Expr& a, const Expr& b) {
+        Expr d = a;
+        for (const auto& t : b)
+        {
+          d.emplace_back(t.first, -t.second);
+        }
+        normalize(d);
+        for (auto& t : d)
+        {
+          t.first -= numReal;
+        }
+        return d;
+      };
+      for (int f = 0; f < nF; ++f)
       {
-        int best = -1;
+        for (int k = 0; k < 3; ++k)
+        {
+          const int sa = out.cornerSector[3 * f + k];
+          const int sb = out.cornerSector[3 * f + (k + 1) % 3];
+          if (!branch[F(f, k)] || !branch[F(f, (k + 1) % 3)])
+          {
+            continue;
+          }
+          Pair pair{ local(sectorExpr[2 * sa], sectorExpr[2 * sb]),
+            local(sectorExpr[2 * sa + 1], sectorExpr[2 * sb + 1]) };
+          bool integral = true;
+          for (const Expr* e : { &pair.du, &pair.dv })
+          {
+            for (const auto& t : *e)
+            {
+              integral = integral && t.first >= 0;
+            }
+          }
+          if (integral)
+          {
+            for (const Expr* e : { &pair.du, &pair.dv })
+            {
+              for (const auto& t : *e)
+              {
+                pairsOf[t.first].push_back(static_cast<int>(pairs.size()));
+              }
+            }
+            pairs.push_back(std::move(pair));
+          }
+        }
+      }
+    }
+    std::vector<char> fixed(numInteger, 0);
+    // Fixing j to `value`: does it complete a pair at the same point?
+    auto collides = [&](int j, double value) {
+      for (const int p : pairsOf[j])
+      {
+        bool complete = true;
+        double du = 0.0;
+        double dv = 0.0;
+        for (int c = 0; c < 2; ++c)
+        {
+          for (const auto& t : c == 0 ? pairs[p].du : pairs[p].dv)
+          {
+            complete = complete && (fixed[t.first] || t.first == j);
+            (c == 0 ? du : dv) += t.second * (t.first == j ? value : fixedValues[t.first]);
+          }
+        }
+        if (complete && std::abs(du) < 0.5 && std::abs(dv) < 0.5)
+        {
+          return true;
+        }
+      }
+      return false;
+    };
+    // The nearest integer, or the next nearest when the nearest collapses a pair.
+    auto choose = [&](int j, double x) {
+      const double nearest = std::round(x);
+      if (!collides(j, nearest))
+      {
+        return nearest;
+      }
+      ++out.separatedBranchPoints;
+      return x >= nearest ? nearest + 1.0 : nearest - 1.0;
+    };
+    fixedValues = xi.array().round().matrix();
+    for (int step = 0; step < numInteger; ++step)
+    {
+      int best = step; // Simple: in order, each from the continuous minimizer
+      if (greedy)
+      {
         double bestDistance = 2.0;
         for (int j = 0; j < numInteger; ++j)
         {
@@ -640,9 +1013,12 @@ Parameterization computeParameterization(const Eigen::MatrixX3d& V, const Eigen:
             bestDistance = distance;
           }
         }
-        fixed[best] = 1;
-        const double value = std::round(xi[best]);
-        fixedValues[best] = value;
+      }
+      const double value = choose(best, xi[best]);
+      fixed[best] = 1;
+      fixedValues[best] = value;
+      if (greedy)
+      {
         const double pivot = S(best, best);
         if (pivot > 1e-14 * std::max(1.0, S.diagonal().cwiseAbs().maxCoeff()))
         {
@@ -655,8 +1031,7 @@ Parameterization computeParameterization(const Eigen::MatrixX3d& V, const Eigen:
     }
   }
 
-  // ---- the real unknowns with the integers fixed, stiffening flipped triangles ----
-  Eigen::VectorXd weight = Eigen::VectorXd::Ones(4 * static_cast<Eigen::Index>(nF));
+  // ---- the real unknowns with the integers fixed, then flipped triangles untangled ----
   auto solveFixed = [&]() {
     const auto started = std::chrono::steady_clock::now();
     Eigen::VectorXd result(n);
@@ -667,12 +1042,11 @@ Parameterization computeParameterization(const Eigen::MatrixX3d& V, const Eigen:
     const int free = round ? numReal : n;
     if (free > 0)
     {
-      const SparseMatrix Dw = weight.asDiagonal() * D;
-      const SparseMatrix Dfree = Dw.leftCols(free);
-      Eigen::VectorXd r = weight.asDiagonal() * rhs;
+      const SparseMatrix Dfree = D.leftCols(free);
+      Eigen::VectorXd r = rhs;
       if (round)
       {
-        r -= Dw.rightCols(numInteger) * fixedValues;
+        r -= D.rightCols(numInteger) * fixedValues;
       }
       const SparseMatrix Hfree = (Dfree.transpose() * Dfree).pruned();
       Eigen::MatrixXd b = Dfree.transpose() * r;
@@ -688,33 +1062,23 @@ Parameterization computeParameterization(const Eigen::MatrixX3d& V, const Eigen:
   out.energyRounded = energyOf(x);
   std::vector<int> flipped = flippedFaces(uvOf(x));
   out.flippedRounded = static_cast<int>(flipped.size());
-  while (!flipped.empty() && out.stiffeningIterations < options.maxStiffeningIterations)
+  if (!flipped.empty() && options.maxUntangleRounds > 0)
   {
-    ++out.stiffeningIterations;
-    std::vector<char> raised(nF, 0);
-    for (const int f : flipped)
-    {
-      for (int k = 0; k < 3; ++k)
-      {
-        const int p = F(f, k);
-        for (int i = topo.ringOffsets[p]; i < topo.ringOffsets[p + 1]; ++i)
-        {
-          raised[topo.ringFaces[i]] = std::max<char>(raised[topo.ringFaces[i]], 1);
-        }
-      }
-    }
-    for (const int f : flipped)
-    {
-      raised[f] = 2;
-    }
+    const auto started = std::chrono::steady_clock::now();
+    const Eigen::SparseMatrix<double, Eigen::RowMajor> Dr = D;
+    Eigen::VectorXd sqrtArea = Eigen::VectorXd::Zero(nF);
     for (int f = 0; f < nF; ++f)
     {
-      // rows hold sqrt(weight): flipped triangles x4, their neighbours x2 in weight
-      const double factor = raised[f] == 2 ? 2.0 : (raised[f] == 1 ? std::sqrt(2.0) : 1.0);
-      weight.segment(4 * f, 4) *= factor;
+      sqrtArea[f] = std::sqrt(std::max(0.0, faceArea[f]));
     }
-    x = solveFixed();
-    flipped = flippedFaces(uvOf(x));
+    const Untangler untangler{ Dr, D, sqrtArea, options.gridSize, round ? numReal : n };
+    for (int rings = 2; rings <= 16 && !flipped.empty(); rings *= 2)
+    {
+      ++out.untangleRegions;
+      untangler.run(topo, F, flipped, rings, options.maxUntangleRounds, x);
+      flipped = flippedFaces(uvOf(x));
+    }
+    out.untangleSeconds = seconds(started);
   }
   out.flipped = static_cast<int>(flipped.size());
   out.energyFinal = energyOf(x);

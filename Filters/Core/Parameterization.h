@@ -36,9 +36,10 @@ struct ParameterizationOptions
   /// grid line (constant u or v), so quads end cleanly at the border.
   bool alignBoundary = true;
   double boundaryTolerance = 10.0;
-  /// After rounding: at most this many solves that stiffen flipped triangles and their
-  /// neighbours (as in mixed-integer quadrangulation) until no triangle is flipped.
-  int maxStiffeningIterations = 20;
+  /// After rounding, triangles whose (u, v) image is flipped are untangled: the real unknowns
+  /// of their neighbourhood (2 rings, then 4, 8, 16) move to minimize a foldover-free distortion
+  /// energy, in at most this many rounds per neighbourhood; 0 leaves flips as they are.
+  int maxUntangleRounds = 30;
 };
 
 /**
@@ -72,15 +73,19 @@ struct Parameterization
   /// constraints whose elimination could not keep integers integer (0 unless the cut graph
   /// is unusual); the map may then miss the grid there (see maxSeamError)
   int nonUnitPivots = 0;
+  /// branch points rounded to the next nearest grid point because the nearest was taken by a
+  /// branch point of the same triangle
+  int separatedBranchPoints = 0;
   /// Energy sum A_f |grad phi - K|^2 / (area * |K|^2) (0 for a perfect fit): the continuous
-  /// minimizer, the rounded map before stiffening, and the final map.
+  /// minimizer, the rounded map before untangling, and the final map.
   double energyContinuous = 0.0;
   double energyRounded = 0.0;
   double energyFinal = 0.0;
   int flippedContinuous = 0; ///< triangles with a non-positive (u, v) area
   int flippedRounded = 0;
-  int flipped = 0; ///< in the final map
-  int stiffeningIterations = 0;
+  int flipped = 0;         ///< in the final map
+  int untangleRegions = 0; ///< neighbourhoods untangled (each growing the last)
+  double untangleSeconds = 0.0;
   double maxSeamError = 0.0; ///< largest distance of a seam translation from Z^2, in grid units
   std::vector<double> solveSeconds; ///< factorization + solve, one entry per sparse solve
   std::string solver;               ///< sparse solver used
@@ -96,8 +101,8 @@ struct Parameterization
  * so that every remaining integer unknown (translations, branch points, boundary lines) keeps
  * every dependent one integer. The energy sum_f A_f |grad phi - K_f|^2 with K_f the combed
  * frame (X_c, X_{c+1}) / gridSize is minimized (one sparse Cholesky), the integer unknowns are
- * rounded (Rounding), and the rest is solved again with the integers fixed, stiffening flipped
- * triangles.
+ * rounded (Rounding), the rest is solved again with the integers fixed, and flipped triangles
+ * are untangled locally (maxUntangleRounds).
  *
  * @param[in] geometry computeFrameGeometry(V, F, topo)
  * @param[in] frameU   #F x 3 tangent frame directions (four-fold symmetric)

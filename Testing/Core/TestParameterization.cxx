@@ -258,8 +258,8 @@ TEST(Parameterization, ClosedSurfacesGiveSeamlessGridMapsWithoutFlips)
     std::cout << name << ": " << r.map.branchPoints << " branch points, energy "
               << r.map.energyContinuous << " -> " << r.map.energyFinal << ", "
               << r.map.integerUnknowns << " integer unknowns, flips " << r.map.flippedRounded
-              << " -> " << r.map.flipped << " in " << r.map.stiffeningIterations
-              << " stiffening solves\n";
+              << " -> " << r.map.flipped << " after " << r.map.untangleRegions
+              << " untangled neighbourhoods\n";
   }
 }
 
@@ -381,4 +381,131 @@ TEST(Parameterization, RefusesBadArguments)
   EXPECT_THROW(computeParameterization(
                  r.s.V, r.s.F, r.topo, r.geometry, r.frameU.topRows(10), r.field.matching, options),
     std::invalid_argument);
+}
+
+TEST(Parameterization, TwistedFramesFoldTheMapAndUntanglingUnfoldsIt)
+{
+  // A smooth field on the sphere, then a patch where the frames whirl twice around the pole (the
+  // matchings stay those of the smooth field): no map without a singularity there can follow,
+  // and the least-squares map folds. Untangling must leave
+  // no flipped triangle, keep the seams and the branch points where they were.
+  Chain c = runChain(testSurface("sphere"), 1000);
+  const Eigen::VectorXd phi = vectorAngles(c.geometry.bases, c.frameU);
+  Eigen::VectorXd twisted = phi;
+  const Eigen::Vector3d centre(0.0, 0.0, 1.0);
+  for (int f = 0; f < c.s.F.rows(); ++f)
+  {
+    const Eigen::Vector3d p = c.s.V.row(c.s.F(f, 0));
+    if ((p - centre).norm() < 0.25)
+    {
+      twisted[f] += 2.0 * std::atan2(p.y(), p.x());
+    }
+  }
+  const Eigen::MatrixX3d U = angleVectors(c.geometry.bases, twisted);
+  ParameterizationOptions options;
+  options.gridSize = c.map.gridSize;
+  options.maxUntangleRounds = 0;
+  const Parameterization folded =
+    computeParameterization(c.s.V, c.s.F, c.topo, c.geometry, U, c.field.matching, options);
+  ASSERT_GT(folded.flipped, 0) << "the twist should fold the least-squares map";
+  options.maxUntangleRounds = 30;
+  c.map = computeParameterization(c.s.V, c.s.F, c.topo, c.geometry, U, c.field.matching, options);
+  EXPECT_EQ(c.map.flippedRounded, folded.flipped);
+  EXPECT_GT(c.map.untangleRegions, 0);
+  expectIntegerGridMap(c, "twisted sphere");
+  std::cout << "flipped " << folded.flipped << " -> " << c.map.flipped << ", energy "
+            << folded.energyFinal << " -> " << c.map.energyFinal << "\n";
+}
+
+TEST(Parameterization, BranchPointsOfOneTriangleNeverShareAGridPoint)
+{
+  // Move one +1/4 branch point of the sphere next to another (changing the matchings along an
+  // edge path), so that on a coarse grid both round to the same grid point; the rounding must
+  // put them on different grid points.
+  Chain c = runChain(testSurface("sphere"), 200);
+  Eigen::MatrixX3i& M = c.field.matching;
+  std::vector<int> branch;
+  for (int v = 0; v < c.s.V.rows(); ++v)
+  {
+    if (c.field.layerShift[v] == 1)
+    {
+      branch.push_back(v);
+    }
+  }
+  ASSERT_GE(branch.size(), 2u);
+  const int a = branch[0];
+  const int target = branch[1];
+  // breadth-first path from a to target over edges
+  std::vector<int> previous(c.s.V.rows(), -1);
+  std::vector<int> queue{ a };
+  previous[a] = a;
+  for (std::size_t i = 0; i < queue.size() && previous[target] < 0; ++i)
+  {
+    const int u = queue[i];
+    for (int j = c.topo.ringOffsets[u]; j < c.topo.ringOffsets[u + 1]; ++j)
+    {
+      const int f = c.topo.ringFaces[j];
+      for (int k = 0; k < 3; ++k)
+      {
+        const int w = c.s.F(f, k);
+        if (previous[w] < 0 && (w == target || c.field.layerShift[w] == 0))
+        {
+          previous[w] = u;
+          queue.push_back(w);
+        }
+      }
+    }
+  }
+  ASSERT_GE(previous[target], 0);
+  std::vector<int> path{ previous[target] }; // ends one edge before the target
+  while (path.back() != a)
+  {
+    path.push_back(previous[path.back()]);
+  }
+  // walking u -> w and turning the matching from g (where the edge runs w -> u) to f by -1
+  // quarter moves 1/4 of index from u to w
+  for (std::size_t i = path.size() - 1; i > 0; --i)
+  {
+    const int u = path[i];
+    const int w = path[i - 1];
+    for (int f = 0; f < c.s.F.rows(); ++f)
+    {
+      for (int k = 0; k < 3; ++k)
+      {
+        if (c.s.F(f, k) == u && c.s.F(f, (k + 1) % 3) == w)
+        {
+          const int g = c.topo.faceNeighbors(f, k);
+          const int kg = MeshTopology::cornerOf(c.s.F, g, w);
+          M(g, kg) = (M(g, kg) + 3) % 4;
+          M(f, k) = (4 - M(g, kg)) % 4;
+        }
+      }
+    }
+  }
+  const Eigen::VectorXd alpha =
+    fitFramesToMatchings(c.s.V, c.s.F, c.topo, c.geometry, c.frameU, M, Eigen::VectorXd());
+  Eigen::MatrixX3d V = c.frameU;
+  rotateFrames(c.geometry.bases, alpha, c.frameU, V);
+  c.field = evaluateMatchings(c.s.F, c.topo, c.geometry, c.frameU, M);
+  ASSERT_EQ(c.field.layerShift[a], 0);
+  ASSERT_EQ(c.field.layerShift[path[0]], 1);
+  ParameterizationOptions options;
+  options.gridSize = c.map.gridSize * 2.0; // about 50 quads: one grid cell spans several edges
+  c.map = computeParameterization(c.s.V, c.s.F, c.topo, c.geometry, c.frameU, M, options);
+  EXPECT_GT(c.map.separatedBranchPoints, 0) << "the two should have met at one grid point";
+  EXPECT_EQ(seamViolations(c), 0);
+  EXPECT_EQ(branchPointsOffGrid(c), 0);
+  int pairs = 0;
+  for (int f = 0; f < c.s.F.rows(); ++f)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      if (c.field.layerShift[c.s.F(f, k)] != 0 && c.field.layerShift[c.s.F(f, (k + 1) % 3)] != 0)
+      {
+        ++pairs;
+        EXPECT_GE(std::abs(cornerZ(c.map, f, k) - cornerZ(c.map, f, (k + 1) % 3)), 1.0 - 1e-9);
+      }
+    }
+  }
+  EXPECT_EQ(pairs, 2) << "one edge, seen from its two triangles";
 }

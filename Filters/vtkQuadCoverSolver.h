@@ -1,0 +1,133 @@
+/**
+ * @class   vtkQuadCoverSolver
+ * @brief   the seamless integer-grid map (u, v) of a frame field with matchings (QuadCover Sect.
+ *          2.5, 4, 4.1)
+ *
+ * Fourth stage of the QuadCover pipeline. The surface is cut into disks along a cut graph
+ * through every singular point; the frames are combed so that their matchings vanish off the
+ * cut; then the map phi = (u, v) minimizing sum_f area_f |grad phi - K_f|^2 is computed, K the
+ * frame (FrameU, n x FrameU) divided by the grid size, with the covering's transition
+ * functions across the cut: z' = i^r z + t (z = u + i v, r the matching, t in Z^2).
+ *
+ * Integers: every seam translation is integer and, with PureQuads (default), every branch point
+ * maps to a grid point (Theorem 2 allows the middle of a grid cell otherwise), so the grid's
+ * lines close up into a quad mesh (vtkQuadExtractor). RoundingMode Greedy (default) fixes one
+ * integer unknown at a time, the one closest to an integer, and updates the others exactly with
+ * the same factorization; Simple rounds them all at once; None leaves the continuous minimizer.
+ * Triangles whose image is flipped (by a field the grid cannot follow, or by rounding) are then
+ * untangled: the map moves in their neighbourhood to minimize a foldover-free distortion energy
+ * (Garanzha et al. 2021), the integers kept (MaximumUntangleRounds). With AlignToBoundary, boundary
+ * edges along a frame direction lie on integer grid lines.
+ *
+ * The grid size is TargetEdgeLength when positive, else sqrt(area / TargetQuadCount).
+ *
+ * Input: a manifold, consistently oriented triangle surface with the cell arrays FrameU
+ * (SetInputArrayToProcess(0, ...)) and Matching (SetInputArrayToProcess(1, ...)), as
+ * vtkMatchingBuilder writes them.
+ *
+ * Output: the surface with cell data CornerUV (6 x double: u0 v0 u1 v1 u2 v2 at the triangle's
+ * points) and Seam (3 x unsigned char: 1 where edge k, from point k to k+1, is on the cut), field
+ * data GridScale, FlippedTriangles, ParameterizationEnergy, SolveSeconds, SeamEdgeCount,
+ * BranchPointsOnGrid and SeamTranslationError (see vtkQuadCoverArrayNames.h). With SplitSeams
+ * the surface is cut open along the seams instead: one point per sector of a point between seam
+ * edges, point data UV (the active texture coordinates) and SurfacePointId, so a checkerboard
+ * texture shows the parameter lines at once.
+ * @sa vtkMatchingBuilder vtkQuadExtractor
+ */
+#ifndef vtkQuadCoverSolver_h
+#define vtkQuadCoverSolver_h
+
+#include "vtkPolyDataAlgorithm.h"
+#include "vtkQuadCoverFiltersModule.h" // for export macro
+
+class VTKQUADCOVERFILTERS_EXPORT vtkQuadCoverSolver : public vtkPolyDataAlgorithm
+{
+public:
+  static vtkQuadCoverSolver* New();
+  vtkTypeMacro(vtkQuadCoverSolver, vtkPolyDataAlgorithm);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  enum RoundingModes
+  {
+    ROUNDING_NONE = 0,
+    ROUNDING_SIMPLE = 1,
+    ROUNDING_GREEDY = 2
+  };
+
+  ///@{
+  /** Edge length of the quads in world units; 0 (default) uses TargetQuadCount. */
+  vtkSetClampMacro(TargetEdgeLength, double, 0.0, VTK_DOUBLE_MAX);
+  vtkGetMacro(TargetEdgeLength, double);
+  ///@}
+
+  ///@{
+  /** About how many quads, in [1, 10^8] (default 3000); used when TargetEdgeLength is 0. */
+  vtkSetClampMacro(TargetQuadCount, int, 1, 100000000);
+  vtkGetMacro(TargetQuadCount, int);
+  ///@}
+
+  ///@{
+  /** Branch points on grid points so that the extraction gives only quads (default on). */
+  vtkSetMacro(PureQuads, bool);
+  vtkGetMacro(PureQuads, bool);
+  vtkBooleanMacro(PureQuads, bool);
+  ///@}
+
+  ///@{
+  /** How the integer unknowns are rounded (default ROUNDING_GREEDY). */
+  vtkSetClampMacro(RoundingMode, int, ROUNDING_NONE, ROUNDING_GREEDY);
+  vtkGetMacro(RoundingMode, int);
+  void SetRoundingModeToNone() { this->SetRoundingMode(ROUNDING_NONE); }
+  void SetRoundingModeToSimple() { this->SetRoundingMode(ROUNDING_SIMPLE); }
+  void SetRoundingModeToGreedy() { this->SetRoundingMode(ROUNDING_GREEDY); }
+  ///@}
+
+  ///@{
+  /** Put boundary edges along a frame direction on integer grid lines (default on). */
+  vtkSetMacro(AlignToBoundary, bool);
+  vtkGetMacro(AlignToBoundary, bool);
+  vtkBooleanMacro(AlignToBoundary, bool);
+  ///@}
+
+  ///@{
+  /** Degrees, in [0, 45] (default 10): how far a boundary edge may turn from its frame and
+   * still count as along it. */
+  vtkSetClampMacro(BoundaryTolerance, double, 0.0, 45.0);
+  vtkGetMacro(BoundaryTolerance, double);
+  ///@}
+
+  ///@{
+  /** Rounds of local untangling per neighbourhood of flipped triangles, in [0, 1000] (default
+   * 30; 0 leaves flips in place). */
+  vtkSetClampMacro(MaximumUntangleRounds, int, 0, 1000);
+  vtkGetMacro(MaximumUntangleRounds, int);
+  ///@}
+
+  ///@{
+  /** Cut the output open along the seams, with point texture coordinates (default off). */
+  vtkSetMacro(SplitSeams, bool);
+  vtkGetMacro(SplitSeams, bool);
+  vtkBooleanMacro(SplitSeams, bool);
+  ///@}
+
+protected:
+  vtkQuadCoverSolver();
+  ~vtkQuadCoverSolver() override = default;
+
+  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+
+  double TargetEdgeLength = 0.0;
+  int TargetQuadCount = 3000;
+  bool PureQuads = true;
+  int RoundingMode = ROUNDING_GREEDY;
+  bool AlignToBoundary = true;
+  double BoundaryTolerance = 10.0;
+  int MaximumUntangleRounds = 30;
+  bool SplitSeams = false;
+
+private:
+  vtkQuadCoverSolver(const vtkQuadCoverSolver&) = delete;
+  void operator=(const vtkQuadCoverSolver&) = delete;
+};
+
+#endif
