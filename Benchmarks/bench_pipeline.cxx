@@ -1,7 +1,10 @@
 // quadcover_bench: seconds and peak memory of the pipeline's stages (curvature, smoothing,
-// matchings so far), as a Markdown table.
+// matchings, parameterization so far), as a Markdown table.
 //
-//   quadcover_bench [--shared DIR] [--max-triangles N] [--repeat K] [--out FILE.md]
+//   quadcover_bench [--shared DIR] [--max-triangles N] [--repeat K] [--quads N] [--out FILE.md]
+//
+// Cases: the shared meshes, the same refined by Loop subdivision (x4 triangles per level) up to
+// --max-triangles, and generated tori of about 10k, 100k and 1M triangles.
 //
 // Each case runs in a child process so that its peak resident memory (getrusage ru_maxrss of
 // the child: reading or generating the mesh included) is its own. Seconds are the best of K
@@ -10,10 +13,12 @@
 
 #include "vtkCurvatureFrames.h"
 #include "vtkFrameSmoother.h"
+#include "vtkLoopSubdivisionFilter.h"
 #include "vtkMatchingBuilder.h"
 #include "vtkNew.h"
 #include "vtkPolyData.h"
 #include "vtkQuadCoverEigen.h"
+#include "vtkQuadCoverSolver.h"
 
 #include "Surfaces.h"
 
@@ -38,7 +43,9 @@ struct Case
   std::string name;
   std::string file; // empty: a generated torus
   int nu = 0, nv = 0;
+  int subdivisions = 0; // Loop subdivision levels applied to the file's surface
 };
+constexpr int Stages = 4;
 
 vtkSmartPointer<vtkPolyData> Torus(int nu, int nv)
 {
@@ -46,8 +53,8 @@ vtkSmartPointer<vtkPolyData> Torus(int nu, int nv)
   return vtkQuadCoverEigen::ToPolyData(s.V, s.F);
 }
 
-/// Child: load, run the stage `repeat` times with `threads`, print "triangles seconds".
-int RunCase(const Case& c, int threads, int repeat, int fd)
+/// Child: load, run the stages `repeat` times with `threads`, print "triangles seconds...".
+int RunCase(const Case& c, int threads, int repeat, int quads, int fd)
 {
   vtkSmartPointer<vtkPolyData> surface;
   if (c.file.empty())
@@ -64,9 +71,17 @@ int RunCase(const Case& c, int threads, int repeat, int fd)
     {
       return 1;
     }
+    if (c.subdivisions > 0)
+    {
+      vtkNew<vtkLoopSubdivisionFilter> loop;
+      loop->SetInputData(surface);
+      loop->SetNumberOfSubdivisions(c.subdivisions);
+      loop->Update();
+      surface = loop->GetOutput();
+    }
   }
   // Best of `repeat` runs of the whole chain, per stage.
-  double best[3] = { 1e300, 1e300, 1e300 };
+  double best[Stages] = { 1e300, 1e300, 1e300, 1e300 };
   for (int r = 0; r < repeat; ++r)
   {
     vtkNew<vtkCurvatureFrames> frames;
@@ -76,8 +91,11 @@ int RunCase(const Case& c, int threads, int repeat, int fd)
     smoother->SetInputConnection(frames->GetOutputPort());
     vtkNew<vtkMatchingBuilder> matching;
     matching->SetInputConnection(smoother->GetOutputPort());
-    vtkAlgorithm* const stages[3] = { frames, smoother, matching };
-    for (int s = 0; s < 3; ++s)
+    vtkNew<vtkQuadCoverSolver> solver;
+    solver->SetInputConnection(matching->GetOutputPort());
+    solver->SetTargetQuadCount(quads);
+    vtkAlgorithm* const stages[Stages] = { frames, smoother, matching, solver };
+    for (int s = 0; s < Stages; ++s)
     {
       const auto t0 = std::chrono::steady_clock::now();
       stages[s]->Update();
@@ -86,8 +104,8 @@ int RunCase(const Case& c, int threads, int repeat, int fd)
     }
   }
   char line[160];
-  const int n = std::snprintf(line, sizeof line, "%lld %.6f %.6f %.6f\n",
-    static_cast<long long>(surface->GetNumberOfPolys()), best[0], best[1], best[2]);
+  const int n = std::snprintf(line, sizeof line, "%lld %.6f %.6f %.6f %.6f\n",
+    static_cast<long long>(surface->GetNumberOfPolys()), best[0], best[1], best[2], best[3]);
   return write(fd, line, n) == n ? 0 : 1;
 }
 }
@@ -97,6 +115,7 @@ int main(int argc, char* argv[])
   std::string shared, out;
   long long maxTriangles = 1000000;
   int repeat = 3;
+  int quads = 3000;
   std::string command = "quadcover_bench";
   for (int i = 1; i < argc; ++i)
   {
@@ -108,12 +127,15 @@ int main(int argc, char* argv[])
       maxTriangles = std::atoll(argv[++i]), command += std::string(" ") + argv[i];
     else if (i + 1 < argc && a == "--repeat")
       repeat = std::max(1, std::atoi(argv[++i])), command += std::string(" ") + argv[i];
+    else if (i + 1 < argc && a == "--quads")
+      quads = std::max(1, std::atoi(argv[++i])), command += std::string(" ") + argv[i];
     else if (i + 1 < argc && a == "--out")
       out = argv[++i], command += std::string(" ") + argv[i];
     else
     {
       std::fprintf(stderr,
-        "usage: quadcover_bench [--shared DIR] [--max-triangles N] [--repeat K] [--out FILE]\n");
+        "usage: quadcover_bench [--shared DIR] [--max-triangles N] [--repeat K] [--quads N] "
+        "[--out FILE]\n");
       return 2;
     }
   }
@@ -130,6 +152,22 @@ int main(int argc, char* argv[])
         cases.push_back({ name, file });
       }
     }
+    // refined: the two largest, 4^k times as many triangles, up to --max-triangles
+    for (const auto& [name, triangles] :
+      { std::pair<const char*, long long>{ "spot", 5856 }, { "rocker-arm", 20088 } })
+    {
+      const std::string file = shared + "/" + name + ".obj";
+      long long count = triangles;
+      for (int level = 1; level <= 4 && std::ifstream(file).good(); ++level)
+      {
+        count *= 4;
+        if (count <= maxTriangles)
+        {
+          cases.push_back(
+            { std::string(name) + " x" + std::to_string(1 << (2 * level)), file, 0, 0, level });
+        }
+      }
+    }
   }
   // Tori of about 10k, 100k and 1M triangles (2 nu nv, nu = 2 nv).
   for (long long target : { 10000LL, 100000LL, 1000000LL })
@@ -142,9 +180,9 @@ int main(int argc, char* argv[])
   }
 
   std::ostringstream table;
-  table << "| surface | triangles | threads | curvature s | smooth s | matching s | total s | "
-           "peak RSS MiB |\n"
-        << "|---|---:|---:|---:|---:|---:|---:|---:|\n";
+  table << "| surface | triangles | threads | curvature s | smooth s | matching s | param s | "
+           "total s | peak RSS MiB |\n"
+        << "|---|---:|---:|---:|---:|---:|---:|---:|---:|\n";
   for (const Case& c : cases)
   {
     for (int threads : { 1, 2 })
@@ -158,7 +196,7 @@ int main(int argc, char* argv[])
       if (pid == 0)
       {
         close(fds[0]);
-        _exit(RunCase(c, threads, repeat, fds[1]));
+        _exit(RunCase(c, threads, repeat, quads, fds[1]));
       }
       close(fds[1]);
       char buf[128] = { 0 };
@@ -168,18 +206,19 @@ int main(int argc, char* argv[])
       struct rusage usage;
       wait4(pid, &status, 0, &usage);
       long long triangles = 0;
-      double seconds[3] = { 0, 0, 0 };
+      double seconds[Stages] = { 0, 0, 0, 0 };
       if (got <= 0 || !WIFEXITED(status) || WEXITSTATUS(status) != 0 ||
-        std::sscanf(buf, "%lld %lf %lf %lf", &triangles, &seconds[0], &seconds[1], &seconds[2]) !=
-          4)
+        std::sscanf(buf, "%lld %lf %lf %lf %lf", &triangles, &seconds[0], &seconds[1], &seconds[2],
+          &seconds[3]) != 5)
       {
         std::fprintf(stderr, "quadcover_bench: case %s failed\n", c.name.c_str());
         continue;
       }
       char row[256];
-      std::snprintf(row, sizeof row, "| %s | %lld | %d | %.4f | %.4f | %.4f | %.4f | %.0f |\n",
-        c.name.c_str(), triangles, threads, seconds[0], seconds[1], seconds[2],
-        seconds[0] + seconds[1] + seconds[2], usage.ru_maxrss / 1024.0);
+      std::snprintf(row, sizeof row,
+        "| %s | %lld | %d | %.4f | %.4f | %.4f | %.4f | %.4f | %.0f |\n", c.name.c_str(), triangles,
+        threads, seconds[0], seconds[1], seconds[2], seconds[3],
+        seconds[0] + seconds[1] + seconds[2] + seconds[3], usage.ru_maxrss / 1024.0);
       table << row;
       std::fputs(row, stderr);
     }

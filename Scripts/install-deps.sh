@@ -8,6 +8,7 @@ packages=(
   libvtk9-dev python3-vtk9 python3-dev python3-numpy   # VTK 9.1 with its Python wrapping
   libeigen3-dev                                        # Eigen 3.4
   libsuitesparse-dev                                   # CHOLMOD for the sparse solves
+  libopenblas0-pthread                                 # its BLAS: 3x faster factorizations
   libgtest-dev                                         # GoogleTest
   xvfb xauth                                           # off-screen pictures without a display
 )

@@ -65,6 +65,9 @@ public:
     IsInteger.push_back(integer);
     Eliminated.push_back(0);
     Substitute.emplace_back();
+    Full.emplace_back();
+    Partial.emplace_back();
+    PartialDone.push_back(0);
     return static_cast<int>(IsInteger.size()) - 1;
   }
   int size() const { return static_cast<int>(IsInteger.size()); }
@@ -79,7 +82,7 @@ public:
       Identity = { { x, 1.0 } };
       return Identity;
     }
-    Expr& e = Substitute[x];
+    Expr& e = Full[x];
     bool stale = false;
     for (const auto& t : e)
     {
@@ -105,9 +108,46 @@ public:
         }
       }
       normalize(out);
-      Substitute[x] = std::move(out);
+      Full[x] = std::move(out);
     }
-    return Substitute[x];
+    return Full[x];
+  }
+
+  /**
+   * The unknown with every eliminated real unknown replaced, integer ones (eliminated or not)
+   * kept: short, where the full resolution of a seam's translation may sum over every branch
+   * point beyond it. Call once all constraints are in.
+   */
+  const Expr& resolveReals(int x)
+  {
+    if (!Eliminated[x] || IsInteger[x])
+    {
+      Identity = { { x, 1.0 } };
+      return Identity;
+    }
+    if (!PartialDone[x])
+    {
+      Expr out;
+      for (const auto& t : Substitute[x])
+      {
+        if (Eliminated[t.first] && !IsInteger[t.first])
+        {
+          const Expr sub = resolveReals(t.first);
+          for (const auto& u : sub)
+          {
+            out.emplace_back(u.first, u.second * t.second);
+          }
+        }
+        else
+        {
+          out.push_back(t);
+        }
+      }
+      normalize(out);
+      Partial[x] = std::move(out);
+      PartialDone[x] = 1;
+    }
+    return Partial[x];
   }
 
   Expr resolve(const Expr& e)
@@ -192,6 +232,7 @@ public:
       }
     }
     Eliminated[x] = 1;
+    Full[x] = sub;
     Substitute[x] = std::move(sub);
   }
 
@@ -201,7 +242,10 @@ public:
 private:
   std::vector<char> IsInteger;
   std::vector<char> Eliminated;
-  std::vector<Expr> Substitute;
+  std::vector<Expr> Substitute; ///< the pivot's expression when it was eliminated
+  std::vector<Expr> Full;       ///< the same in unknowns not eliminated (path-compressed)
+  std::vector<Expr> Partial;    ///< resolveReals
+  std::vector<char> PartialDone;
   Expr Identity;
 };
 
@@ -780,15 +824,52 @@ Parameterization computeParameterization(const Eigen::MatrixX3d& V, const Eigen:
   const int n = numReal + numInteger;
   out.unknowns = n;
   out.integerUnknowns = numInteger;
-  // Each sector's u and v in columns.
+  // Symbols: the real unknowns (columns 0..numReal-1), then every integer unknown a sector
+  // refers to, eliminated or not. Sectors are short in symbols; P maps symbols to columns (an
+  // eliminated integer unknown may be a long sum: a seam's translation sums the branch points
+  // beyond it).
+  std::vector<int> symbolOf(elim.size(), -1);
+  std::vector<Expr> symbolColumns; // integer symbols' expressions in columns
   std::vector<Expr> sectorExpr(2 * nS);
   for (int x = 0; x < 2 * nS; ++x)
   {
-    sectorExpr[x] = elim.resolve(x);
+    sectorExpr[x] = elim.resolveReals(x);
     for (auto& t : sectorExpr[x])
     {
-      t.first = column[t.first];
+      if (!elim.isInteger(t.first))
+      {
+        t.first = column[t.first];
+        continue;
+      }
+      if (symbolOf[t.first] < 0)
+      {
+        symbolOf[t.first] = numReal + static_cast<int>(symbolColumns.size());
+        Expr e = elim.resolve(t.first);
+        for (auto& c : e)
+        {
+          c.first = column[c.first];
+        }
+        symbolColumns.push_back(std::move(e));
+      }
+      t.first = symbolOf[t.first];
     }
+  }
+  const int numSymbols = numReal + static_cast<int>(symbolColumns.size());
+  SparseMatrix P(numSymbols, n);
+  {
+    std::vector<Eigen::Triplet<double>> t;
+    for (int j = 0; j < numReal; ++j)
+    {
+      t.emplace_back(j, j, 1.0);
+    }
+    for (std::size_t k = 0; k < symbolColumns.size(); ++k)
+    {
+      for (const auto& c : symbolColumns[k])
+      {
+        t.emplace_back(numReal + static_cast<int>(k), c.first, c.second);
+      }
+    }
+    P.setFromTriplets(t.begin(), t.end());
   }
 
   // ---- the energy: 4 rows per triangle, sqrt(A) (grad u - U'/h, grad v - V'/h) ----
@@ -797,6 +878,9 @@ Parameterization computeParameterization(const Eigen::MatrixX3d& V, const Eigen:
   Eigen::VectorXd faceArea = Eigen::VectorXd::Zero(nF);
   std::vector<Eigen::Triplet<double>> triplets;
   triplets.reserve(static_cast<std::size_t>(nF) * 14);
+  std::vector<Eigen::Triplet<double>> hessian;
+  hessian.reserve(static_cast<std::size_t>(nF) * 26);
+  Expr row[4];
   Eigen::VectorXd rhs = Eigen::VectorXd::Zero(4 * static_cast<Eigen::Index>(nF));
   for (int f = 0; f < nF; ++f)
   {
@@ -824,6 +908,10 @@ Parameterization computeParameterization(const Eigen::MatrixX3d& V, const Eigen:
     rhs[4 * f + 1] = w * scale * s;  // grad u . y
     rhs[4 * f + 2] = w * scale * -s; // grad v . x = V'.x
     rhs[4 * f + 3] = w * scale * c;  // grad v . y
+    for (int r = 0; r < 4; ++r)
+    {
+      row[r].clear();
+    }
     for (int k = 0; k < 3; ++k)
     {
       const Eigen::Vector2d edge = p[(k + 2) % 3] - p[(k + 1) % 3];
@@ -833,21 +921,49 @@ Parameterization computeParameterization(const Eigen::MatrixX3d& V, const Eigen:
       {
         for (const auto& t : sectorExpr[2 * sector + uv])
         {
-          triplets.emplace_back(4 * f + 2 * uv, t.first, grad.x() * t.second);
-          triplets.emplace_back(4 * f + 2 * uv + 1, t.first, grad.y() * t.second);
+          row[2 * uv].emplace_back(t.first, grad.x() * t.second);
+          row[2 * uv + 1].emplace_back(t.first, grad.y() * t.second);
+        }
+      }
+    }
+    // D's rows, and H = D^T D assembled from each row's outer product (much faster than the
+    // sparse product)
+    for (int r = 0; r < 4; ++r)
+    {
+      for (const auto& a : row[r])
+      {
+        triplets.emplace_back(4 * f + r, a.first, a.second);
+        for (const auto& b : row[r])
+        {
+          if (b.first <= a.first)
+          {
+            hessian.emplace_back(a.first, b.first, a.second * b.second);
+          }
         }
       }
     }
   }
-  SparseMatrix D(4 * static_cast<Eigen::Index>(nF), n);
+  // D: rows over symbols; H = P^T (D^T D) P
+  SparseMatrix D(4 * static_cast<Eigen::Index>(nF), numSymbols);
   D.setFromTriplets(triplets.begin(), triplets.end());
   triplets.clear();
   triplets.shrink_to_fit();
+  SparseMatrix H;
+  {
+    SparseMatrix lower(numSymbols, numSymbols);
+    lower.setFromTriplets(hessian.begin(), hessian.end());
+    hessian.clear();
+    hessian.shrink_to_fit();
+    const SparseMatrix full = lower.selfadjointView<Eigen::Lower>();
+    H = P.transpose() * full * P;
+  }
   const double energyNorm = 2.0 * scale * scale * std::max(totalArea, 1e-300);
-  auto energyOf = [&](
-                    const Eigen::VectorXd& x) { return (D * x - rhs).squaredNorm() / energyNorm; };
+  auto energyOf = [&](const Eigen::VectorXd& x) {
+    return (D * (P * x) - rhs).squaredNorm() / energyNorm;
+  };
 
-  auto uvOf = [&](const Eigen::VectorXd& x) {
+  auto uvOf = [&](const Eigen::VectorXd& columns) {
+    const Eigen::VectorXd x = P * columns;
     Eigen::MatrixX2d uv(nS, 2);
     for (int s = 0; s < nS; ++s)
     {
@@ -881,19 +997,36 @@ Parameterization computeParameterization(const Eigen::MatrixX3d& V, const Eigen:
 
   // ---- the continuous minimizer ----
   auto start = std::chrono::steady_clock::now();
-  const SparseMatrix H = (D.transpose() * D).pruned();
   const bool round = options.rounding != Rounding::None && numInteger > 0;
   const bool greedy = round && options.rounding == Rounding::Greedy;
-  Eigen::MatrixXd B(n, 1 + (greedy ? numInteger : 0));
-  B.setZero();
-  B.col(0) = D.transpose() * rhs;
-  for (int j = 0; greedy && j < numInteger; ++j)
+  SpdSolver<double> solver;
+  Eigen::VectorXd x = Eigen::VectorXd::Zero(n);
+  Eigen::MatrixXd S; // the integer block of H^-1 (Greedy)
+  if (n > 0)
   {
-    B(numReal + j, 1 + j) = 1.0; // columns of H^-1 at the integer unknowns
+    solver.compute(H);
+    if (solver.info() != Eigen::Success)
+    {
+      throw std::runtime_error("the Poisson system could not be factored");
+    }
+    x = solver.solve(Eigen::VectorXd(P.transpose() * (D.transpose() * rhs)));
+    if (greedy)
+    {
+      S.resize(numInteger, numInteger);
+      constexpr int Block = 64; // right-hand sides per solve (bounded memory)
+      for (int c = 0; c < numInteger; c += Block)
+      {
+        const int k = std::min(Block, numInteger - c);
+        Eigen::MatrixXd E = Eigen::MatrixXd::Zero(n, k);
+        for (int j = 0; j < k; ++j)
+        {
+          E(numReal + c + j, j) = 1.0;
+        }
+        S.middleCols(c, k) = Eigen::MatrixXd(solver.solve(E)).bottomRows(numInteger);
+      }
+    }
   }
-  Eigen::MatrixXd X = n > 0 ? solveSpd(H, B, "Poisson") : Eigen::MatrixXd(0, 1);
   out.solveSeconds.push_back(seconds(start));
-  Eigen::VectorXd x = n > 0 ? Eigen::VectorXd(X.col(0)) : Eigen::VectorXd();
   out.energyContinuous = energyOf(x);
   out.flippedContinuous = static_cast<int>(flippedFaces(uvOf(x)).size());
 
@@ -901,12 +1034,10 @@ Parameterization computeParameterization(const Eigen::MatrixX3d& V, const Eigen:
   // one conditions the others exactly (x -= S_j (x_j - c_j) / S_jj, S -= S_j S_j^T / S_jj with
   // S the integer block of H^-1), which is the re-solve with the same factorization ----
   Eigen::VectorXd fixedValues;
+  const Eigen::MatrixXd S0 = S;
   if (round)
   {
     Eigen::VectorXd xi = x.tail(numInteger);
-    Eigen::MatrixXd S =
-      greedy ? Eigen::MatrixXd(X.block(numReal, 1, numInteger, numInteger)) : Eigen::MatrixXd();
-    X.resize(0, 0);
     // Two branch points of one triangle must not land on the same grid point (their triangles
     // would collapse): the differences of their (u, v), in integer unknowns.
     struct Pair
@@ -918,10 +1049,21 @@ Parameterization computeParameterization(const Eigen::MatrixX3d& V, const Eigen:
     if (options.pureQuads)
     {
       auto local = [&](const Expr& a, const Expr& b) {
-        Expr d = a;
-        for (const auto& t : b)
+        Expr d;
+        for (const auto& [e, sign] : { std::pair<const Expr*, double>{ &a, 1.0 }, { &b, -1.0 } })
         {
-          d.emplace_back(t.first, -t.second);
+          for (const auto& t : *e)
+          {
+            if (t.first < numReal)
+            {
+              d.emplace_back(t.first, sign * t.second);
+              continue;
+            }
+            for (const auto& c : symbolColumns[t.first - numReal])
+            {
+              d.emplace_back(c.first, sign * t.second * c.second);
+            }
+          }
         }
         normalize(d);
         for (auto& t : d)
@@ -1042,20 +1184,32 @@ Parameterization computeParameterization(const Eigen::MatrixX3d& V, const Eigen:
     const int free = round ? numReal : n;
     if (free > 0)
     {
-      const SparseMatrix Dfree = D.leftCols(free);
+      const SparseMatrix Dfree = D.leftCols(free); // real symbols are the real columns
       Eigen::VectorXd r = rhs;
       if (round)
       {
-        r -= D.rightCols(numInteger) * fixedValues;
+        Eigen::VectorXd integers = Eigen::VectorXd::Zero(n);
+        integers.tail(numInteger) = fixedValues;
+        r -= D * (P * integers);
       }
-      const SparseMatrix Hfree = (Dfree.transpose() * Dfree).pruned();
+      const SparseMatrix Hfree = H.topLeftCorner(free, free); // lower triangle
       Eigen::MatrixXd b = Dfree.transpose() * r;
       result.head(free) = solveSpd(Hfree, b, "Poisson").col(0);
     }
     out.solveSeconds.push_back(seconds(started));
     return result;
   };
-  if (round)
+  if (greedy)
+  {
+    // the minimizer with x_I = c: x0 - H^-1 E_I S0^-1 (x0_I - c), one more solve
+    const auto started = std::chrono::steady_clock::now();
+    Eigen::VectorXd shift = Eigen::VectorXd::Zero(n);
+    shift.tail(numInteger) = S0.ldlt().solve(Eigen::VectorXd(x.tail(numInteger) - fixedValues));
+    x -= solver.solve(shift);
+    x.tail(numInteger) = fixedValues;
+    out.solveSeconds.push_back(seconds(started));
+  }
+  else if (round)
   {
     x = solveFixed();
   }
@@ -1071,11 +1225,14 @@ Parameterization computeParameterization(const Eigen::MatrixX3d& V, const Eigen:
     {
       sqrtArea[f] = std::sqrt(std::max(0.0, faceArea[f]));
     }
-    const Untangler untangler{ Dr, D, sqrtArea, options.gridSize, round ? numReal : n };
+    // in symbols; only the real ones move, and they are the real columns
+    const Untangler untangler{ Dr, D, sqrtArea, options.gridSize, numReal };
+    Eigen::VectorXd xs = P * x;
     for (int rings = 2; rings <= 16 && !flipped.empty(); rings *= 2)
     {
       ++out.untangleRegions;
-      untangler.run(topo, F, flipped, rings, options.maxUntangleRounds, x);
+      untangler.run(topo, F, flipped, rings, options.maxUntangleRounds, xs);
+      x.head(numReal) = xs.head(numReal);
       flipped = flippedFaces(uvOf(x));
     }
     out.untangleSeconds = seconds(started);
