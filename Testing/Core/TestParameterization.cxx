@@ -5,6 +5,7 @@
 #include "CurvatureFrames.h"
 #include "FrameField.h"
 #include "FrameSmoother.h"
+#include "GridMapChecks.h"
 #include "Matchings.h"
 #include "MeshTopology.h"
 #include "Parameterization.h"
@@ -55,91 +56,24 @@ Chain runChain(Surface s, double quads, ParameterizationOptions options = Parame
 
 Complex cornerZ(const Parameterization& m, int f, int k)
 {
-  return { m.cornerUV(f, 2 * k), m.cornerUV(f, 2 * k + 1) };
+  return checks::cornerZ(m.cornerUV, f, k);
 }
 
-Complex rotate(Complex z, int r)
-{
-  for (int q = 0; q < r; ++q)
-  {
-    z *= Complex(0, 1);
-  }
-  return z;
-}
+using checks::isInteger;
 
-bool isInteger(double x, double tolerance = 1e-6)
-{
-  return std::abs(x - std::round(x)) <= tolerance;
-}
-
-/// Across every inner edge: some quarter turn r and an integer t with z_g = i^r z_f + t at both
-/// shared points. Returns the number of edges where that fails.
 int seamViolations(const Chain& r, double translationTolerance = 1e-6)
 {
-  int bad = 0;
-  const auto& F = r.s.F;
-  for (int f = 0; f < F.rows(); ++f)
-  {
-    for (int k = 0; k < 3; ++k)
-    {
-      const int g = r.topo.faceNeighbors(f, k);
-      if (g < 0)
-      {
-        continue;
-      }
-      const int a = F(f, k);
-      const int b = F(f, (k + 1) % 3);
-      const int ga = MeshTopology::cornerOf(F, g, a);
-      const int gb = MeshTopology::cornerOf(F, g, b);
-      const Complex fa = cornerZ(r.map, f, k);
-      const Complex fb = cornerZ(r.map, f, (k + 1) % 3);
-      const Complex za = cornerZ(r.map, g, ga);
-      const Complex zb = cornerZ(r.map, g, gb);
-      bool ok = false;
-      for (int q = 0; q < 4 && !ok; ++q)
-      {
-        const Complex ta = za - rotate(fa, q);
-        const Complex tb = zb - rotate(fb, q);
-        ok = std::abs(ta - tb) < 1e-6 && isInteger(ta.real(), translationTolerance) &&
-          isInteger(ta.imag(), translationTolerance);
-      }
-      bad += !ok;
-    }
-  }
-  return bad;
+  return checks::seamViolations(r.s.F, r.topo, r.map.cornerUV, translationTolerance);
 }
 
-/// Triangles whose (u, v) image has non-positive area.
 int flippedTriangles(const Parameterization& m)
 {
-  int flipped = 0;
-  for (int f = 0; f < m.cornerUV.rows(); ++f)
-  {
-    const Complex a = cornerZ(m, f, 0);
-    const Complex b = cornerZ(m, f, 1);
-    const Complex c = cornerZ(m, f, 2);
-    flipped += !(std::imag(std::conj(b - a) * (c - a)) > 0);
-  }
-  return flipped;
+  return checks::flippedTriangles(m.cornerUV);
 }
 
-/// Inner points with a non-zero layer shift whose (u, v) is not integer (in some triangle).
-int branchPointsOffGrid(const Chain& r, double tolerance = 1e-6)
+int branchPointsOffGrid(const Chain& r)
 {
-  int off = 0;
-  for (int f = 0; f < r.s.F.rows(); ++f)
-  {
-    for (int k = 0; k < 3; ++k)
-    {
-      const int p = r.s.F(f, k);
-      if (!r.topo.boundaryVertex[p] && r.field.layerShift[p] != 0)
-      {
-        const Complex z = cornerZ(r.map, f, k);
-        off += !(isInteger(z.real(), tolerance) && isInteger(z.imag(), tolerance));
-      }
-    }
-  }
-  return off;
+  return checks::branchPointsOffGrid(r.s.F, r.topo, r.field.layerShift, r.map.cornerUV);
 }
 
 /// Sum of the (u, v) angles at the corners around each inner point minus 2 pi (1 - index):
