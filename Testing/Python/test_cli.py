@@ -3,6 +3,7 @@
 Needs QUADCOVER_CLI (the binary) and QUADCOVER_DATA (Data/); QUADCOVER_SHARED_DATA is optional.
 """
 import json
+import math
 import os
 import subprocess
 import tempfile
@@ -95,6 +96,46 @@ class CommandLine(unittest.TestCase):
             self.assertIsNotNone(pd.GetCellData().GetArray(name), name)
         for name in ("LayerShift", "SingularityIndex"):
             self.assertIsNotNone(pd.GetPointData().GetArray(name), name)
+
+    def test_param_stage_options_and_stats(self):
+        # The default stage is param: a seamless map with the sphere's 8 branch points on the
+        # grid, no flips, about --target-quads cells; the options reach the solver.
+        out = os.path.join(self.dir, "s.vtp")
+        stats = os.path.join(self.dir, "s.json")
+        code, _, err = run(os.path.join(DATA, "sphere.obj"), "-o", out, "--target-quads", "500",
+                           "--stats", stats)
+        self.assertEqual(code, 0, err)
+        with open(stats) as f:
+            s = json.load(f)
+        self.assertEqual(s["stage"], "param")
+        p = s["param"]
+        self.assertEqual(p["branch_points"], 8)
+        self.assertEqual(p["branch_points_on_grid"], 8)
+        self.assertEqual(p["flipped"], 0)
+        self.assertLess(p["seam_translation_error"], 1e-6)
+        self.assertGreater(p["seam_edges"], 0)
+        self.assertGreaterEqual(len(p["solve_seconds"]), 1)
+        area = 4 * math.pi * 0.99  # the icosphere is a little smaller than its sphere
+        self.assertAlmostEqual(p["grid_size"], math.sqrt(area / 500), delta=0.01)
+        reader = vtk.vtkXMLPolyDataReader()
+        reader.SetFileName(out)
+        reader.Update()
+        pd = reader.GetOutput()
+        self.assertEqual(pd.GetCellData().GetArray("CornerUV").GetNumberOfComponents(), 6)
+        self.assertEqual(pd.GetCellData().GetArray("Seam").GetNumberOfComponents(), 3)
+        # --edge-length wins over --target-quads; --no-pure-quads and --rounding reach the filter
+        code, _, err = run(os.path.join(DATA, "sphere.obj"), "-o", out, "--edge-length", "0.25",
+                           "--no-pure-quads", "--rounding", "simple", "--split-seams",
+                           "--stats", stats)
+        self.assertEqual(code, 0, err)
+        with open(stats) as f:
+            p = json.load(f)["param"]
+        self.assertEqual(p["grid_size"], 0.25)
+        reader.Modified()
+        reader.Update()
+        pd = reader.GetOutput()
+        self.assertIsNotNone(pd.GetPointData().GetTCoords())
+        self.assertGreater(pd.GetNumberOfPoints(), 2562)  # cut open along the seams
 
     def test_smoothing_options_reach_the_filter(self):
         # Without features the cube holds nothing; with them its edges are held.
@@ -285,7 +326,10 @@ class CommandLine(unittest.TestCase):
                  ([knot, "-o", "x.vtp", "--threads", "1e10"], r"invalid value"),
                  ([knot, "-o", "x.vtp", "--branch-weight"], r"needs a value"),
                  ([knot, "-o", "x.vtp", "--radius", "-1"], r"invalid value"),
-                 ([knot, "-o", "x.vtp", "--frobnicate"], r"unknown option")]
+                 ([knot, "-o", "x.vtp", "--frobnicate"], r"unknown option"),
+                 ([knot, "-o", "x.vtp", "--rounding", "best"], r"invalid value 'best'"),
+                 ([knot, "-o", "x.vtp", "--target-quads", "0"], r"invalid value"),
+                 ([knot, "-o", "x.vtp", "--edge-length", "-1"], r"invalid value")]
         for args, pattern in cases:
             with self.subTest(args=args):
                 self.assert_one_line_error(args, 2, pattern)

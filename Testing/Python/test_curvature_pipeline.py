@@ -87,6 +87,36 @@ class CurvaturePipeline(unittest.TestCase):
         branches = matching.GetOutput(1)
         self.assertEqual(branches.GetNumberOfPoints(), 8)
 
+    def test_solver_after_the_chain(self):
+        # The fourth stage from Python: integer seam translations, branch points on the grid.
+        from quadcover import (vtkFrameSmoother, vtkMatchingBuilder, vtkQuadCoverSolver)
+        reader = vtk.vtkOBJReader()
+        reader.SetFileName(os.path.join(DATA, "roundedcube.obj"))
+        frames = vtkCurvatureFrames()
+        frames.SetInputConnection(reader.GetOutputPort())
+        smoother = vtkFrameSmoother()
+        smoother.SetInputConnection(frames.GetOutputPort())
+        matching = vtkMatchingBuilder()
+        matching.SetInputConnection(smoother.GetOutputPort())
+        solver = vtkQuadCoverSolver()
+        solver.SetInputConnection(matching.GetOutputPort())
+        solver.SetTargetQuadCount(600)
+        solver.SetRoundingModeToGreedy()
+        solver.Update()
+        out = solver.GetOutput()
+        uv = numpy_support.vtk_to_numpy(out.GetCellData().GetArray("CornerUV"))
+        shift = numpy_support.vtk_to_numpy(out.GetPointData().GetArray("LayerShift"))
+        tri = numpy_support.vtk_to_numpy(out.GetPolys().GetConnectivityArray()).reshape(-1, 3)
+        corners = uv.reshape(-1, 3, 2)
+        at_branch = corners[shift[tri] != 0]
+        self.assertEqual(len(set(tri[shift[tri] != 0])), 8)
+        self.assertTrue(np.allclose(at_branch, np.round(at_branch), atol=1e-6))
+        e1 = corners[:, 1] - corners[:, 0]
+        e2 = corners[:, 2] - corners[:, 0]
+        self.assertTrue(((e1[:, 0] * e2[:, 1] - e1[:, 1] * e2[:, 0]) > 0).all())
+        flipped = out.GetFieldData().GetArray("FlippedTriangles")
+        self.assertEqual(flipped.GetValue(2), 0)
+
     def test_empty_input_is_an_error_not_a_crash(self):
         f = vtkCurvatureFrames()
         f.SetInputData(vtk.vtkPolyData())
