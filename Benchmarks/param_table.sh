@@ -1,0 +1,30 @@
+#!/usr/bin/env bash
+# The integer-grid map on the generated surfaces and the shared meshes at about 3,000 quads
+# (or QUADS): branch points, seams, energies, flipped triangles and seconds, as the Markdown
+# table kept in README.md.
+#   bash Benchmarks/param_table.sh [SHARED_DIR] [QUADS]      (after bash Scripts/build.sh)
+set -euo pipefail
+cd "$(dirname "$0")/.."
+shared=${1:-../shared/data}
+quads=${2:-3000}
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+echo "| surface | triangles | branch points (on grid) | seam edges | energy continuous → rounded → final | flipped continuous → rounded → final | param s |"
+echo "|---|---:|---|---:|---|---|---:|"
+for mesh in Data/sphere.obj Data/torus.obj Data/knot.obj Data/roundedcube.obj Data/cylinder.obj \
+  "$shared"/bunny-lowres.obj "$shared"/spot.obj "$shared"/fandisk.obj "$shared"/rocker-arm.obj \
+  "$shared"/cheburashka.obj "$shared"/teapot.obj; do
+  [ -f "$mesh" ] || continue
+  build/bin/quadcover "$mesh" -o "$tmp/out.vtp" --stage param --target-quads "$quads" \
+    --stats "$tmp/s.json"
+  /usr/bin/python3 - "$mesh" "$tmp/s.json" <<'PY'
+import json, os, sys
+s = json.load(open(sys.argv[2]))
+p = s["param"]
+print("| %s | %d | %d (%d) | %d | %.4f → %.4f → %.4f | %d → %d → %d | %.2f |" % (
+    os.path.basename(sys.argv[1]).replace(".obj", ""), s["surface"]["triangles"],
+    p["branch_points"], p["branch_points_on_grid"], p["seam_edges"], p["energy_continuous"],
+    p["energy_rounded"], p["energy"], p["flipped_continuous"], p["flipped_rounded"], p["flipped"],
+    s["seconds"]["param"]))
+PY
+done
