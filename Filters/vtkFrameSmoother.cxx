@@ -56,11 +56,11 @@ int vtkFrameSmoother::RequestData(
   vtkDataArray* u = this->GetInputArrayToProcess(0, surface);
   vtkDataArray* v = this->GetInputArrayToProcess(1, surface);
   vtkDataArray* w = this->GetInputArrayToProcess(2, surface);
-  if (!u || u->GetNumberOfComponents() != 3 || u->GetNumberOfTuples() != nf)
+  const std::string missing = vtkQuadCoverEigen::CheckCellArray3(u, nf, names::FrameU,
+    "run vtkCurvatureFrames first, or name your own with SetInputArrayToProcess");
+  if (!missing.empty())
   {
-    vtkErrorMacro(<< "Cannot smooth frames: the input has no 3-component cell array "
-                  << names::FrameU << " (run vtkCurvatureFrames first, or name your own with "
-                  << "SetInputArrayToProcess).");
+    vtkErrorMacro(<< "Cannot smooth frames: " << missing << ".");
     return 0;
   }
   this->UpdateProgress(0.1);

@@ -63,11 +63,12 @@ int vtkMatchingBuilder::RequestData(
   }
   const vtkIdType nf = mesh.F.rows();
   vtkDataArray* u = this->GetInputArrayToProcess(0, surface);
-  if (!u || u->GetNumberOfComponents() != 3 || u->GetNumberOfTuples() != nf)
+  const std::string missing = vtkQuadCoverEigen::CheckCellArray3(u, nf, names::FrameU,
+    "run vtkCurvatureFrames and vtkFrameSmoother first, or name your own with "
+    "SetInputArrayToProcess");
+  if (!missing.empty())
   {
-    vtkErrorMacro(<< "Cannot build matchings: the input has no 3-component cell array "
-                  << names::FrameU << " (run vtkCurvatureFrames and vtkFrameSmoother first, or "
-                  << "name your own with SetInputArrayToProcess).");
+    vtkErrorMacro(<< "Cannot build matchings: " << missing << ".");
     return 0;
   }
   this->UpdateProgress(0.1);

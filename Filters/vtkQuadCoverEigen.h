@@ -125,6 +125,18 @@ inline Eigen::MatrixX3d FromArray3(vtkDataArray* a)
   return M;
 }
 
+/// "" when `a` has 3 components and one tuple per triangle (#F = nf), else the one-line reason:
+/// "the input has no 3-component cell array NAME (HINT)".
+inline std::string CheckCellArray3(
+  vtkDataArray* a, vtkIdType nf, const char* name, const char* hint)
+{
+  if (a && a->GetNumberOfComponents() == 3 && a->GetNumberOfTuples() == nf)
+  {
+    return "";
+  }
+  return std::string("the input has no 3-component cell array ") + name + " (" + hint + ")";
+}
+
 /// A triangle surface as the core sees it.
 struct Mesh
 {

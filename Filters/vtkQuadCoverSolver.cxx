@@ -57,19 +57,17 @@ int vtkQuadCoverSolver::RequestData(
   }
   const vtkIdType nf = mesh.F.rows();
   vtkDataArray* u = this->GetInputArrayToProcess(0, surface);
-  if (!u || u->GetNumberOfComponents() != 3 || u->GetNumberOfTuples() != nf)
-  {
-    vtkErrorMacro(<< "Cannot parameterize: the input has no 3-component cell array "
-                  << names::FrameU << " (run the earlier stages first, or name your own with "
-                  << "SetInputArrayToProcess(0, ...)).");
-    return 0;
-  }
   vtkDataArray* m = this->GetInputArrayToProcess(1, surface);
-  if (!m || m->GetNumberOfComponents() != 3 || m->GetNumberOfTuples() != nf)
+  std::string missing = vtkQuadCoverEigen::CheckCellArray3(u, nf, names::FrameU,
+    "run the earlier stages first, or name your own with SetInputArrayToProcess(0, ...)");
+  if (missing.empty())
   {
-    vtkErrorMacro(<< "Cannot parameterize: the input has no 3-component cell array "
-                  << names::Matching << " (run vtkMatchingBuilder first, or name your own with "
-                  << "SetInputArrayToProcess(1, ...)).");
+    missing = vtkQuadCoverEigen::CheckCellArray3(m, nf, names::Matching,
+      "run vtkMatchingBuilder first, or name your own with SetInputArrayToProcess(1, ...)");
+  }
+  if (!missing.empty())
+  {
+    vtkErrorMacro(<< "Cannot parameterize: " << missing << ".");
     return 0;
   }
   const Eigen::MatrixX3d U = vtkQuadCoverEigen::FromArray3(u);
