@@ -10,6 +10,7 @@
 #include "MeshTopology.h"
 #include "Parameterization.h"
 #include "Surfaces.h"
+#include "TestChain.h"
 #include "TestSurfaces.h"
 
 #include <Eigen/Geometry>
@@ -25,34 +26,6 @@ namespace
 {
 constexpr double Pi = 3.14159265358979323846;
 using Complex = std::complex<double>;
-
-struct Chain
-{
-  Surface s;
-  MeshTopology topo;
-  FrameGeometry geometry;
-  Eigen::MatrixX3d frameU;
-  FrameTopology field;
-  Parameterization map;
-};
-
-/// The whole chain with default options, then the map at about `quads` quads.
-Chain runChain(Surface s, double quads, ParameterizationOptions options = ParameterizationOptions())
-{
-  Chain r{ std::move(s), {}, {}, {}, {}, {} };
-  r.topo = buildTopology(r.s.F, static_cast<int>(r.s.V.rows()));
-  r.geometry = computeFrameGeometry(r.s.V, r.s.F, r.topo);
-  const CurvatureField c = computeCurvatureField(r.s.V, r.s.F, r.topo);
-  const SmootherResult smooth =
-    smoothFrames(r.s.V, r.s.F, r.topo, r.geometry, c.frameU, c.frameV, c.weight);
-  r.frameU = smooth.frameU;
-  r.field = computeMatchings(r.s.F, r.topo, r.geometry, r.frameU);
-  optimizeBranchPoints(r.s.F, r.topo, r.geometry, r.frameU, r.field);
-  options.gridSize = gridSizeForQuadCount(r.s.V, r.s.F, quads);
-  r.map =
-    computeParameterization(r.s.V, r.s.F, r.topo, r.geometry, r.frameU, r.field.matching, options);
-  return r;
-}
 
 Complex cornerZ(const Parameterization& m, int f, int k)
 {

@@ -1,0 +1,555 @@
+#include "QuadExtraction.h"
+
+#include "UnionFind.h"
+
+#include <Eigen/Geometry>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <complex>
+#include <map>
+#include <stdexcept>
+#include <tuple>
+
+namespace quadcover
+{
+namespace
+{
+using Complex = std::complex<double>;
+
+double cross(Complex a, Complex b)
+{
+  return a.real() * b.imag() - a.imag() * b.real();
+}
+
+Complex turn(Complex z, int r)
+{
+  for (int q = 0; q < r; ++q)
+  {
+    z *= Complex(0, 1);
+  }
+  return z;
+}
+
+/// Where a grid point was found: identity (kind: 0 point, 1 edge, 2 inside a triangle; the
+/// element; integer (u, v) in the element's chart), triangle and barycentric coordinates.
+struct Location
+{
+  std::tuple<int, int, long long, long long> key;
+  int triangle = -1;
+  Eigen::Vector3d bary;
+};
+
+class Extractor
+{
+public:
+  Extractor(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F, const MeshTopology& topo,
+    const Eigen::MatrixXd& uv, const QuadExtractionOptions& options, QuadMesh& out)
+    : V(V)
+    , F(F)
+    , topo(topo)
+    , uv(uv)
+    , options(options)
+    , out(out)
+  {
+    const int nF = static_cast<int>(F.rows());
+    flipped.assign(nF, 0);
+    for (int f = 0; f < nF; ++f)
+    {
+      flipped[f] = !(cross(z(f, 1) - z(f, 0), z(f, 2) - z(f, 0)) > 0);
+    }
+    // transitions z_g = i^r z_f + t across every inner edge, read off the map
+    rotation = Eigen::MatrixX3i::Zero(nF, 3);
+    translation.assign(3 * static_cast<std::size_t>(nF), Complex(0, 0));
+    for (int f = 0; f < nF; ++f)
+    {
+      for (int k = 0; k < 3; ++k)
+      {
+        const int g = topo.faceNeighbors(f, k);
+        if (g < 0)
+        {
+          continue;
+        }
+        const Complex fa = z(f, k);
+        const Complex fb = z(f, (k + 1) % 3);
+        const Complex ga = z(g, MeshTopology::cornerOf(F, g, F(f, k)));
+        const Complex gb = z(g, MeshTopology::cornerOf(F, g, F(f, (k + 1) % 3)));
+        int best = 0;
+        double bestError = 1e300;
+        for (int r = 0; r < 4; ++r)
+        {
+          const double error = std::abs((gb - ga) - turn(fb - fa, r));
+          if (error < bestError)
+          {
+            best = r;
+            bestError = error;
+          }
+        }
+        Complex t = ga - turn(fa, best);
+        const Complex rounded(std::round(t.real()), std::round(t.imag()));
+        if (std::abs(t - rounded) < 1e-6)
+        {
+          t = rounded;
+        }
+        else if (f < g)
+        {
+          ++out.nonIntegerTransitions;
+        }
+        rotation(f, k) = best;
+        translation[3 * f + k] = t;
+      }
+    }
+  }
+
+  Complex z(int f, int k) const { return { uv(f, 2 * k), uv(f, 2 * k + 1) }; }
+
+  Eigen::Vector3d barycentric(int f, Complex q) const
+  {
+    const Complex a = z(f, 0), b = z(f, 1), c = z(f, 2);
+    const double area = cross(b - a, c - a);
+    return Eigen::Vector3d(cross(b - q, c - q), cross(c - q, a - q), cross(a - q, b - q)) / area;
+  }
+
+  Complex across(int f, int k, Complex q) const
+  {
+    return turn(q, rotation(f, k)) + translation[3 * f + k];
+  }
+
+  /// Walks from triangle f towards q (in f's chart) to the triangle holding q.
+  bool walk(int f, Complex q, Location& at) const
+  {
+    for (int step = 0; step < options.maxWalk; ++step)
+    {
+      if (flipped[f])
+      {
+        return false;
+      }
+      const Eigen::Vector3d b = barycentric(f, q);
+      int k = 0;
+      b.minCoeff(&k);
+      if (b[k] >= -options.tolerance)
+      {
+        identify(f, q, b, at);
+        return true;
+      }
+      const int edge = (k + 1) % 3; // the edge opposite corner k
+      const int g = topo.faceNeighbors(f, edge);
+      if (g < 0)
+      {
+        return false; // beyond the boundary
+      }
+      q = across(f, edge, q);
+      f = g;
+    }
+    return false;
+  }
+
+  void identify(int f, Complex q, Eigen::Vector3d b, Location& at) const
+  {
+    int zeros = 0;
+    int zero = -1;
+    for (int k = 0; k < 3; ++k)
+    {
+      if (std::abs(b[k]) <= options.tolerance)
+      {
+        ++zeros;
+        zero = k;
+        b[k] = 0.0;
+      }
+    }
+    b = b.cwiseMax(0.0);
+    b /= b.sum();
+    at.triangle = f;
+    at.bary = b;
+    if (zeros >= 2)
+    {
+      int k = 0;
+      b.maxCoeff(&k);
+      at.key = { 0, F(f, k), 0, 0 };
+      return;
+    }
+    if (zeros == 1)
+    {
+      const int edge = (zero + 1) % 3;
+      const int e = topo.faceEdges(f, edge);
+      const int owner = topo.edgeFaces(e, 0);
+      if (owner != f && topo.faceNeighbors(f, edge) == owner)
+      {
+        q = across(f, edge, q);
+      }
+      at.key = { 1, e, std::llround(q.real()), std::llround(q.imag()) };
+      return;
+    }
+    at.key = { 2, f, std::llround(q.real()), std::llround(q.imag()) };
+  }
+
+  /// Does triangle f own the cell centre c (in its chart)? Inside: yes; on an edge or a point:
+  /// the lowest triangle (not flipped) that holds it.
+  bool owns(int f, Complex c) const
+  {
+    const Eigen::Vector3d b = barycentric(f, c);
+    if (b.minCoeff() < -options.tolerance)
+    {
+      return false;
+    }
+    int zeros = 0;
+    int zero = -1;
+    for (int k = 0; k < 3; ++k)
+    {
+      if (std::abs(b[k]) <= options.tolerance)
+      {
+        ++zeros;
+        zero = k;
+      }
+    }
+    if (zeros == 0)
+    {
+      return true;
+    }
+    if (zeros == 1)
+    {
+      const int g = topo.faceNeighbors(f, (zero + 1) % 3);
+      return g < 0 || flipped[g] || f < g;
+    }
+    int k = 0;
+    b.maxCoeff(&k);
+    const int p = F(f, k);
+    for (int i = topo.ringOffsets[p]; i < topo.ringOffsets[p + 1]; ++i)
+    {
+      const int g = topo.ringFaces[i];
+      if (g < f && !flipped[g])
+      {
+        return false;
+      }
+    }
+    return true;
+  }
+
+  void run()
+  {
+    const int nF = static_cast<int>(F.rows());
+    std::map<std::tuple<int, int, long long, long long>, int> vertexOf;
+    std::vector<Eigen::Vector3d> positions;
+    std::vector<std::array<int, 4>> quads;
+    const Complex offsets[4] = { { -0.5, -0.5 }, { 0.5, -0.5 }, { 0.5, 0.5 }, { -0.5, 0.5 } };
+    for (int f = 0; f < nF; ++f)
+    {
+      if (flipped[f])
+      {
+        continue;
+      }
+      double lo[2] = { 1e300, 1e300 };
+      double hi[2] = { -1e300, -1e300 };
+      for (int k = 0; k < 3; ++k)
+      {
+        lo[0] = std::min(lo[0], uv(f, 2 * k));
+        hi[0] = std::max(hi[0], uv(f, 2 * k));
+        lo[1] = std::min(lo[1], uv(f, 2 * k + 1));
+        hi[1] = std::max(hi[1], uv(f, 2 * k + 1));
+      }
+      for (long long a = std::llround(std::floor(lo[0] - 0.5)); a + 0.5 <= hi[0] + 1e-9; ++a)
+      {
+        for (long long b = std::llround(std::floor(lo[1] - 0.5)); b + 0.5 <= hi[1] + 1e-9; ++b)
+        {
+          const Complex c(a + 0.5, b + 0.5);
+          if (c.real() < lo[0] - 1e-9 || c.imag() < lo[1] - 1e-9 || !owns(f, c))
+          {
+            continue;
+          }
+          std::array<int, 4> quad;
+          bool found = true;
+          for (int i = 0; i < 4 && found; ++i)
+          {
+            Location at;
+            found = walk(f, c + offsets[i], at);
+            if (!found)
+            {
+              break;
+            }
+            auto [it, added] = vertexOf.emplace(at.key, static_cast<int>(positions.size()));
+            if (added)
+            {
+              const Eigen::Vector3d p = at.bary[0] * V.row(F(at.triangle, 0)).transpose() +
+                at.bary[1] * V.row(F(at.triangle, 1)).transpose() +
+                at.bary[2] * V.row(F(at.triangle, 2)).transpose();
+              positions.push_back(p);
+              out.vertexTriangle.push_back(at.triangle);
+              out.vertexPoint.push_back(std::get<0>(at.key) == 0 ? std::get<1>(at.key) : -1);
+            }
+            quad[i] = it->second;
+          }
+          if (!found)
+          {
+            ++out.cellsOffSurface;
+            continue;
+          }
+          std::array<int, 4> sorted = quad;
+          std::sort(sorted.begin(), sorted.end());
+          if (std::adjacent_find(sorted.begin(), sorted.end()) != sorted.end())
+          {
+            ++out.cellsDegenerate;
+            continue;
+          }
+          quads.push_back(quad);
+          out.quadTriangle.push_back(f);
+        }
+      }
+    }
+    removeConflicts(quads);
+    // keep the vertices quads use, in order
+    std::vector<int> newId(positions.size(), -1);
+    int used = 0;
+    for (const auto& q : quads)
+    {
+      for (const int v : q)
+      {
+        if (newId[v] < 0)
+        {
+          newId[v] = used++;
+        }
+      }
+    }
+    out.V.resize(used, 3);
+    std::vector<int> triangle(used), point(used);
+    for (std::size_t v = 0; v < positions.size(); ++v)
+    {
+      if (newId[v] >= 0)
+      {
+        out.V.row(newId[v]) = positions[v].transpose();
+        triangle[newId[v]] = out.vertexTriangle[v];
+        point[newId[v]] = out.vertexPoint[v];
+      }
+    }
+    out.vertexTriangle = triangle;
+    out.vertexPoint = point;
+    out.Q.resize(static_cast<Eigen::Index>(quads.size()), 4);
+    for (std::size_t i = 0; i < quads.size(); ++i)
+    {
+      for (int k = 0; k < 4; ++k)
+      {
+        out.Q(static_cast<Eigen::Index>(i), k) = newId[quads[i][k]];
+      }
+    }
+  }
+
+  /// Removes repeated quads (keeping one) and every quad with a directed edge another quad also
+  /// has, or on an edge of more than two quads: what overlapping cells of a folded map leave.
+  void removeConflicts(std::vector<std::array<int, 4>>& quads)
+  {
+    std::map<std::array<int, 4>, int> seen;
+    std::vector<char> keep(quads.size(), 1);
+    for (std::size_t i = 0; i < quads.size(); ++i)
+    {
+      std::array<int, 4> key = quads[i];
+      std::rotate(key.begin(), std::min_element(key.begin(), key.end()), key.end());
+      if (!seen.emplace(key, static_cast<int>(i)).second)
+      {
+        keep[i] = 0;
+        ++out.cellsConflicting;
+      }
+    }
+    std::map<std::pair<int, int>, std::vector<int>> directed;
+    std::map<std::pair<int, int>, int> undirected;
+    for (std::size_t i = 0; i < quads.size(); ++i)
+    {
+      if (!keep[i])
+      {
+        continue;
+      }
+      for (int k = 0; k < 4; ++k)
+      {
+        const int a = quads[i][k], b = quads[i][(k + 1) % 4];
+        directed[{ a, b }].push_back(static_cast<int>(i));
+        ++undirected[{ std::min(a, b), std::max(a, b) }];
+      }
+    }
+    for (std::size_t i = 0; i < quads.size(); ++i)
+    {
+      if (!keep[i])
+      {
+        continue;
+      }
+      for (int k = 0; k < 4; ++k)
+      {
+        const int a = quads[i][k], b = quads[i][(k + 1) % 4];
+        if (directed[{ a, b }].size() > 1 || undirected[{ std::min(a, b), std::max(a, b) }] > 2)
+        {
+          keep[i] = 0;
+          ++out.cellsConflicting;
+          break;
+        }
+      }
+    }
+    std::vector<std::array<int, 4>> kept;
+    std::vector<int> keptTriangle;
+    for (std::size_t i = 0; i < quads.size(); ++i)
+    {
+      if (keep[i])
+      {
+        kept.push_back(quads[i]);
+        keptTriangle.push_back(out.quadTriangle[i]);
+      }
+    }
+    quads.swap(kept);
+    out.quadTriangle.swap(keptTriangle);
+  }
+
+private:
+  const Eigen::MatrixX3d& V;
+  const Eigen::MatrixX3i& F;
+  const MeshTopology& topo;
+  const Eigen::MatrixXd& uv;
+  const QuadExtractionOptions& options;
+  QuadMesh& out;
+  std::vector<char> flipped;
+  Eigen::MatrixX3i rotation;
+  std::vector<Complex> translation;
+};
+}
+
+QuadMesh extractQuads(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F,
+  const MeshTopology& topo, const Eigen::MatrixXd& cornerUV, const QuadExtractionOptions& options)
+{
+  if (cornerUV.rows() != F.rows() || cornerUV.cols() != 6 || topo.numFaces != F.rows() ||
+    topo.numVertices != V.rows())
+  {
+    throw std::invalid_argument("extractQuads: sizes do not match");
+  }
+  if (!topo.isManifold())
+  {
+    throw std::invalid_argument("extractQuads: " + topo.describeDefects());
+  }
+  if (!cornerUV.allFinite())
+  {
+    throw std::invalid_argument("extractQuads: the map has non-finite values");
+  }
+  QuadMesh out;
+  Extractor extractor(V, F, topo, cornerUV, options, out);
+  extractor.run();
+  return out;
+}
+
+QuadQuality measureQuads(const Eigen::MatrixX3d& V, const Eigen::MatrixX4i& Q)
+{
+  QuadQuality m;
+  const int nV = static_cast<int>(V.rows());
+  const int nQ = static_cast<int>(Q.rows());
+  m.faces = nQ;
+  std::map<std::pair<int, int>, std::array<int, 2>> edges; // (faces, same-direction clashes)
+  std::vector<char> usedVertex(nV, 0);
+  std::vector<double> angles;
+  angles.reserve(4 * static_cast<std::size_t>(nQ));
+  m.scaledJacobian.resize(nQ);
+  double jacobianSum = 0.0;
+  m.minScaledJacobian = nQ > 0 ? 1.0 : 0.0;
+  std::map<std::pair<int, int>, int> directed;
+  for (int i = 0; i < nQ; ++i)
+  {
+    std::array<int, 4> q = { Q(i, 0), Q(i, 1), Q(i, 2), Q(i, 3) };
+    std::array<int, 4> sorted = q;
+    std::sort(sorted.begin(), sorted.end());
+    m.quads += std::adjacent_find(sorted.begin(), sorted.end()) == sorted.end();
+    const Eigen::Vector3d n =
+      (Eigen::Vector3d(V.row(q[2]) - V.row(q[0])).cross(Eigen::Vector3d(V.row(q[3]) - V.row(q[1]))))
+        .normalized();
+    double smallest = 1.0;
+    for (int k = 0; k < 4; ++k)
+    {
+      usedVertex[q[k]] = 1;
+      const int a = q[k], b = q[(k + 1) % 4];
+      auto& e = edges[{ std::min(a, b), std::max(a, b) }];
+      ++e[0];
+      if (++directed[{ a, b }] > 1)
+      {
+        ++e[1];
+      }
+      const Eigen::Vector3d next = V.row(q[(k + 1) % 4]) - V.row(q[k]);
+      const Eigen::Vector3d prev = V.row(q[(k + 3) % 4]) - V.row(q[k]);
+      const double ln = next.norm(), lp = prev.norm();
+      const double sj = ln > 0 && lp > 0 ? next.cross(prev).dot(n) / (ln * lp) : 0.0;
+      smallest = std::min(smallest, std::isfinite(sj) ? sj : 0.0);
+      if (ln > 0 && lp > 0)
+      {
+        angles.push_back(std::acos(std::clamp(next.dot(prev) / (ln * lp), -1.0, 1.0)));
+      }
+    }
+    m.scaledJacobian[i] = smallest;
+    m.minScaledJacobian = std::min(m.minScaledJacobian, smallest);
+    jacobianSum += smallest;
+  }
+  m.meanScaledJacobian = nQ > 0 ? jacobianSum / nQ : 0.0;
+  m.valence = Eigen::VectorXi::Zero(nV);
+  std::vector<char> boundary(nV, 0);
+  std::vector<double> lengths;
+  std::vector<int> parent(nV);
+  for (int v = 0; v < nV; ++v)
+  {
+    parent[v] = v;
+  }
+  std::vector<int> boundaryParent(nV);
+  for (int v = 0; v < nV; ++v)
+  {
+    boundaryParent[v] = v;
+  }
+  for (const auto& [e, count] : edges)
+  {
+    ++m.valence[e.first];
+    ++m.valence[e.second];
+    lengths.push_back((V.row(e.first) - V.row(e.second)).norm());
+    unite(parent, e.first, e.second);
+    if (count[0] > 2 || count[1] > 0)
+    {
+      ++m.nonManifoldEdges;
+    }
+    if (count[0] == 1)
+    {
+      ++m.boundaryEdges;
+      boundary[e.first] = boundary[e.second] = 1;
+      unite(boundaryParent, e.first, e.second);
+    }
+  }
+  auto rsd = [](const std::vector<double>& x) {
+    if (x.empty())
+    {
+      return 0.0;
+    }
+    double mean = 0.0;
+    for (const double v : x)
+    {
+      mean += v;
+    }
+    mean /= static_cast<double>(x.size());
+    double var = 0.0;
+    for (const double v : x)
+    {
+      var += (v - mean) * (v - mean);
+    }
+    var /= static_cast<double>(x.size());
+    return mean > 0 ? std::sqrt(var) / mean : 0.0;
+  };
+  m.edgeLengthRSD = rsd(lengths);
+  m.angleRSD = rsd(angles);
+  for (int v = 0; v < nV; ++v)
+  {
+    if (!usedVertex[v])
+    {
+      continue;
+    }
+    ++m.vertices;
+    if (boundary[v])
+    {
+      m.irregularBoundary += m.valence[v] != 2 && m.valence[v] != 3;
+      m.boundaryLoops += findRoot(boundaryParent, v) == v;
+    }
+    else
+    {
+      m.irregularInner += m.valence[v] != 4;
+    }
+    m.components += findRoot(parent, v) == v;
+  }
+  m.eulerCharacteristic = m.vertices - static_cast<int>(edges.size()) + m.faces;
+  return m;
+}
+
+}

@@ -1,0 +1,80 @@
+// QuadExtraction.h: the quad mesh of an integer-grid map (stage 5) and its quality figures.
+#ifndef quadcover_QuadExtraction_h
+#define quadcover_QuadExtraction_h
+
+#include "MeshTopology.h"
+
+#include <Eigen/Core>
+
+#include <vector>
+
+namespace quadcover
+{
+
+struct QuadExtractionOptions
+{
+  /// Barycentric tolerance for a grid point on a triangle's edge or corner.
+  double tolerance = 1e-7;
+  /// Triangles a walk from a cell's centre to one of its corners may cross.
+  int maxWalk = 10000;
+};
+
+struct QuadMesh
+{
+  Eigen::MatrixX3d V;              ///< quad vertices, on the input surface
+  Eigen::MatrixX4i Q;              ///< quads, counterclockwise seen from the surface's orientation
+  std::vector<int> vertexTriangle; ///< the input triangle each vertex lies in
+  std::vector<int> vertexPoint;    ///< the input point a vertex sits on, or -1
+  std::vector<int> quadTriangle;   ///< the input triangle holding each quad's centre
+  // what could not become a quad (all 0 on a seamless, flip-free map)
+  int cellsOffSurface = 0;       ///< a corner beyond the boundary, or a walk that failed
+  int cellsDegenerate = 0;       ///< two corners at one grid point
+  int cellsConflicting = 0;      ///< removed: they overlapped others (folded maps)
+  int nonIntegerTransitions = 0; ///< inner edges whose translation is not integer
+};
+
+/**
+ * Cuts the quads out of an integer-grid map: every unit cell [a, a+1] x [b, b+1] of the grid
+ * becomes one quad, found through its centre (a + 1/2, b + 1/2), which lies in exactly one
+ * triangle (ties on edges and points go to the lowest triangle). Its four corners are found by
+ * walking in the (u, v) plane from the centre, across edges and seams (through the transition
+ * functions read off the map), to the triangle that holds each corner; a corner on a point, on
+ * an edge or inside a triangle gets one identity wherever it is reached from, so that quads share
+ * vertices across seams and a branch point of index k/4 becomes a vertex of valence 4 - k.
+ * Triangles with a flipped (u, v) image hold no quad centre and stop walks; quads that still
+ * overlap (the same corner reached twice along one edge direction) are removed and counted, so
+ * the output stays manifold.
+ * @param[in] cornerUV #F x 6 (u, v at corners 0, 1, 2), as computeParameterization gives
+ * @throws std::invalid_argument on sizes that do not match or a non-manifold surface
+ */
+QuadMesh extractQuads(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F,
+  const MeshTopology& topo, const Eigen::MatrixXd& cornerUV,
+  const QuadExtractionOptions& options = QuadExtractionOptions());
+
+/// The paper's Table 1 figures and more, for a quad (or polygon) mesh.
+struct QuadQuality
+{
+  int vertices = 0;
+  int faces = 0;
+  int quads = 0;             ///< faces with four distinct corners
+  int irregularInner = 0;    ///< inner vertices of valence other than 4
+  int irregularBoundary = 0; ///< boundary vertices of valence other than 2 (corner) or 3
+  double edgeLengthRSD = 0;  ///< relative standard deviation of edge lengths
+  double angleRSD = 0;       ///< of corner angles (about pi/2)
+  double minScaledJacobian = 0;
+  double meanScaledJacobian = 0;
+  int nonManifoldEdges = 0; ///< edges of more than two faces, or twice in one direction
+  int boundaryEdges = 0;
+  int boundaryLoops = 0;
+  int eulerCharacteristic = 0;
+  int components = 0;
+  Eigen::VectorXi valence;        ///< per vertex
+  Eigen::VectorXd scaledJacobian; ///< per face: the smallest over its corners
+};
+
+/// Figures of a quad mesh (vertices V, faces Q as 4 vertex ids).
+QuadQuality measureQuads(const Eigen::MatrixX3d& V, const Eigen::MatrixX4i& Q);
+
+}
+
+#endif

@@ -1,0 +1,55 @@
+// The whole core pipeline as the filters run it, for the core tests of the later stages.
+#ifndef quadcover_TestChain_h
+#define quadcover_TestChain_h
+
+#include "CurvatureFrames.h"
+#include "FrameField.h"
+#include "FrameSmoother.h"
+#include "Matchings.h"
+#include "MeshTopology.h"
+#include "Parameterization.h"
+#include "Surfaces.h"
+
+namespace quadcover
+{
+struct Chain
+{
+  Surface s;
+  MeshTopology topo;
+  FrameGeometry geometry;
+  Eigen::MatrixX3d frameU;
+  FrameTopology field;
+  Parameterization map;
+};
+
+/// Curvature frames, smoothing, matchings with branch-point optimization and the frames fitted
+/// to them (the filters' defaults), then the map at about `quads` quads.
+inline Chain runChain(
+  Surface s, double quads, ParameterizationOptions options = ParameterizationOptions())
+{
+  Chain r{ std::move(s), {}, {}, {}, {}, {} };
+  r.topo = buildTopology(r.s.F, static_cast<int>(r.s.V.rows()));
+  r.geometry = computeFrameGeometry(r.s.V, r.s.F, r.topo);
+  const CurvatureField c = computeCurvatureField(r.s.V, r.s.F, r.topo);
+  const SmootherResult smooth =
+    smoothFrames(r.s.V, r.s.F, r.topo, r.geometry, c.frameU, c.frameV, c.weight);
+  r.frameU = smooth.frameU;
+  r.field = computeMatchings(r.s.F, r.topo, r.geometry, r.frameU);
+  const BranchPointReport report =
+    optimizeBranchPoints(r.s.F, r.topo, r.geometry, r.frameU, r.field);
+  if (report.pathsChanged > 0)
+  {
+    const Eigen::VectorXd alpha =
+      fitFramesToMatchings(r.s.V, r.s.F, r.topo, r.geometry, r.frameU, r.field.matching, c.weight);
+    Eigen::MatrixX3d V = r.frameU;
+    rotateFrames(r.geometry.bases, alpha, r.frameU, V);
+    r.field = evaluateMatchings(r.s.F, r.topo, r.geometry, r.frameU, r.field.matching);
+  }
+  options.gridSize = gridSizeForQuadCount(r.s.V, r.s.F, quads);
+  r.map =
+    computeParameterization(r.s.V, r.s.F, r.topo, r.geometry, r.frameU, r.field.matching, options);
+  return r;
+}
+}
+
+#endif
