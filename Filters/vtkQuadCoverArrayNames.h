@@ -89,6 +89,35 @@ constexpr const char* SeamEdgeCount = "SeamEdgeCount";
 constexpr const char* BranchPointsOnGrid = "BranchPointsOnGrid";
 /// field, 1 x double: largest distance of a seam translation from Z^2 (grid units).
 constexpr const char* SeamTranslationError = "SeamTranslationError";
+
+// ---- vtkQuadExtractor (output: the quad mesh) ----
+/// point, 1 x int: number of edges at the quad vertex.
+constexpr const char* Valence = "Valence";
+/// cell, 1 x double: the quad's scaled Jacobian, the smallest over its corners (1 for a square).
+constexpr const char* ScaledJacobian = "ScaledJacobian";
+/// field, 1 x double: share of faces with four distinct corners (1 = all quads).
+constexpr const char* QuadShare = "QuadShare";
+/// field, 1 x int, 2 tuples: inner vertices of valence other than 4, boundary vertices of valence
+/// other than 2 or 3.
+constexpr const char* IrregularVertices = "IrregularVertices";
+/// field, 1 x double: relative standard deviation (std / mean) of the edge lengths.
+constexpr const char* EdgeLengthRSD = "EdgeLengthRSD";
+/// field, 1 x double: relative standard deviation of the quads' corner angles.
+constexpr const char* AngleRSD = "AngleRSD";
+/// field, 1 x double, 2 tuples: smallest and mean ScaledJacobian.
+constexpr const char* ScaledJacobianStatistics = "ScaledJacobianStatistics";
+/// field, 1 x int: edges of more than two faces or used twice in one direction.
+constexpr const char* NonManifoldEdges = "NonManifoldEdges";
+/// field, 1 x int: V - E + F of the quad mesh.
+constexpr const char* EulerCharacteristic = "EulerCharacteristic";
+/// field, 1 x int: boundary loops of the quad mesh.
+constexpr const char* BoundaryLoops = "BoundaryLoops";
+/// field, 1 x double, 3 tuples: two-sided Hausdorff distance between the quad mesh and the
+/// input, then input to quads and quads to input, in % of the input's bounding-box diagonal.
+constexpr const char* HausdorffDistance = "HausdorffDistance";
+/// field, 1 x int, 3 tuples: grid cells that gave no quad: a corner off the surface, two corners
+/// at one grid point, overlapping others.
+constexpr const char* DroppedCells = "DroppedCells";
 }
 
 #endif

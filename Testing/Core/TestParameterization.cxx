@@ -416,3 +416,55 @@ TEST(Parameterization, BranchPointsOfOneTriangleNeverShareAGridPoint)
   }
   EXPECT_EQ(pairs, 2) << "one edge, seen from its two triangles";
 }
+
+TEST(Parameterization, NegativeConesKeepTheirIndex)
+{
+  // A flat square with one cone at its centre point: frames turning by -phi/4 (index -1/4,
+  // valence 5) or +phi/4 (index +1/4, valence 3) around it. The map's angles around the centre
+  // must add up to 2 pi (1 - index): 450 or 270 degrees.
+  for (const double index : { -0.25, 0.25 })
+  {
+    Surface s = makeSaddle(1e9, 2.0, 40); // flat
+    MeshTopology topo = buildTopology(s.F, static_cast<int>(s.V.rows()));
+    int centre = 0;
+    for (int v = 0; v < s.V.rows(); ++v)
+    {
+      if (s.V.row(v).head<2>().norm() < s.V.row(centre).head<2>().norm())
+      {
+        centre = v;
+      }
+    }
+    const Eigen::Vector3d c = s.V.row(centre);
+    const FrameGeometry g = computeFrameGeometry(s.V, s.F, topo);
+    Eigen::MatrixX3d U(s.F.rows(), 3);
+    for (int f = 0; f < s.F.rows(); ++f)
+    {
+      const Eigen::Vector3d m =
+        (s.V.row(s.F(f, 0)) + s.V.row(s.F(f, 1)) + s.V.row(s.F(f, 2))).transpose() / 3.0 - c;
+      const double phi = std::atan2(m.y(), m.x());
+      const double theta = index * phi; // turns by 2 pi index once around
+      U.row(f) << std::cos(theta), std::sin(theta), 0.0;
+    }
+    FrameTopology t = computeMatchings(s.F, topo, g, U);
+    ASSERT_NEAR(t.index[centre], index, 1e-9) << "the field's index at the centre";
+    ParameterizationOptions options;
+    options.gridSize = 0.25;
+    options.alignBoundary = false;
+    const Parameterization map = computeParameterization(s.V, s.F, topo, g, U, t.matching, options);
+    double sum = 0.0;
+    for (int f = 0; f < s.F.rows(); ++f)
+    {
+      for (int k = 0; k < 3; ++k)
+      {
+        if (s.F(f, k) == centre)
+        {
+          const Complex z = checks::cornerZ(map.cornerUV, f, k);
+          const Complex a = checks::cornerZ(map.cornerUV, f, (k + 1) % 3) - z;
+          const Complex b = checks::cornerZ(map.cornerUV, f, (k + 2) % 3) - z;
+          sum += std::arg(b / a);
+        }
+      }
+    }
+    EXPECT_NEAR(sum, 2 * Pi * (1 - index), 1e-6) << "index " << index;
+  }
+}

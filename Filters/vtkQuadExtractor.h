@@ -1,0 +1,62 @@
+/**
+ * @class   vtkQuadExtractor
+ * @brief   the quad mesh of an integer-grid map (QuadCover stage 5), with its quality figures
+ *
+ * Every unit cell of the grid that the map covers becomes one quad: its centre lies in exactly
+ * one triangle, and its four corners are found by walking in the (u, v) plane from there, across
+ * edges and seams (through the transition functions read off the map), to the triangles that
+ * hold them. Corners found from different cells get one identity, so quads share vertices
+ * across seams, and a branch point of index k/4 becomes a vertex of valence 4 - k. Quad vertices
+ * lie on the input surface (barycentric in their triangle).
+ *
+ * Robustness: triangles with a flipped (u, v) image hold no quad centre and stop walks; cells
+ * with a corner beyond the boundary or two corners at one grid point are skipped; quads that
+ * still overlap (folded maps) are removed so that the output stays manifold. All are counted in
+ * DroppedCells (zero on a seamless, flip-free map).
+ *
+ * Input: a triangle surface with the cell array CornerUV (6 components, SetInputArrayToProcess(0,
+ * ...)), as vtkQuadCoverSolver writes it; also its SplitSeams output (points are merged back
+ * through SurfacePointId).
+ *
+ * Output: vtkQuad cells; point data Valence; cell data ScaledJacobian (the smallest over the
+ * quad's corners); field data with the figures of the paper's Table 1 and more: QuadShare,
+ * IrregularVertices (inner, boundary), EdgeLengthRSD, AngleRSD, ScaledJacobianStatistics (min,
+ * mean), NonManifoldEdges, EulerCharacteristic, BoundaryLoops, HausdorffDistance (two-sided, and
+ * each way, in % of the input's bounding-box diagonal) and DroppedCells.
+ * @sa vtkQuadCoverSolver
+ */
+#ifndef vtkQuadExtractor_h
+#define vtkQuadExtractor_h
+
+#include "vtkPolyDataAlgorithm.h"
+#include "vtkQuadCoverFiltersModule.h" // for export macro
+
+class VTKQUADCOVERFILTERS_EXPORT vtkQuadExtractor : public vtkPolyDataAlgorithm
+{
+public:
+  static vtkQuadExtractor* New();
+  vtkTypeMacro(vtkQuadExtractor, vtkPolyDataAlgorithm);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  ///@{
+  /** Compute the two-sided Hausdorff distance to the input (default on; it costs about as much
+   * as the extraction). */
+  vtkSetMacro(ComputeHausdorffDistance, bool);
+  vtkGetMacro(ComputeHausdorffDistance, bool);
+  vtkBooleanMacro(ComputeHausdorffDistance, bool);
+  ///@}
+
+protected:
+  vtkQuadExtractor();
+  ~vtkQuadExtractor() override = default;
+
+  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+
+  bool ComputeHausdorffDistance = true;
+
+private:
+  vtkQuadExtractor(const vtkQuadExtractor&) = delete;
+  void operator=(const vtkQuadExtractor&) = delete;
+};
+
+#endif
