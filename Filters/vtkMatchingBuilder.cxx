@@ -117,11 +117,13 @@ int vtkMatchingBuilder::RequestData(
         quadcover::fitFramesToMatchings(mesh.V, mesh.F, mesh.topo, geometry, U, t.matching, weight);
       fittedU = U;
       vtkDataArray* v = surface->GetCellData()->GetArray(names::FrameV);
-      fittedV = v && v->GetNumberOfComponents() == 3 && v->GetNumberOfTuples() == nf
-        ? vtkQuadCoverEigen::FromArray3(v)
-        : U;
-      if (fittedV.data() == U.data() || fittedV.rows() != nf)
+      if (v && v->GetNumberOfComponents() == 3 && v->GetNumberOfTuples() == nf)
       {
+        fittedV = vtkQuadCoverEigen::FromArray3(v);
+      }
+      else
+      {
+        fittedV.resize(nf, 3);
         for (vtkIdType f = 0; f < nf; ++f)
         {
           fittedV.row(f) = geometry.bases.normal.row(f).cross(U.row(f));

@@ -294,13 +294,8 @@ BranchPointReport optimizeBranchPoints(const Eigen::MatrixX3i& F, const MeshTopo
       }
     };
     std::vector<int> high;
-    std::vector<int> singular;
     for (int v = 0; v < nv; ++v)
     {
-      if (q[v] != 0)
-      {
-        singular.push_back(v);
-      }
       if (q[v] >= 2)
       {
         high.push_back(v);
@@ -309,7 +304,7 @@ BranchPointReport optimizeBranchPoints(const Eigen::MatrixX3i& F, const MeshTopo
     std::vector<int> pathHops(nv, 0);
     for (const int a : high)
     {
-      ++report.split;
+      report.split += 1; // quarters that find no place are counted in splitFailed
       while (q[a] > 0)
       {
         // targets: regular, splitDistance edges from a along the path, and outside every other

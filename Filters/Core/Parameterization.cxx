@@ -738,6 +738,7 @@ Parameterization computeParameterization(const Eigen::MatrixX3d& V, const Eigen:
   }
   // Boundary edges along a combed frame direction: the other coordinate is an integer line.
   const Eigen::VectorXd theta = vectorAngles(geometry.bases, frameU);
+  std::vector<char> onLine(2 * static_cast<std::size_t>(nS), 0); // u or v of a sector on a line
   if (options.alignBoundary)
   {
     const double tolerance = options.boundaryTolerance * Pi / 180.0;
@@ -782,19 +783,34 @@ Parameterization computeParameterization(const Eigen::MatrixX3d& V, const Eigen:
       {
         const int s = out.cornerSector[3 * f + (k + end) % 3];
         elim.constrain({ { 2 * s + component, 1.0 }, { line, -1.0 } });
+        onLine[2 * s + component] = 1;
       }
     }
   }
-  // One point per component fixed at (0, 0): the map is defined up to translation.
+  // One point per component fixed at (0, 0): the map is defined up to translation. The point is
+  // one that is on the grid anyway (a branch point, else a boundary corner on two grid lines),
+  // so that the fixing costs nothing; only without either is a regular point put on the grid.
   {
-    std::vector<char> pinned(topo.numComponents(), 0);
+    std::vector<int> pin(topo.numComponents(), -1);
+    std::vector<int> rank(topo.numComponents(), 3);
     for (int f = 0; f < nF; ++f)
     {
       const int c = topo.faceComponent[f];
-      if (c >= 0 && !pinned[c])
+      for (int k = 0; k < 3 && c >= 0; ++k)
       {
-        pinned[c] = 1;
-        const int s = out.cornerSector[3 * f];
+        const int s = out.cornerSector[3 * f + k];
+        const int r = branch[F(f, k)] ? 0 : (onLine[2 * s] && onLine[2 * s + 1] ? 1 : 2);
+        if (r < rank[c])
+        {
+          rank[c] = r;
+          pin[c] = s;
+        }
+      }
+    }
+    for (const int s : pin)
+    {
+      if (s >= 0)
+      {
         elim.constrain({ { 2 * s, 1.0 } });
         elim.constrain({ { 2 * s + 1, 1.0 } });
       }
@@ -1174,27 +1190,20 @@ Parameterization computeParameterization(const Eigen::MatrixX3d& V, const Eigen:
   }
 
   // ---- the real unknowns with the integers fixed, then flipped triangles untangled ----
+  // Simple rounding: the real unknowns solved again with the integers fixed (H's real block).
   auto solveFixed = [&]() {
     const auto started = std::chrono::steady_clock::now();
     Eigen::VectorXd result(n);
-    if (round)
+    result.tail(numInteger) = fixedValues;
+    if (numReal > 0)
     {
-      result.tail(numInteger) = fixedValues;
-    }
-    const int free = round ? numReal : n;
-    if (free > 0)
-    {
-      const SparseMatrix Dfree = D.leftCols(free); // real symbols are the real columns
-      Eigen::VectorXd r = rhs;
-      if (round)
-      {
-        Eigen::VectorXd integers = Eigen::VectorXd::Zero(n);
-        integers.tail(numInteger) = fixedValues;
-        r -= D * (P * integers);
-      }
-      const SparseMatrix Hfree = H.topLeftCorner(free, free); // lower triangle
-      Eigen::MatrixXd b = Dfree.transpose() * r;
-      result.head(free) = solveSpd(Hfree, b, "Poisson").col(0);
+      const SparseMatrix Dreal = D.leftCols(numReal); // the real symbols are the real columns
+      Eigen::VectorXd integers = Eigen::VectorXd::Zero(n);
+      integers.tail(numInteger) = fixedValues;
+      const Eigen::VectorXd r = rhs - D * (P * integers);
+      const SparseMatrix Hreal = H.topLeftCorner(numReal, numReal);
+      result.head(numReal) =
+        solveSpd(Hreal, Eigen::MatrixXd(Dreal.transpose() * r), "Poisson").col(0);
     }
     out.solveSeconds.push_back(seconds(started));
     return result;

@@ -102,8 +102,8 @@ class CommandLine(unittest.TestCase):
         # grid, no flips, about --target-quads cells; the options reach the solver.
         out = os.path.join(self.dir, "s.vtp")
         stats = os.path.join(self.dir, "s.json")
-        code, _, err = run(os.path.join(DATA, "sphere.obj"), "-o", out, "--target-quads", "500",
-                           "--stats", stats)
+        code, _, err = run(os.path.join(DATA, "sphere.obj"), "-o", out, "--stage", "param",
+                           "--target-quads", "500", "--stats", stats)
         self.assertEqual(code, 0, err)
         with open(stats) as f:
             s = json.load(f)
@@ -124,7 +124,8 @@ class CommandLine(unittest.TestCase):
         self.assertEqual(pd.GetCellData().GetArray("CornerUV").GetNumberOfComponents(), 6)
         self.assertEqual(pd.GetCellData().GetArray("Seam").GetNumberOfComponents(), 3)
         # --edge-length wins over --target-quads; --no-pure-quads and --rounding reach the filter
-        code, _, err = run(os.path.join(DATA, "sphere.obj"), "-o", out, "--edge-length", "0.25",
+        code, _, err = run(os.path.join(DATA, "sphere.obj"), "-o", out, "--stage", "param",
+                           "--edge-length", "0.25",
                            "--no-pure-quads", "--rounding", "simple", "--split-seams",
                            "--stats", stats)
         self.assertEqual(code, 0, err)
@@ -136,6 +137,35 @@ class CommandLine(unittest.TestCase):
         pd = reader.GetOutput()
         self.assertIsNotNone(pd.GetPointData().GetTCoords())
         self.assertGreater(pd.GetNumberOfPoints(), 2562)  # cut open along the seams
+
+    def test_quads_by_default_in_every_output_format(self):
+        # The default stage: an all-quad, closed, manifold mesh of the sphere with its 8
+        # valence-3 vertices, written as .obj, .ply, .vtk and .vtp.
+        stats = os.path.join(self.dir, "q.json")
+        for ext in (".vtp", ".obj", ".ply", ".vtk"):
+            out = os.path.join(self.dir, "q" + ext)
+            code, _, err = run(os.path.join(DATA, "sphere.obj"), "-o", out, "--target-quads",
+                               "600", "--stats", stats)
+            self.assertEqual(code, 0, err)
+            with open(stats) as f:
+                s = json.load(f)
+            self.assertEqual(s["stage"], "quads")
+            q = s["quads"]
+            self.assertEqual(q["quad_share"], 1)
+            self.assertEqual(q["irregular_inner"], 8)
+            self.assertEqual(q["non_manifold_edges"], 0)
+            self.assertEqual(q["euler_characteristic"], 2)
+            self.assertEqual(q["boundary_loops"], 0)
+            self.assertEqual(q["dropped_cells"], 0)
+            self.assertLess(q["hausdorff_percent"], 2.0)
+            reader = {".vtp": vtk.vtkXMLPolyDataReader, ".obj": vtk.vtkOBJReader,
+                      ".ply": vtk.vtkPLYReader, ".vtk": vtk.vtkPolyDataReader}[ext]()
+            reader.SetFileName(out)
+            reader.Update()
+            pd = reader.GetOutput()
+            self.assertEqual(pd.GetNumberOfCells(), q["faces"], ext)
+            sizes = {pd.GetCell(i).GetNumberOfPoints() for i in range(pd.GetNumberOfCells())}
+            self.assertEqual(sizes, {4}, ext)
 
     def test_smoothing_options_reach_the_filter(self):
         # Without features the cube holds nothing; with them its edges are held.
@@ -164,7 +194,8 @@ class CommandLine(unittest.TestCase):
             w.SetFileName(path)
             w.SetInputData(reader.GetOutput())
             w.Write()
-            code, _, err = run(path, "-o", os.path.join(self.dir, "out.vtk"))
+            code, _, err = run(path, "-o", os.path.join(self.dir, "out.vtk"), "--stage",
+                               "curvature")
             self.assertEqual(code, 0, ext + ": " + err)
             legacy = vtk.vtkPolyDataReader()
             legacy.SetFileName(os.path.join(self.dir, "out.vtk"))
@@ -274,7 +305,7 @@ class CommandLine(unittest.TestCase):
                        "0 0 0 1 0 0 0 1 0 1 1 0 3 0 0 4 0 0 3 1 0 4 1 0\n"
                        "TRIANGLE_STRIPS 1 11\n10 0 1 2 3 3 4 4 5 6 7\n")
         out = os.path.join(self.dir, "strip.vtp")
-        code, _, err = run(p, "-o", out)
+        code, _, err = run(p, "-o", out, "--stage", "curvature")
         self.assertEqual(code, 0, err)
         self.assertEqual(self.check_frames(out).GetNumberOfCells(), 4)
 
@@ -298,7 +329,7 @@ class CommandLine(unittest.TestCase):
 
         def mean_abs_uz(*extra):
             out = os.path.join(self.dir, "u.vtp")
-            code, _, err = run(path, "-o", out, *extra)
+            code, _, err = run(path, "-o", out, "--stage", "curvature", *extra)
             self.assertEqual(code, 0, err)
             u = self.check_frames(out).GetCellData().GetArray("FrameU")
             return sum(abs(u.GetComponent(i, 2)) for i in range(u.GetNumberOfTuples())) \
@@ -320,7 +351,6 @@ class CommandLine(unittest.TestCase):
                  ([knot], r"no output file"),
                  ([knot, "-o", "x.txt"], r"cannot write .*unknown extension"),
                  ([knot, "-o", "x.vtp", "--stage", "bogus"], r"unknown stage 'bogus'"),
-                 ([knot, "-o", "x.vtp", "--stage", "quads"], r"stage 'quads' .*not built yet"),
                  ([knot, "-o", "x.vtp", "--smoothing", "1.5"], r"invalid value"),
                  ([knot, "-o", "x.vtp", "--iterations", "2.5"], r"invalid value"),
                  ([knot, "-o", "x.vtp", "--threads", "1e10"], r"invalid value"),
