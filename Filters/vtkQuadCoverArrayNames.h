@@ -78,6 +78,9 @@ constexpr const char* GridScale = "GridScale";
 /// field, 1 x int, 3 tuples: triangles with a flipped or degenerate (u, v) image in the
 /// continuous minimizer, after rounding, and in the output map (after untangling).
 constexpr const char* FlippedTriangles = "FlippedTriangles";
+/// field, 1 x int: inner points around which the map's angles do not add up to 2 pi (1 - index)
+/// (the map winds around them unlike the frame field; 0 unless untangling failed there).
+constexpr const char* WindingErrors = "WindingErrors";
 /// field, 1 x double, 3 tuples: sum_f A_f |grad phi - K|^2 / (A |K|^2) of the continuous
 /// minimizer, after rounding, and of the output map (0 is a perfect fit, 1 a constant map).
 constexpr const char* ParameterizationEnergy = "ParameterizationEnergy";

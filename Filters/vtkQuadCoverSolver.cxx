@@ -115,6 +115,11 @@ int vtkQuadCoverSolver::RequestData(
     const quadcover::Parameterization map =
       quadcover::computeParameterization(mesh.V, mesh.F, mesh.topo, geometry, U, matching, options);
     this->UpdateProgress(0.9);
+    if (map.wrongWindings > 0)
+    {
+      vtkWarningMacro(<< map.wrongWindings << " points keep a map that winds around them unlike "
+                      << "the frame field; the quads there may be irregular.");
+    }
     if (map.flipped > 0)
     {
       vtkWarningMacro(<< map.flipped << " triangles keep a flipped (u, v) image after "
@@ -175,6 +180,8 @@ int vtkQuadCoverSolver::RequestData(
     output->GetCellData()->AddArray(seam);
     vtkFieldData* fd = output->GetFieldData();
     vtkQuadCoverEigen::AddField<vtkDoubleArray>(fd, names::GridScale, { map.gridSize });
+    vtkQuadCoverEigen::AddField<vtkIntArray>(
+      fd, names::WindingErrors, { double(map.wrongWindings) });
     vtkQuadCoverEigen::AddField<vtkIntArray>(fd, names::FlippedTriangles,
       { double(map.flippedContinuous), double(map.flippedRounded), double(map.flipped) });
     vtkQuadCoverEigen::AddField<vtkDoubleArray>(fd, names::ParameterizationEnergy,

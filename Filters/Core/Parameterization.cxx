@@ -349,7 +349,8 @@ struct Untangler
 
   /// Untangles around `flipped` (faces), moving real unknowns; returns the faces still flipped.
   std::vector<int> run(const MeshTopology& topo, const Eigen::MatrixX3i& F,
-    const std::vector<int>& flipped, int rings, int maxRounds, Eigen::VectorXd& x) const
+    const std::vector<int>& flipped, int rings, int maxRounds, Eigen::VectorXd& x,
+    const std::vector<char>& frozen = {}) const
   {
     const int nF = static_cast<int>(F.rows());
     // the region: faces within `rings` vertex rings of a flipped face
@@ -394,7 +395,7 @@ struct Untangler
         for (Eigen::SparseMatrix<double, Eigen::RowMajor>::InnerIterator it(Dr, 4 * f + i); it;
              ++it)
         {
-          if (it.col() < numReal && !isFree[it.col()])
+          if (it.col() < numReal && !isFree[it.col()] && (frozen.empty() || !frozen[it.col()]))
           {
             isFree[it.col()] = 1;
             freeColumns.push_back(static_cast<int>(it.col()));
@@ -1225,7 +1226,115 @@ Parameterization computeParameterization(const Eigen::MatrixX3d& V, const Eigen:
   out.energyRounded = energyOf(x);
   std::vector<int> flipped = flippedFaces(uvOf(x));
   out.flippedRounded = static_cast<int>(flipped.size());
-  if (!flipped.empty() && options.maxUntangleRounds > 0)
+  // Winding: around every inner point the map's angles must add up to 2 pi (1 - index). A
+  // least-squares map puts the extra quarter turn of a negative cone into one triangle, which
+  // flips; untangled the wrong way, the fan closes up into 90 degrees (index +3/4) next to a
+  // point wound twice. Such fans are laid out again before they are untangled.
+  auto wrongWindings = [&](const Eigen::MatrixX2d& uv) {
+    Eigen::VectorXd sum = Eigen::VectorXd::Zero(nV);
+    for (int f = 0; f < nF; ++f)
+    {
+      for (int k = 0; k < 3; ++k)
+      {
+        const Eigen::Vector2d z = uv.row(out.cornerSector[3 * f + k]).transpose();
+        const Eigen::Vector2d a = uv.row(out.cornerSector[3 * f + (k + 1) % 3]).transpose() - z;
+        const Eigen::Vector2d b = uv.row(out.cornerSector[3 * f + (k + 2) % 3]).transpose() - z;
+        sum[F(f, k)] += std::atan2(a.x() * b.y() - a.y() * b.x(), a.dot(b));
+      }
+    }
+    std::vector<int> wrong;
+    for (int p = 0; p < nV; ++p)
+    {
+      if (!topo.boundaryVertex[p] && topo.ringOrdered[p] &&
+        std::abs(sum[p] - 2 * Pi * (1 - ft.index[p])) > 1e-3)
+      {
+        wrong.push_back(p);
+      }
+    }
+    return wrong;
+  };
+  // Lays the fan of p out again: ring points at their distance in grid units, the corner angles
+  // at p the triangle's own scaled to add up to 2 pi (1 - index), turning with the charts across
+  // cut edges. A ring point moves when its (u, v) are two real unknowns (a 2 x 2 system).
+  auto layOut = [&](int p, Eigen::VectorXd& xs, std::vector<char>& frozen) {
+    const int begin = topo.ringOffsets[p];
+    const int n = topo.ringOffsets[p + 1] - begin;
+    double total = 0.0;
+    for (int i = 0; i < n; ++i)
+    {
+      const int f = topo.ringFaces[begin + i];
+      const int k = MeshTopology::cornerOf(F, f, p);
+      const Eigen::Vector3d a = V.row(F(f, (k + 1) % 3)) - V.row(F(f, k));
+      const Eigen::Vector3d b = V.row(F(f, (k + 2) % 3)) - V.row(F(f, k));
+      total += std::atan2(a.cross(b).norm(), a.dot(b));
+    }
+    const double stretch = 2 * Pi * (1 - ft.index[p]) / total;
+    auto value = [&](int sector, int c) {
+      double v = 0.0;
+      for (const auto& t : sectorExpr[2 * sector + c])
+      {
+        v += t.second * xs[t.first];
+      }
+      return v;
+    };
+    // the first face's edge from p to its next corner keeps its direction
+    int f = topo.ringFaces[begin];
+    int k = MeshTopology::cornerOf(F, f, p);
+    const int s0 = out.cornerSector[3 * f + k];
+    const int s1 = out.cornerSector[3 * f + (k + 1) % 3];
+    double direction = std::atan2(value(s1, 1) - value(s0, 1), value(s1, 0) - value(s0, 0));
+    for (int i = 0; i < n; ++i)
+    {
+      f = topo.ringFaces[begin + i];
+      k = MeshTopology::cornerOf(F, f, p);
+      const int cone = out.cornerSector[3 * f + k];
+      const Eigen::Vector3d a = V.row(F(f, (k + 1) % 3)) - V.row(F(f, k));
+      const Eigen::Vector3d b = V.row(F(f, (k + 2) % 3)) - V.row(F(f, k));
+      direction += stretch * std::atan2(a.cross(b).norm(), a.dot(b));
+      // place the face's other ring point (corner k + 2) in this face's chart
+      const int ring = out.cornerSector[3 * f + (k + 2) % 3];
+      const double radius = b.norm() / options.gridSize;
+      const Eigen::Vector2d target(value(cone, 0) + radius * std::cos(direction),
+        value(cone, 1) + radius * std::sin(direction));
+      int sym[2] = { -1, -1 };
+      Eigen::Matrix2d M = Eigen::Matrix2d::Zero();
+      Eigen::Vector2d rest = target;
+      bool movable = true;
+      for (int c = 0; c < 2; ++c)
+      {
+        for (const auto& t : sectorExpr[2 * ring + c])
+        {
+          if (t.first >= numReal)
+          {
+            rest[c] -= t.second * xs[t.first];
+            continue;
+          }
+          int slot = sym[0] == t.first ? 0 : (sym[1] == t.first ? 1 : (sym[0] < 0 ? 0 : 1));
+          if (sym[slot] >= 0 && sym[slot] != t.first)
+          {
+            movable = false;
+          }
+          sym[slot] = t.first;
+          M(c, slot) += t.second;
+        }
+      }
+      if (movable && sym[0] >= 0 && sym[1] >= 0 && std::abs(M.determinant()) > 1e-9)
+      {
+        const Eigen::Vector2d solved = M.inverse() * rest;
+        xs[sym[0]] = solved[0];
+        xs[sym[1]] = solved[1];
+        frozen[sym[0]] = frozen[sym[1]] = 1;
+      }
+      // into the next face's chart: the edge p -> ring turns with the chart across the edge
+      const int g = topo.faceNeighbors(f, (k + 2) % 3);
+      if (g >= 0)
+      {
+        direction += out.combedMatching(f, (k + 2) % 3) * Pi / 2;
+      }
+    }
+  };
+  std::vector<int> wrong = wrongWindings(uvOf(x));
+  if ((!flipped.empty() || !wrong.empty()) && options.maxUntangleRounds > 0)
   {
     const auto started = std::chrono::steady_clock::now();
     const Eigen::SparseMatrix<double, Eigen::RowMajor> Dr = D;
@@ -1237,15 +1346,44 @@ Parameterization computeParameterization(const Eigen::MatrixX3d& V, const Eigen:
     // in symbols; only the real ones move, and they are the real columns
     const Untangler untangler{ Dr, D, sqrtArea, options.gridSize, numReal };
     Eigen::VectorXd xs = P * x;
-    for (int rings = 2; rings <= 16 && !flipped.empty(); rings *= 2)
+    for (int attempt = 0; attempt < 3 && (!flipped.empty() || !wrong.empty()); ++attempt)
     {
-      ++out.untangleRegions;
-      untangler.run(topo, F, flipped, rings, options.maxUntangleRounds, xs);
+      // cones first: a point wound twice is usually the neighbour of a cone closed up into
+      // 90 degrees, and comes right with it
+      std::stable_sort(wrong.begin(), wrong.end(),
+        [&](int a, int b) { return (ft.layerShift[a] != 0) > (ft.layerShift[b] != 0); });
+      std::vector<char> frozen(xs.size(), 0);
+      for (const int p : wrong)
+      {
+        if (ft.layerShift[p] != 0 || attempt > 0)
+        {
+          layOut(p, xs, frozen);
+        }
+        for (int i = topo.ringOffsets[p]; i < topo.ringOffsets[p + 1]; ++i)
+        {
+          flipped.push_back(topo.ringFaces[i]); // untangle around it too
+        }
+      }
       x.head(numReal) = xs.head(numReal);
-      flipped = flippedFaces(uvOf(x));
+      // the new fans held first, so that their winding stays, then everything free
+      if (!wrong.empty())
+      {
+        untangler.run(topo, F, flippedFaces(uvOf(x)), 2, options.maxUntangleRounds, xs, frozen);
+        x.head(numReal) = xs.head(numReal);
+        flipped = flippedFaces(uvOf(x));
+      }
+      for (int rings = 2; rings <= 16 && !flipped.empty(); rings *= 2)
+      {
+        ++out.untangleRegions;
+        untangler.run(topo, F, flipped, rings, options.maxUntangleRounds, xs);
+        x.head(numReal) = xs.head(numReal);
+        flipped = flippedFaces(uvOf(x));
+      }
+      wrong = wrongWindings(uvOf(x));
     }
     out.untangleSeconds = seconds(started);
   }
+  out.wrongWindings = static_cast<int>(wrong.size());
   out.flipped = static_cast<int>(flipped.size());
   out.energyFinal = energyOf(x);
 

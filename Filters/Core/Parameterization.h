@@ -83,7 +83,9 @@ struct Parameterization
   double energyFinal = 0.0;
   int flippedContinuous = 0; ///< triangles with a non-positive (u, v) area
   int flippedRounded = 0;
-  int flipped = 0;         ///< in the final map
+  int flipped = 0; ///< in the final map
+  /// inner points whose (u, v) angles do not add up to 2 pi (1 - index) in the final map
+  int wrongWindings = 0;
   int untangleRegions = 0; ///< neighbourhoods untangled (each growing the last)
   double untangleSeconds = 0.0;
   double maxSeamError = 0.0; ///< largest distance of a seam translation from Z^2, in grid units

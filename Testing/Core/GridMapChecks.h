@@ -94,6 +94,30 @@ inline int branchPointsOffGrid(const Eigen::MatrixX3i& F, const MeshTopology& to
   }
   return off;
 }
+
+/// Inner points whose (u, v) corner angles do not add up to 2 pi (1 - index): the map must wind
+/// around every point as its frame field does (a cone of index k/4 keeps its 2 pi (1 - k/4)).
+inline int windingErrors(const Eigen::MatrixX3i& F, const MeshTopology& topo,
+  const Eigen::VectorXd& index, const Eigen::MatrixXd& cornerUV, double tolerance = 1e-6)
+{
+  constexpr double Pi = 3.14159265358979323846;
+  Eigen::VectorXd sum = Eigen::VectorXd::Zero(index.size());
+  for (int f = 0; f < F.rows(); ++f)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      const Complex z = cornerZ(cornerUV, f, k);
+      sum[F(f, k)] +=
+        std::arg((cornerZ(cornerUV, f, (k + 2) % 3) - z) / (cornerZ(cornerUV, f, (k + 1) % 3) - z));
+    }
+  }
+  int wrong = 0;
+  for (int p = 0; p < index.size(); ++p)
+  {
+    wrong += !topo.boundaryVertex[p] && std::abs(sum[p] - 2 * Pi * (1 - index[p])) > tolerance;
+  }
+  return wrong;
+}
 }
 }
 

@@ -230,9 +230,17 @@ TEST_P(ParameterizeOn, SeamlessGridMapWithBranchPointsOnTheGridAndNoFlips)
   {
     layerShift[p] = static_cast<int>(shift->GetTuple1(p));
   }
+  vtkDataArray* indexArray = out->GetPointData()->GetArray(names::SingularityIndex);
+  Eigen::VectorXd index(indexArray->GetNumberOfTuples());
+  for (vtkIdType p = 0; p < index.size(); ++p)
+  {
+    index[p] = indexArray->GetTuple1(p);
+  }
   EXPECT_EQ(checks::seamViolations(F, topo, uv), 0);
   EXPECT_EQ(checks::branchPointsOffGrid(F, topo, layerShift, uv), 0);
   EXPECT_EQ(checks::flippedTriangles(uv), 0);
+  EXPECT_EQ(checks::windingErrors(F, topo, index, uv), 0) << "every point keeps its index";
+  EXPECT_EQ(Field(out, names::WindingErrors), 0);
   EXPECT_EQ(Field(out, names::FlippedTriangles, 2), checks::flippedTriangles(uv));
   EXPECT_EQ(Field(out, names::BranchPointsOnGrid, 0), Field(out, names::BranchPointsOnGrid, 1));
   EXPECT_LT(Field(out, names::SeamTranslationError), 1e-6);
