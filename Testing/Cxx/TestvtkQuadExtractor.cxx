@@ -1,0 +1,187 @@
+// vtkQuadExtractor through VTK on every generated and shared surface: closed inputs give
+// closed, manifold, all-quad meshes with the input's Euler characteristic; open ones keep their
+// boundary loops; irregular vertices are the branch points with the valence their index
+// predicts; the quads stay close to the input (Hausdorff distance).
+#include "QuadCoverIO.h"
+
+#include "vtkCellData.h"
+#include "vtkCurvatureFrames.h"
+#include "vtkDataArray.h"
+#include "vtkFieldData.h"
+#include "vtkFrameSmoother.h"
+#include "vtkMatchingBuilder.h"
+#include "vtkNew.h"
+#include "vtkPointData.h"
+#include "vtkPolyData.h"
+#include "vtkQuadCoverArrayNames.h"
+#include "vtkQuadCoverEigen.h"
+#include "vtkQuadCoverSolver.h"
+#include "vtkQuadExtractor.h"
+
+#include "MeshTopology.h"
+#include "Surfaces.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <fstream>
+#include <map>
+#include <sstream>
+
+namespace names = vtkQuadCoverArrayNames;
+
+namespace
+{
+struct Pipeline
+{
+  vtkNew<vtkCurvatureFrames> curvature;
+  vtkNew<vtkFrameSmoother> smoother;
+  vtkNew<vtkMatchingBuilder> matching;
+  vtkNew<vtkQuadCoverSolver> solver;
+  vtkNew<vtkQuadExtractor> extractor;
+  vtkNew<QuadCoverIO::ErrorObserver> errors;
+
+  explicit Pipeline(vtkPolyData* surface)
+  {
+    curvature->SetInputData(surface);
+    smoother->SetInputConnection(curvature->GetOutputPort());
+    matching->SetInputConnection(smoother->GetOutputPort());
+    solver->SetInputConnection(matching->GetOutputPort());
+    extractor->SetInputConnection(solver->GetOutputPort());
+    for (vtkAlgorithm* a :
+      std::initializer_list<vtkAlgorithm*>{ curvature, smoother, matching, solver, extractor })
+    {
+      errors->Attach(a);
+    }
+  }
+};
+
+double Field(vtkPolyData* out, const char* name, int i = 0)
+{
+  vtkDataArray* a = out->GetFieldData()->GetArray(name);
+  return a && i < a->GetNumberOfTuples() ? a->GetComponent(i, 0) : std::nan("");
+}
+
+vtkSmartPointer<vtkPolyData> Load(const std::string& name, std::string& path)
+{
+  const std::string shared = std::string(QUADCOVER_SHARED_DATA) + "/" + name + ".obj";
+  const std::string own = std::string(QUADCOVER_DATA) + "/" + name + ".obj";
+  path = std::ifstream(own).good() ? own : shared;
+  if (!std::ifstream(path).good())
+  {
+    return nullptr;
+  }
+  std::string error;
+  vtkSmartPointer<vtkPolyData> raw = QuadCoverIO::ReadSurface(path, error);
+  QuadCoverIO::Repairs repairs;
+  return raw ? QuadCoverIO::PrepareSurface(raw, repairs, error) : nullptr;
+}
+}
+
+TEST(vtkQuadExtractor, DefaultsErrorsAndPrintSelf)
+{
+  vtkNew<vtkQuadExtractor> e;
+  EXPECT_TRUE(e->GetComputeHausdorffDistance());
+  std::ostringstream os;
+  e->Print(os);
+  EXPECT_NE(os.str().find("ComputeHausdorffDistance: On"), std::string::npos);
+  const quadcover::Surface sphere = quadcover::makeIcosphere(1.0, 2);
+  vtkNew<QuadCoverIO::ErrorObserver> errors;
+  errors->Attach(e);
+  e->SetInputData(vtkQuadCoverEigen::ToPolyData(sphere.V, sphere.F));
+  e->Update();
+  EXPECT_NE(errors->Error().find("no 6-component cell array CornerUV"), std::string::npos)
+    << errors->Error();
+  EXPECT_EQ(e->GetOutput()->GetNumberOfCells(), 0);
+}
+
+TEST(vtkQuadExtractor, TheSplitSeamsOutputGivesTheSameQuads)
+{
+  const quadcover::Surface knot =
+    quadcover::makeKnotTube(2, 3, 1.0, 0.4, 0.12, 240, 20, 0.3, 0.03, 7);
+  Pipeline p(vtkQuadCoverEigen::ToPolyData(knot.V, knot.F));
+  p.solver->SetTargetQuadCount(800);
+  p.extractor->Update();
+  const vtkIdType quads = p.extractor->GetOutput()->GetNumberOfCells();
+  p.solver->SplitSeamsOn();
+  p.extractor->Update();
+  ASSERT_EQ(p.errors->Error(), "");
+  EXPECT_EQ(p.extractor->GetOutput()->GetNumberOfCells(), quads);
+  EXPECT_EQ(Field(p.extractor->GetOutput(), names::EulerCharacteristic), 0);
+  EXPECT_EQ(Field(p.extractor->GetOutput(), names::BoundaryLoops), 0);
+}
+
+class QuadsOn : public ::testing::TestWithParam<const char*>
+{};
+
+TEST_P(QuadsOn, ManifoldAllQuadMeshWithTheInputsTopology)
+{
+  std::string path;
+  vtkSmartPointer<vtkPolyData> surface = Load(GetParam(), path);
+  if (!surface)
+  {
+    GTEST_SKIP() << "mesh not found: " << path;
+  }
+  const quadcover::MeshTopology topo = quadcover::buildTopology(
+    vtkQuadCoverEigen::Triangles(surface), static_cast<int>(surface->GetNumberOfPoints()));
+  Pipeline p(surface);
+  p.extractor->Update();
+  ASSERT_EQ(p.errors->Error(), "");
+  vtkPolyData* out = p.extractor->GetOutput();
+  vtkPolyData* map = p.solver->GetOutput();
+  // every cell a quad
+  for (vtkIdType c = 0; c < out->GetNumberOfCells(); ++c)
+  {
+    ASSERT_EQ(out->GetCell(c)->GetNumberOfPoints(), 4);
+  }
+  EXPECT_EQ(Field(out, names::QuadShare), 1.0);
+  EXPECT_EQ(Field(out, names::NonManifoldEdges), 0);
+  EXPECT_EQ(Field(out, names::BoundaryLoops), static_cast<double>(topo.boundaryLoops.size()));
+  EXPECT_GT(Field(out, names::ScaledJacobianStatistics, 1), 0.85) << "mean scaled Jacobian";
+  const bool closed = topo.boundaryLoops.empty();
+  if (closed)
+  {
+    EXPECT_EQ(Field(out, names::EulerCharacteristic), topo.eulerCharacteristic());
+    EXPECT_EQ(Field(out, names::DroppedCells, 0) + Field(out, names::DroppedCells, 1) +
+        Field(out, names::DroppedCells, 2),
+      0);
+    // irregular inner vertices: exactly the branch points, valence 4 - 4 index
+    EXPECT_EQ(Field(out, names::IrregularVertices), Field(map, names::BranchPointsOnGrid));
+    std::map<int, int> byValence;
+    vtkDataArray* valence = out->GetPointData()->GetArray(names::Valence);
+    for (vtkIdType v = 0; v < valence->GetNumberOfTuples(); ++v)
+    {
+      byValence[static_cast<int>(valence->GetTuple1(v))] += 1;
+    }
+    std::map<int, int> expected;
+    vtkDataArray* index = map->GetPointData()->GetArray(names::SingularityIndex);
+    vtkDataArray* shift = map->GetPointData()->GetArray(names::LayerShift);
+    for (vtkIdType v = 0; v < index->GetNumberOfTuples(); ++v)
+    {
+      if (shift->GetTuple1(v) != 0)
+      {
+        expected[static_cast<int>(std::lround(4 - 4 * index->GetTuple1(v)))] += 1;
+      }
+    }
+    for (const auto& [k, count] : expected)
+    {
+      EXPECT_EQ(byValence[k], count) << "valence " << k;
+    }
+  }
+  const double hausdorff = Field(out, names::HausdorffDistance);
+  std::printf("[ %s ] %lld quads, %lld vertices, irregular %g + %g, edge RSD %.1f%%, angle RSD "
+              "%.1f%%, scaled Jacobian min %.2f mean %.3f, Hausdorff %.2f%%, dropped %g\n",
+    GetParam(), static_cast<long long>(out->GetNumberOfCells()),
+    static_cast<long long>(out->GetNumberOfPoints()), Field(out, names::IrregularVertices, 0),
+    Field(out, names::IrregularVertices, 1), 100 * Field(out, names::EdgeLengthRSD),
+    100 * Field(out, names::AngleRSD), Field(out, names::ScaledJacobianStatistics, 0),
+    Field(out, names::ScaledJacobianStatistics, 1), hausdorff,
+    Field(out, names::DroppedCells, 0) + Field(out, names::DroppedCells, 1) +
+      Field(out, names::DroppedCells, 2));
+  // at about 3,000 quads the quads stay within 5% of the bounding-box diagonal
+  EXPECT_LT(hausdorff, 5.0);
+}
+
+INSTANTIATE_TEST_SUITE_P(Surfaces, QuadsOn,
+  ::testing::Values("sphere", "torus", "knot", "cylinder", "roundedcube", "bunny-lowres", "spot",
+    "fandisk", "rocker-arm", "cheburashka", "teapot"));
