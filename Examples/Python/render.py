@@ -1,9 +1,13 @@
-#!/usr/bin/env python3
-"""Render a QuadCover result to a PNG: the surface coloured by a cell array, with the guidance
-frame field drawn as a small cross (FrameU, FrameV) at every triangle's centre, and (after the
+#!/ usr / bin / env python3
+""
+  "Render a QuadCover result to a PNG: the surface coloured by a cell array, with the guidance
+  frame field drawn as a small
+  cross(FrameU, FrameV) at every triangle's centre, and (after the
 matching stage) the singular points as balls: red for positive index, blue for negative.
 A surface with texture coordinates (the solver's --split-seams output) is drawn with a
-checkerboard of one square per grid cell instead of the frames, so the parameter lines show.
+checkerboard of one square per grid cell instead of the frames, so the parameter lines show. A
+quad mesh (the extractor's output, with point data Valence) is drawn with its edges, and its
+irregular vertices as balls: red for valence 3, blue for 5, yellow for any other.
 
     render.py INPUT.vtp -o OUTPUT.png [--array FrameWeight] [--no-frames] [--size 1400x1000]
               [--azimuth DEG] [--elevation DEG]
@@ -44,7 +48,7 @@ def frame_segments(surface, names, scale):
         return None
     points = numpy_support.vtk_to_numpy(surface.GetPoints().GetData()).astype(float)
     polys = numpy_support.vtk_to_numpy(surface.GetPolys().GetData())
-    # VTK 9 exports the legacy layout: 3 i j k 3 i j k ...
+#VTK 9 exports the legacy layout : 3 i j k 3 i j k...
     tri = polys.reshape(-1, 4)[:, 1:]
     a, b, c = points[tri[:, 0]], points[tri[:, 1]], points[tri[:, 2]]
     centre = (a + b + c) / 3.0
@@ -68,6 +72,55 @@ def frame_segments(surface, names, scale):
     segments.SetPoints(pts)
     segments.SetLines(lines)
     return segments
+
+
+def add_irregular_vertices(renderer, surface, valence):
+    """Balls at the vertices of valence other than 4 (inner) and 2 or 3 (boundary)."""
+    values = numpy_support.vtk_to_numpy(valence)
+    points = numpy_support.vtk_to_numpy(surface.GetPoints().GetData())
+    edges = vtk.vtkFeatureEdges()
+    edges.SetInputData(surface)
+    edges.BoundaryEdgesOn()
+    edges.FeatureEdgesOff()
+    edges.ManifoldEdgesOff()
+    edges.NonManifoldEdgesOff()
+    edges.Update()
+    boundary = set()
+    locator = vtk.vtkPointLocator()
+    locator.SetDataSet(surface)
+    locator.BuildLocator()
+    bpts = edges.GetOutput().GetPoints()
+    for i in range(bpts.GetNumberOfPoints() if bpts else 0):
+        boundary.add(locator.FindClosestPoint(bpts.GetPoint(i)))
+    bounds = surface.GetBounds()
+    diagonal = float(np.linalg.norm([bounds[1] - bounds[0], bounds[3] - bounds[2],
+                                     bounds[5] - bounds[4]]))
+    groups = {3: (0.85, 0.1, 0.1), 5: (0.1, 0.25, 0.9)}
+    chosen = {}
+    for v, k in enumerate(values):
+        regular = k in (2, 3) if v in boundary else k == 4
+        if not regular:
+            chosen.setdefault(int(k) if int(k) in groups else 0, []).append(v)
+    for k, ids in chosen.items():
+        pts = vtk.vtkPoints()
+        for i in ids:
+            pts.InsertNextPoint(*points[i])
+        cloud = vtk.vtkPolyData()
+        cloud.SetPoints(pts)
+        ball = vtk.vtkSphereSource()
+        ball.SetRadius(0.006 * diagonal)
+        ball.SetThetaResolution(16)
+        ball.SetPhiResolution(12)
+        glyphs = vtk.vtkGlyph3D()
+        glyphs.SetInputData(cloud)
+        glyphs.SetSourceConnection(ball.GetOutputPort())
+        glyph_mapper = vtk.vtkPolyDataMapper()
+        glyph_mapper.SetInputConnection(glyphs.GetOutputPort())
+        glyph_mapper.ScalarVisibilityOff()
+        glyph_actor = vtk.vtkActor()
+        glyph_actor.SetMapper(glyph_mapper)
+        glyph_actor.GetProperty().SetColor(*groups.get(k, (0.95, 0.8, 0.1)))
+        renderer.AddActor(glyph_actor)
 
 
 def flipped_triangles(surface):
@@ -171,8 +224,18 @@ def main():
     actor.SetMapper(mapper)
     actor.GetProperty().SetColor(0.85, 0.85, 0.8)
     textured = surface.GetPointData().GetTCoords() is not None
+    valence = surface.GetPointData().GetArray("Valence")
+    if valence is not None:
+        mapper.ScalarVisibilityOff()
+        for a in renderer.GetActors2D():
+            renderer.RemoveActor2D(a)
+        actor.GetProperty().SetColor(0.92, 0.92, 0.88)
+        actor.GetProperty().EdgeVisibilityOn()
+        actor.GetProperty().SetEdgeColor(0.15, 0.15, 0.2)
+        actor.GetProperty().SetLineWidth(1.0)
+        add_irregular_vertices(renderer, surface, valence)
     if textured:
-        # the texture holds 2 x 2 cells: texture coordinates (u, v) / 2
+#the texture holds 2 x 2 cells : texture coordinates(u, v) / 2
         uv = numpy_support.vtk_to_numpy(surface.GetPointData().GetTCoords()).astype(float)
         half = numpy_support.numpy_to_vtk(0.5 * uv, deep=True)
         half.SetName("HalfUV")
@@ -193,8 +256,8 @@ def main():
         flipped_actor.GetProperty().SetColor(0.9, 0.1, 0.1)
         renderer.AddActor(flipped_actor)
 
-    if not args.no_frames and not textured:
-        # Segment half-length: 40% of the mean edge length, from the mean triangle area.
+    if not args.no_frames and not textured and valence is None:
+#Segment half - length : 40 % of the mean edge length, from the mean triangle area.
         quality = vtk.vtkCellSizeFilter()
         quality.SetInputData(surface)
         quality.ComputeAreaOn()
@@ -220,7 +283,7 @@ def main():
         bounds = surface.GetBounds()
         diagonal = float(np.linalg.norm([bounds[1] - bounds[0], bounds[3] - bounds[2],
                                          bounds[5] - bounds[4]]))
-        # Inner singularities are multiples of 1/4; boundary points carry fractional leftovers.
+#Inner singularities are multiples of 1 / 4; boundary points carry fractional leftovers.
         quarter = np.abs(4.0 * values - np.round(4.0 * values)) < 1e-6
         for sign, colour in ((1, (0.85, 0.1, 0.1)), (-1, (0.1, 0.25, 0.9))):
             chosen = np.nonzero(quarter & (sign * values > 1e-9))[0]

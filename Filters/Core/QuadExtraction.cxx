@@ -184,47 +184,11 @@ public:
     at.key = { 2, f, std::llround(q.real()), std::llround(q.imag()) };
   }
 
-  /// Does triangle f own the cell centre c (in its chart)? Inside: yes; on an edge or a point:
-  /// the lowest triangle (not flipped) that holds it.
-  bool owns(int f, Complex c) const
-  {
-    const Eigen::Vector3d b = barycentric(f, c);
-    if (b.minCoeff() < -options.tolerance)
-    {
-      return false;
-    }
-    int zeros = 0;
-    int zero = -1;
-    for (int k = 0; k < 3; ++k)
-    {
-      if (std::abs(b[k]) <= options.tolerance)
-      {
-        ++zeros;
-        zero = k;
-      }
-    }
-    if (zeros == 0)
-    {
-      return true;
-    }
-    if (zeros == 1)
-    {
-      const int g = topo.faceNeighbors(f, (zero + 1) % 3);
-      return g < 0 || flipped[g] || f < g;
-    }
-    int k = 0;
-    b.maxCoeff(&k);
-    const int p = F(f, k);
-    for (int i = topo.ringOffsets[p]; i < topo.ringOffsets[p + 1]; ++i)
-    {
-      const int g = topo.ringFaces[i];
-      if (g < f && !flipped[g])
-      {
-        return false;
-      }
-    }
-    return true;
-  }
+  /// Does triangle f hold the cell centre c (in its chart), up to the tolerance? A centre on an
+  /// edge or a point is held by several triangles; the quads they give are the same and are
+  /// merged later (deciding here which one owns it would need both sides to agree to the last
+  /// bit across seams).
+  bool holds(int f, Complex c) const { return barycentric(f, c).minCoeff() >= -options.tolerance; }
 
   void run()
   {
@@ -253,7 +217,7 @@ public:
         for (long long b = std::llround(std::floor(lo[1] - 0.5)); b + 0.5 <= hi[1] + 1e-9; ++b)
         {
           const Complex c(a + 0.5, b + 0.5);
-          if (c.real() < lo[0] - 1e-9 || c.imag() < lo[1] - 1e-9 || !owns(f, c))
+          if (c.real() < lo[0] - 1e-9 || c.imag() < lo[1] - 1e-9 || !holds(f, c))
           {
             continue;
           }
@@ -333,8 +297,9 @@ public:
     }
   }
 
-  /// Removes repeated quads (keeping one) and every quad with a directed edge another quad also
-  /// has, or on an edge of more than two quads: what overlapping cells of a folded map leave.
+  /// Merges repeated quads (a centre on an edge or point is held by every triangle there) and
+  /// removes every quad with a directed edge another quad also has, or on an edge of more than
+  /// two quads: what overlapping cells of a folded map leave.
   void removeConflicts(std::vector<std::array<int, 4>>& quads)
   {
     std::map<std::array<int, 4>, int> seen;
@@ -345,8 +310,7 @@ public:
       std::rotate(key.begin(), std::min_element(key.begin(), key.end()), key.end());
       if (!seen.emplace(key, static_cast<int>(i)).second)
       {
-        keep[i] = 0;
-        ++out.cellsConflicting;
+        keep[i] = 0; // the same cell, from another triangle holding its centre
       }
     }
     std::map<std::pair<int, int>, std::vector<int>> directed;

@@ -35,13 +35,13 @@ struct QuadMesh
 
 /**
  * Cuts the quads out of an integer-grid map: every unit cell [a, a+1] x [b, b+1] of the grid
- * becomes one quad, found through its centre (a + 1/2, b + 1/2), which lies in exactly one
- * triangle (ties on edges and points go to the lowest triangle). Its four corners are found by
- * walking in the (u, v) plane from the centre, across edges and seams (through the transition
- * functions read off the map), to the triangle that holds each corner; a corner on a point, on
- * an edge or inside a triangle gets one identity wherever it is reached from, so that quads share
- * vertices across seams and a branch point of index k/4 becomes a vertex of valence 4 - k.
- * Triangles with a flipped (u, v) image hold no quad centre and stop walks; quads that still
+ * becomes one quad, found through its centre (a + 1/2, b + 1/2) in the triangle that holds it
+ * (a centre on an edge or point is found from each triangle there, and the copies merged). Its four
+ * corners are found by walking in the (u, v) plane from the centre, across edges and seams (through
+ * the transition functions read off the map), to the triangle that holds each corner; a corner on a
+ * point, on an edge or inside a triangle gets one identity wherever it is reached from, so that
+ * quads share vertices across seams and a branch point of index k/4 becomes a vertex of valence 4 -
+ * k. Triangles with a flipped (u, v) image hold no quad centre and stop walks; quads that still
  * overlap (the same corner reached twice along one edge direction) are removed and counted, so
  * the output stays manifold.
  * @param[in] cornerUV #F x 6 (u, v at corners 0, 1, 2), as computeParameterization gives

@@ -68,6 +68,18 @@ TEST(QuadExtraction, ClosedSurfacesGiveClosedManifoldQuadMeshes)
   }
 }
 
+TEST(QuadExtraction, CellCentresOnEdgesAndPointsGiveOneQuad)
+{
+  // On these regular meshes at 6,500 quads many cell centres and grid points fall exactly on
+  // mesh edges and points (to rounding): each cell must still give exactly one quad.
+  for (const char* name : { "torus", "sphere" })
+  {
+    const Chain c = runChain(testSurface(name), 6500);
+    const QuadMesh q = extractQuads(c.s.V, c.s.F, c.topo, c.map.cornerUV);
+    expectClosedQuadMesh(c, q, name);
+  }
+}
+
 TEST(QuadExtraction, QuadVerticesLieOnTheSurfaceAndFacesAreConsistentlyOriented)
 {
   const Chain c = runChain(testSurface("sphere"), 800);

@@ -1,0 +1,31 @@
+#!/usr/bin/env bash
+# The quad meshes of the shared meshes (and the generated surfaces) at about QUADS quads (default
+# 6,500, the paper's Table 1 density): the figures kept in README.md.
+#   bash Benchmarks/quad_table.sh [SHARED_DIR] [QUADS]      (after bash Scripts/build.sh)
+set -euo pipefail
+cd "$(dirname "$0")/.."
+shared=${1:-../shared/data}
+quads=${2:-6500}
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+echo "| surface | vertices | quads | quad share | irregular inner (+ boundary) | edge-length RSD | angle RSD | scaled Jacobian min / mean | Hausdorff % | χ (input) | dropped cells | seconds (all stages) |"
+echo "|---|---:|---:|---:|---|---:|---:|---|---:|---|---:|---:|"
+for mesh in "$shared"/bunny-lowres.obj "$shared"/spot.obj "$shared"/fandisk.obj \
+  "$shared"/rocker-arm.obj "$shared"/cheburashka.obj "$shared"/teapot.obj Data/sphere.obj \
+  Data/torus.obj Data/knot.obj Data/roundedcube.obj Data/cylinder.obj; do
+  [ -f "$mesh" ] || continue
+  build/bin/quadcover "$mesh" -o "$tmp/out.vtp" --target-quads "$quads" --stats "$tmp/s.json" \
+    2>/dev/null
+  /usr/bin/python3 - "$mesh" "$tmp/s.json" <<'PY'
+import json, os, sys
+s = json.load(open(sys.argv[2]))
+q = s["quads"]
+chi = round(s["matching"]["index_sum"])
+print("| %s | %d | %d | %.0f%% | %d (+ %d) | %.1f%% | %.1f%% | %.2f / %.3f | %.2f | %d (%d) | %d | %.2f |" % (
+    os.path.basename(sys.argv[1]).replace(".obj", ""), q["vertices"], q["faces"],
+    100 * q["quad_share"], q["irregular_inner"], q["irregular_boundary"],
+    100 * q["edge_length_rsd"], 100 * q["angle_rsd"], q["scaled_jacobian_min"],
+    q["scaled_jacobian_mean"], q["hausdorff_percent"], q["euler_characteristic"], chi,
+    q["dropped_cells"], sum(v for k, v in s["seconds"].items() if k not in ("read", "write"))))
+PY
+done
