@@ -1,8 +1,6 @@
-#!/ usr / bin / env python3
-""
-  "Render a QuadCover result to a PNG: the surface coloured by a cell array, with the guidance
-  frame field drawn as a small
-  cross(FrameU, FrameV) at every triangle's centre, and (after the
+#!/usr/bin/env python3
+"""Render a QuadCover result to a PNG: the surface coloured by a cell array, with the guidance
+frame field drawn as a small cross (FrameU, FrameV) at every triangle's centre, and (after the
 matching stage) the singular points as balls: red for positive index, blue for negative.
 A surface with texture coordinates (the solver's --split-seams output) is drawn with a
 checkerboard of one square per grid cell instead of the frames, so the parameter lines show. A
@@ -48,7 +46,7 @@ def frame_segments(surface, names, scale):
         return None
     points = numpy_support.vtk_to_numpy(surface.GetPoints().GetData()).astype(float)
     polys = numpy_support.vtk_to_numpy(surface.GetPolys().GetData())
-#VTK 9 exports the legacy layout : 3 i j k 3 i j k...
+    # VTK 9 exports the legacy layout: 3 i j k 3 i j k ...
     tri = polys.reshape(-1, 4)[:, 1:]
     a, b, c = points[tri[:, 0]], points[tri[:, 1]], points[tri[:, 2]]
     centre = (a + b + c) / 3.0
@@ -235,7 +233,7 @@ def main():
         actor.GetProperty().SetLineWidth(1.0)
         add_irregular_vertices(renderer, surface, valence)
     if textured:
-#the texture holds 2 x 2 cells : texture coordinates(u, v) / 2
+        # the texture holds 2 x 2 cells: texture coordinates (u, v) / 2
         uv = numpy_support.vtk_to_numpy(surface.GetPointData().GetTCoords()).astype(float)
         half = numpy_support.numpy_to_vtk(0.5 * uv, deep=True)
         half.SetName("HalfUV")
@@ -257,7 +255,7 @@ def main():
         renderer.AddActor(flipped_actor)
 
     if not args.no_frames and not textured and valence is None:
-#Segment half - length : 40 % of the mean edge length, from the mean triangle area.
+        # Segment half-length: 40% of the mean edge length, from the mean triangle area.
         quality = vtk.vtkCellSizeFilter()
         quality.SetInputData(surface)
         quality.ComputeAreaOn()
@@ -283,7 +281,7 @@ def main():
         bounds = surface.GetBounds()
         diagonal = float(np.linalg.norm([bounds[1] - bounds[0], bounds[3] - bounds[2],
                                          bounds[5] - bounds[4]]))
-#Inner singularities are multiples of 1 / 4; boundary points carry fractional leftovers.
+        # Inner singularities are multiples of 1/4; boundary points carry fractional leftovers.
         quarter = np.abs(4.0 * values - np.round(4.0 * values)) < 1e-6
         for sign, colour in ((1, (0.85, 0.1, 0.1)), (-1, (0.1, 0.25, 0.9))):
             chosen = np.nonzero(quarter & (sign * values > 1e-9))[0]
