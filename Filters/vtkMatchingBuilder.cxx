@@ -113,8 +113,23 @@ int vtkMatchingBuilder::RequestData(
         }
         weight = weight.array().isFinite().select(weight, 0.0);
       }
-      const Eigen::VectorXd alpha =
-        quadcover::fitFramesToMatchings(mesh.V, mesh.F, mesh.topo, geometry, U, t.matching, weight);
+      // frames vtkFrameSmoother held along the boundary stay held: the boundary must stay on
+      // grid lines (frames held along sharp edges may turn: holding them too left fans the map
+      // could not wind right on coarse meshes)
+      std::vector<char> held;
+      vtkDataArray* h = surface->GetCellData()->GetArray(names::FrameConstrained);
+      if (h && h->GetNumberOfComponents() == 1 && h->GetNumberOfTuples() == nf)
+      {
+        held.resize(nf);
+        for (vtkIdType f = 0; f < nf; ++f)
+        {
+          const bool boundary = mesh.topo.faceNeighbors(f, 0) < 0 ||
+            mesh.topo.faceNeighbors(f, 1) < 0 || mesh.topo.faceNeighbors(f, 2) < 0;
+          held[f] = boundary && h->GetComponent(f, 0) != 0.0;
+        }
+      }
+      const Eigen::VectorXd alpha = quadcover::fitFramesToMatchings(
+        mesh.V, mesh.F, mesh.topo, geometry, U, t.matching, weight, 0.97, held);
       fittedU = U;
       vtkDataArray* v = surface->GetCellData()->GetArray(names::FrameV);
       if (v && v->GetNumberOfComponents() == 3 && v->GetNumberOfTuples() == nf)

@@ -202,6 +202,9 @@ int main(int argc, char* argv[])
     { 3, "--edge-length L", "quad edge length in world units, 0 = from --target-quads",
       solver->GetTargetEdgeLengthMinValue(), solver->GetTargetEdgeLengthMaxValue(),
       solver->GetTargetEdgeLength(), false },
+    { 3, "--boundary-tolerance D", "boundary edges within D degrees of a frame lie on grid lines",
+      solver->GetBoundaryToleranceMinValue(), solver->GetBoundaryToleranceMaxValue(),
+      solver->GetBoundaryTolerance(), false },
     { 3, "--untangle N", "rounds of untangling per flipped neighbourhood",
       double(solver->GetMaximumUntangleRoundsMinValue()),
       double(solver->GetMaximumUntangleRoundsMaxValue()),
@@ -369,7 +372,8 @@ int main(int argc, char* argv[])
   solver->SetInputConnection(matching->GetOutputPort());
   solver->SetTargetQuadCount(static_cast<int>(numbers[6].value));
   solver->SetTargetEdgeLength(numbers[7].value);
-  solver->SetMaximumUntangleRounds(static_cast<int>(numbers[8].value));
+  solver->SetBoundaryTolerance(numbers[8].value);
+  solver->SetMaximumUntangleRounds(static_cast<int>(numbers[9].value));
   solver->SetPureQuads(pureQuads);
   solver->SetRoundingMode(rounding);
   solver->SetSplitSeams(splitSeams);

@@ -489,11 +489,13 @@ BranchPointReport optimizeBranchPoints(const Eigen::MatrixX3i& F, const MeshTopo
 
 Eigen::VectorXd fitFramesToMatchings(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F,
   const MeshTopology& topo, const FrameGeometry& geometry, const Eigen::MatrixX3d& frameU,
-  const Eigen::MatrixX3i& matching, const Eigen::VectorXd& weight, double lambda)
+  const Eigen::MatrixX3i& matching, const Eigen::VectorXd& weight, double lambda,
+  const std::vector<char>& held)
 {
   const int nF = static_cast<int>(F.rows());
   if (frameU.rows() != nF || matching.rows() != nF || topo.numFaces != nF ||
-    (weight.size() != 0 && weight.size() != nF))
+    (weight.size() != 0 && weight.size() != nF) ||
+    (!held.empty() && static_cast<Eigen::Index>(held.size()) != F.rows()))
   {
     throw std::invalid_argument("fitFramesToMatchings: sizes do not match");
   }
@@ -517,7 +519,9 @@ Eigen::VectorXd fitFramesToMatchings(const Eigen::MatrixX3d& V, const Eigen::Mat
   for (int f = 0; f < nF; ++f)
   {
     const double w = weight.size() ? weight[f] : 0.0;
-    t.emplace_back(f, f, (1.0 - lambda) * area[f] * w + 1e-9 * area[f]);
+    // a held frame: a stiff spring to its angle (alpha = 0)
+    const double hold = !held.empty() && held[f] ? 1e6 * 8.0 * lambda * area[f] : 0.0;
+    t.emplace_back(f, f, (1.0 - lambda) * area[f] * w + 1e-9 * area[f] + hold);
   }
   for (int f = 0; f < nF; ++f)
   {

@@ -116,12 +116,15 @@ BranchPointReport optimizeBranchPoints(const Eigen::MatrixX3i& F, const MeshTopo
  * over the surface: the field then has the singularities its matchings say, and the
  * parameterization need not fold to follow it. One sparse solve.
  * @param[in] weight #F alignment weights (FrameWeight), or empty for none (pure smoothing)
+ * @param[in] held   #F, 1 for frames that stay as they are (held along boundaries and sharp
+ *                   edges by smoothFrames), or empty
  * @return #F the angles alpha to turn each frame by (rotateFrames)
  * @throws std::invalid_argument on sizes that do not match or lambda outside (0, 1]
  */
 Eigen::VectorXd fitFramesToMatchings(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F,
   const MeshTopology& topo, const FrameGeometry& geometry, const Eigen::MatrixX3d& frameU,
-  const Eigen::MatrixX3i& matching, const Eigen::VectorXd& weight, double lambda = 0.97);
+  const Eigen::MatrixX3i& matching, const Eigen::VectorXd& weight, double lambda = 0.97,
+  const std::vector<char>& held = {});
 
 }
 

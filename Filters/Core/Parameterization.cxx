@@ -1325,6 +1325,12 @@ Parameterization computeParameterization(const Eigen::MatrixX3d& V, const Eigen:
         xs[sym[1]] = solved[1];
         frozen[sym[0]] = frozen[sym[1]] = 1;
       }
+      else if (movable && sym[0] >= 0 && sym[1] < 0 && M.col(0).squaredNorm() > 1e-18)
+      {
+        // one coordinate on a boundary line: move along it
+        xs[sym[0]] = M.col(0).dot(rest) / M.col(0).squaredNorm();
+        frozen[sym[0]] = 1;
+      }
       // into the next face's chart: the edge p -> ring turns with the chart across the edge
       const int g = topo.faceNeighbors(f, (k + 2) % 3);
       if (g >= 0)
@@ -1368,9 +1374,13 @@ Parameterization computeParameterization(const Eigen::MatrixX3d& V, const Eigen:
       // the new fans held first, so that their winding stays, then everything free
       if (!wrong.empty())
       {
-        untangler.run(topo, F, flippedFaces(uvOf(x)), 2, options.maxUntangleRounds, xs, frozen);
-        x.head(numReal) = xs.head(numReal);
         flipped = flippedFaces(uvOf(x));
+        for (int rings = 2; rings <= 8 && !flipped.empty(); rings *= 2)
+        {
+          untangler.run(topo, F, flipped, rings, options.maxUntangleRounds, xs, frozen);
+          x.head(numReal) = xs.head(numReal);
+          flipped = flippedFaces(uvOf(x));
+        }
       }
       for (int rings = 2; rings <= 16 && !flipped.empty(); rings *= 2)
       {

@@ -39,8 +39,16 @@ inline Chain runChain(
     optimizeBranchPoints(r.s.F, r.topo, r.geometry, r.frameU, r.field);
   if (report.pathsChanged > 0)
   {
-    const Eigen::VectorXd alpha =
-      fitFramesToMatchings(r.s.V, r.s.F, r.topo, r.geometry, r.frameU, r.field.matching, c.weight);
+    std::vector<char> held(smooth.constrained.size(), 0); // the boundary's, as the filter does
+    for (std::size_t f = 0; f < held.size(); ++f)
+    {
+      const int i = static_cast<int>(f);
+      held[f] = smooth.constrained[f] &&
+        (r.topo.faceNeighbors(i, 0) < 0 || r.topo.faceNeighbors(i, 1) < 0 ||
+          r.topo.faceNeighbors(i, 2) < 0);
+    }
+    const Eigen::VectorXd alpha = fitFramesToMatchings(
+      r.s.V, r.s.F, r.topo, r.geometry, r.frameU, r.field.matching, c.weight, 0.97, held);
     Eigen::MatrixX3d V = r.frameU;
     rotateFrames(r.geometry.bases, alpha, r.frameU, V);
     r.field = evaluateMatchings(r.s.F, r.topo, r.geometry, r.frameU, r.field.matching);
