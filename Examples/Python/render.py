@@ -100,25 +100,30 @@ def add_irregular_vertices(renderer, surface, valence):
         if not regular:
             chosen.setdefault(int(k) if int(k) in groups else 0, []).append(v)
     for k, ids in chosen.items():
-        pts = vtk.vtkPoints()
-        for i in ids:
-            pts.InsertNextPoint(*points[i])
-        cloud = vtk.vtkPolyData()
-        cloud.SetPoints(pts)
-        ball = vtk.vtkSphereSource()
-        ball.SetRadius(0.006 * diagonal)
-        ball.SetThetaResolution(16)
-        ball.SetPhiResolution(12)
-        glyphs = vtk.vtkGlyph3D()
-        glyphs.SetInputData(cloud)
-        glyphs.SetSourceConnection(ball.GetOutputPort())
-        glyph_mapper = vtk.vtkPolyDataMapper()
-        glyph_mapper.SetInputConnection(glyphs.GetOutputPort())
-        glyph_mapper.ScalarVisibilityOff()
-        glyph_actor = vtk.vtkActor()
-        glyph_actor.SetMapper(glyph_mapper)
-        glyph_actor.GetProperty().SetColor(*groups.get(k, (0.95, 0.8, 0.1)))
-        renderer.AddActor(glyph_actor)
+        add_balls(renderer, points[ids], 0.006 * diagonal, groups.get(k, (0.95, 0.8, 0.1)))
+
+
+def add_balls(renderer, centres, radius, colour):
+    """Balls of one colour at the given points."""
+    pts = vtk.vtkPoints()
+    for c in centres:
+        pts.InsertNextPoint(*c)
+    cloud = vtk.vtkPolyData()
+    cloud.SetPoints(pts)
+    ball = vtk.vtkSphereSource()
+    ball.SetRadius(radius)
+    ball.SetThetaResolution(16)
+    ball.SetPhiResolution(12)
+    glyphs = vtk.vtkGlyph3D()
+    glyphs.SetInputData(cloud)
+    glyphs.SetSourceConnection(ball.GetOutputPort())
+    glyph_mapper = vtk.vtkPolyDataMapper()
+    glyph_mapper.SetInputConnection(glyphs.GetOutputPort())
+    glyph_mapper.ScalarVisibilityOff()
+    glyph_actor = vtk.vtkActor()
+    glyph_actor.SetMapper(glyph_mapper)
+    glyph_actor.GetProperty().SetColor(*colour)
+    renderer.AddActor(glyph_actor)
 
 
 def flipped_triangles(surface):
@@ -285,27 +290,8 @@ def main():
         quarter = np.abs(4.0 * values - np.round(4.0 * values)) < 1e-6
         for sign, colour in ((1, (0.85, 0.1, 0.1)), (-1, (0.1, 0.25, 0.9))):
             chosen = np.nonzero(quarter & (sign * values > 1e-9))[0]
-            if len(chosen) == 0:
-                continue
-            pts = vtk.vtkPoints()
-            for i in chosen:
-                pts.InsertNextPoint(*points[i])
-            cloud = vtk.vtkPolyData()
-            cloud.SetPoints(pts)
-            ball = vtk.vtkSphereSource()
-            ball.SetRadius(0.008 * diagonal)
-            ball.SetThetaResolution(16)
-            ball.SetPhiResolution(12)
-            glyphs = vtk.vtkGlyph3D()
-            glyphs.SetInputData(cloud)
-            glyphs.SetSourceConnection(ball.GetOutputPort())
-            glyph_mapper = vtk.vtkPolyDataMapper()
-            glyph_mapper.SetInputConnection(glyphs.GetOutputPort())
-            glyph_mapper.ScalarVisibilityOff()
-            glyph_actor = vtk.vtkActor()
-            glyph_actor.SetMapper(glyph_mapper)
-            glyph_actor.GetProperty().SetColor(*colour)
-            renderer.AddActor(glyph_actor)
+            if len(chosen) > 0:
+                add_balls(renderer, points[chosen], 0.008 * diagonal, colour)
 
     camera = renderer.GetActiveCamera()
     renderer.ResetCamera()

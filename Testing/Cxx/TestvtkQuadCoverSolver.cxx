@@ -2,6 +2,7 @@
 // output, and the whole chain on every generated and shared surface at about 3,000 quads:
 // seamless, branch points on the grid, no flipped triangle.
 #include "QuadCoverIO.h"
+#include "TestSurfaceFiles.h"
 
 #include "vtkCellData.h"
 #include "vtkCurvatureFrames.h"
@@ -79,20 +80,6 @@ Eigen::MatrixXd CornerUV(vtkPolyData* out)
   return uv;
 }
 
-vtkSmartPointer<vtkPolyData> Load(const std::string& name, std::string& path)
-{
-  const std::string shared = std::string(QUADCOVER_SHARED_DATA) + "/" + name + ".obj";
-  const std::string own = std::string(QUADCOVER_DATA) + "/" + name + ".obj";
-  path = std::ifstream(own).good() ? own : shared;
-  if (!std::ifstream(path).good())
-  {
-    return nullptr;
-  }
-  std::string error;
-  vtkSmartPointer<vtkPolyData> raw = QuadCoverIO::ReadSurface(path, error);
-  QuadCoverIO::Repairs repairs;
-  return raw ? QuadCoverIO::PrepareSurface(raw, repairs, error) : nullptr;
-}
 }
 
 TEST(vtkQuadCoverSolver, DefaultsClampsAndPrintSelf)
@@ -213,7 +200,7 @@ class ParameterizeOn : public ::testing::TestWithParam<const char*>
 TEST_P(ParameterizeOn, SeamlessGridMapWithBranchPointsOnTheGridAndNoFlips)
 {
   std::string path;
-  vtkSmartPointer<vtkPolyData> surface = Load(GetParam(), path);
+  vtkSmartPointer<vtkPolyData> surface = LoadTestSurface(GetParam(), path);
   if (!surface)
   {
     GTEST_SKIP() << "mesh not found: " << path;

@@ -3,6 +3,7 @@
 // boundary loops; irregular vertices are the branch points with the valence their index
 // predicts; the quads stay close to the input (Hausdorff distance).
 #include "QuadCoverIO.h"
+#include "TestSurfaceFiles.h"
 
 #include "vtkCellData.h"
 #include "vtkCurvatureFrames.h"
@@ -62,20 +63,6 @@ double Field(vtkPolyData* out, const char* name, int i = 0)
   return a && i < a->GetNumberOfTuples() ? a->GetComponent(i, 0) : std::nan("");
 }
 
-vtkSmartPointer<vtkPolyData> Load(const std::string& name, std::string& path)
-{
-  const std::string shared = std::string(QUADCOVER_SHARED_DATA) + "/" + name + ".obj";
-  const std::string own = std::string(QUADCOVER_DATA) + "/" + name + ".obj";
-  path = std::ifstream(own).good() ? own : shared;
-  if (!std::ifstream(path).good())
-  {
-    return nullptr;
-  }
-  std::string error;
-  vtkSmartPointer<vtkPolyData> raw = QuadCoverIO::ReadSurface(path, error);
-  QuadCoverIO::Repairs repairs;
-  return raw ? QuadCoverIO::PrepareSurface(raw, repairs, error) : nullptr;
-}
 }
 
 TEST(vtkQuadExtractor, DefaultsErrorsAndPrintSelf)
@@ -118,7 +105,7 @@ TEST(vtkQuadExtractor, CellCentresOnMeshEdgesGiveOneQuadEach)
   for (const char* name : { "torus", "sphere" })
   {
     std::string path;
-    vtkSmartPointer<vtkPolyData> surface = Load(name, path);
+    vtkSmartPointer<vtkPolyData> surface = LoadTestSurface(name, path);
     ASSERT_TRUE(surface) << path;
     Pipeline p(surface);
     p.solver->SetTargetQuadCount(6500);
@@ -138,7 +125,7 @@ class QuadsOn : public ::testing::TestWithParam<const char*>
 TEST_P(QuadsOn, ManifoldAllQuadMeshWithTheInputsTopology)
 {
   std::string path;
-  vtkSmartPointer<vtkPolyData> surface = Load(GetParam(), path);
+  vtkSmartPointer<vtkPolyData> surface = LoadTestSurface(GetParam(), path);
   if (!surface)
   {
     GTEST_SKIP() << "mesh not found: " << path;
