@@ -223,8 +223,23 @@ int vtkQuadExtractor::RequestData(
         }
         samples.row(s++) = centre;
       }
-      const double diagonal = (mesh.V.colwise().maxCoeff() - mesh.V.colwise().minCoeff()).norm();
-      const double toQuads = LargestDistance(mesh.V, quads.V, T);
+      // the input's points that triangles use (a re-joined or messy input may have others)
+      std::vector<char> used(mesh.V.rows(), 0);
+      for (Eigen::Index f = 0; f < mesh.F.rows(); ++f)
+      {
+        used[mesh.F(f, 0)] = used[mesh.F(f, 1)] = used[mesh.F(f, 2)] = 1;
+      }
+      Eigen::MatrixX3d inputPoints(std::count(used.begin(), used.end(), 1), 3);
+      for (Eigen::Index v = 0, i = 0; v < mesh.V.rows(); ++v)
+      {
+        if (used[v])
+        {
+          inputPoints.row(i++) = mesh.V.row(v);
+        }
+      }
+      const double diagonal =
+        (inputPoints.colwise().maxCoeff() - inputPoints.colwise().minCoeff()).norm();
+      const double toQuads = LargestDistance(inputPoints, quads.V, T);
       const double toInput = LargestDistance(samples, mesh.V, mesh.F);
       AddField<vtkDoubleArray>(fd, names::HausdorffDistance,
         { 100.0 * std::max(toQuads, toInput) / diagonal, 100.0 * toQuads / diagonal,

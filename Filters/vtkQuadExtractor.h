@@ -11,8 +11,9 @@
  *
  * Robustness: triangles with a flipped (u, v) image hold no quad centre and stop walks; cells
  * with a corner beyond the boundary or two corners at one grid point are skipped; quads that
- * still overlap (folded maps) are removed so that the output stays manifold. All are counted in
- * DroppedCells (zero on a seamless, flip-free map).
+ * still overlap (folded maps) are removed so that the output stays manifold. These are counted
+ * in DroppedCells (zero on a seamless, flip-free map); a cell whose centre lies only in flipped
+ * triangles is not found at all, so it is not counted (the solver's FlippedTriangles tells).
  *
  * Input: a triangle surface with the cell array CornerUV (6 components, SetInputArrayToProcess(0,
  * ...)), as vtkQuadCoverSolver writes it; also its SplitSeams output (points are merged back

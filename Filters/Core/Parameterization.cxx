@@ -1269,6 +1269,10 @@ Parameterization computeParameterization(const Eigen::MatrixX3d& V, const Eigen:
       total += std::atan2(a.cross(b).norm(), a.dot(b));
     }
     const double stretch = 2 * Pi * (1 - ft.index[p]) / total;
+    if (!(stretch > 0))
+    {
+      return; // index 1 or more: no fan can close up around it
+    }
     auto value = [&](int sector, int c) {
       double v = 0.0;
       for (const auto& t : sectorExpr[2 * sector + c])
@@ -1352,6 +1356,9 @@ Parameterization computeParameterization(const Eigen::MatrixX3d& V, const Eigen:
     // in symbols; only the real ones move, and they are the real columns
     const Untangler untangler{ Dr, D, sqrtArea, options.gridSize, numReal };
     Eigen::VectorXd xs = P * x;
+    // kept in case the repair leaves more flipped triangles and wrong fans than it found
+    const Eigen::VectorXd before = x;
+    const std::size_t defectsBefore = flipped.size() + wrong.size();
     for (int attempt = 0; attempt < 3 && (!flipped.empty() || !wrong.empty()); ++attempt)
     {
       // cones first: a point wound twice is usually the neighbour of a cone closed up into
@@ -1364,10 +1371,6 @@ Parameterization computeParameterization(const Eigen::MatrixX3d& V, const Eigen:
         if (ft.layerShift[p] != 0 || attempt > 0)
         {
           layOut(p, xs, frozen);
-        }
-        for (int i = topo.ringOffsets[p]; i < topo.ringOffsets[p + 1]; ++i)
-        {
-          flipped.push_back(topo.ringFaces[i]); // untangle around it too
         }
       }
       x.head(numReal) = xs.head(numReal);
@@ -1389,6 +1392,12 @@ Parameterization computeParameterization(const Eigen::MatrixX3d& V, const Eigen:
         x.head(numReal) = xs.head(numReal);
         flipped = flippedFaces(uvOf(x));
       }
+      wrong = wrongWindings(uvOf(x));
+    }
+    if (flipped.size() + wrong.size() > defectsBefore)
+    {
+      x = before;
+      flipped = flippedFaces(uvOf(x));
       wrong = wrongWindings(uvOf(x));
     }
     out.untangleSeconds = seconds(started);

@@ -107,8 +107,10 @@ inline int windingErrors(const Eigen::MatrixX3i& F, const MeshTopology& topo,
     for (int k = 0; k < 3; ++k)
     {
       const Complex z = cornerZ(cornerUV, f, k);
-      sum[F(f, k)] +=
-        std::arg((cornerZ(cornerUV, f, (k + 2) % 3) - z) / (cornerZ(cornerUV, f, (k + 1) % 3) - z));
+      const Complex a = cornerZ(cornerUV, f, (k + 1) % 3) - z;
+      const Complex b = cornerZ(cornerUV, f, (k + 2) % 3) - z;
+      // signed angle from a to b; 0 (not NaN) for a collapsed corner, which then shows
+      sum[F(f, k)] += std::atan2(std::imag(std::conj(a) * b), std::real(std::conj(a) * b));
     }
   }
   int wrong = 0;
