@@ -119,6 +119,7 @@ public:
   /// Walks from triangle f towards q (in f's chart) to the triangle holding q.
   bool walk(int f, Complex q, Location& at) const
   {
+    unsigned long long random = 0x9E3779B97F4A7C15ULL;
     for (int step = 0; step < options.maxWalk; ++step)
     {
       if (flipped[f])
@@ -132,6 +133,22 @@ public:
       {
         identify(f, q, b, at);
         return true;
+      }
+      if (step >= 64)
+      {
+        // Always stepping towards the most negative coordinate can cycle on meshes far from
+        // Delaunay; a random choice among the negative ones cannot (stochastic visibility walk).
+        random = random * 6364136223846793005ULL + 1442695040888963407ULL;
+        int choices[3];
+        int count = 0;
+        for (int c = 0; c < 3; ++c)
+        {
+          if (b[c] < -options.tolerance)
+          {
+            choices[count++] = c;
+          }
+        }
+        k = choices[(random >> 33) % static_cast<unsigned long long>(count)];
       }
       const int edge = (k + 1) % 3; // the edge opposite corner k
       const int g = topo.faceNeighbors(f, edge);
