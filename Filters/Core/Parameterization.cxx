@@ -285,7 +285,7 @@ Eigen::MatrixXd solveSpd(const SparseMatrix& A, const Eigen::MatrixXd& B, const 
  * a smooth stand-in for a barrier against det J <= 0 that stays finite on flipped triangles; eps
  * shrinks with the most negative determinant, so the minimizer (L-BFGS) becomes foldover-free.
  * The unknowns moved are those of the triangles within `rings` rings of a flipped one; every
- * triangle they touch is in the energy. Returns the triangles still flipped among those.
+ * triangle they touch is in the energy.
  */
 struct Untangler
 {
@@ -347,10 +347,9 @@ struct Untangler
     return total;
   }
 
-  /// Untangles around `flipped` (faces), moving real unknowns; returns the faces still flipped.
-  std::vector<int> run(const MeshTopology& topo, const Eigen::MatrixX3i& F,
-    const std::vector<int>& flipped, int rings, int maxRounds, Eigen::VectorXd& x,
-    const std::vector<char>& frozen = {}) const
+  /// Untangles around `flipped` (faces), moving real unknowns (callers recount the flips).
+  void run(const MeshTopology& topo, const Eigen::MatrixX3i& F, const std::vector<int>& flipped,
+    int rings, int maxRounds, Eigen::VectorXd& x, const std::vector<char>& frozen = {}) const
   {
     const int nF = static_cast<int>(F.rows());
     // the region: faces within `rings` vertex rings of a flipped face
@@ -544,15 +543,6 @@ struct Untangler
     {
       x[freeColumns[i]] = y[i];
     }
-    std::vector<int> still;
-    for (const int f : faces)
-    {
-      if (!(jacobian(f, x).determinant() > 0))
-      {
-        still.push_back(f);
-      }
-    }
-    return still;
   }
 };
 }

@@ -65,18 +65,24 @@ class CurvaturePipeline(unittest.TestCase):
         self.assertFalse(f.GetUseInputFrames())
         self.assertIn("NeighborhoodRadius", str(f))
 
-    def test_whole_chain_on_the_sphere(self):
-        # Curvature -> smoothing -> matchings with no array selection: 8 branch points of
-        # layer shift 1 (index +1/4), and Poincare-Hopf.
+    def matchings_of(self, name):
+        # Data/NAME.obj through curvature, smoothing and matchings, no array selection. The
+        # filters are kept on the test: the pipeline does not keep its upstream alive.
         from quadcover import vtkFrameSmoother, vtkMatchingBuilder
         reader = vtk.vtkOBJReader()
-        reader.SetFileName(os.path.join(DATA, "sphere.obj"))
+        reader.SetFileName(os.path.join(DATA, name + ".obj"))
         frames = vtkCurvatureFrames()
         frames.SetInputConnection(reader.GetOutputPort())
         smoother = vtkFrameSmoother()
         smoother.SetInputConnection(frames.GetOutputPort())
         matching = vtkMatchingBuilder()
         matching.SetInputConnection(smoother.GetOutputPort())
+        self.chain = (reader, frames, smoother, matching)
+        return matching
+
+    def test_whole_chain_on_the_sphere(self):
+        # 8 branch points of layer shift 1 (index +1/4), and Poincare-Hopf.
+        matching = self.matchings_of("sphere")
         matching.Update()
         out = matching.GetOutput()
         index = numpy_support.vtk_to_numpy(out.GetPointData().GetArray("SingularityIndex"))
@@ -89,17 +95,9 @@ class CurvaturePipeline(unittest.TestCase):
 
     def test_solver_after_the_chain(self):
         # The fourth stage from Python: integer seam translations, branch points on the grid.
-        from quadcover import (vtkFrameSmoother, vtkMatchingBuilder, vtkQuadCoverSolver)
-        reader = vtk.vtkOBJReader()
-        reader.SetFileName(os.path.join(DATA, "roundedcube.obj"))
-        frames = vtkCurvatureFrames()
-        frames.SetInputConnection(reader.GetOutputPort())
-        smoother = vtkFrameSmoother()
-        smoother.SetInputConnection(frames.GetOutputPort())
-        matching = vtkMatchingBuilder()
-        matching.SetInputConnection(smoother.GetOutputPort())
+        from quadcover import vtkQuadCoverSolver
         solver = vtkQuadCoverSolver()
-        solver.SetInputConnection(matching.GetOutputPort())
+        solver.SetInputConnection(self.matchings_of("roundedcube").GetOutputPort())
         solver.SetTargetQuadCount(600)
         solver.SetRoundingModeToGreedy()
         solver.Update()
