@@ -73,7 +73,9 @@ public:
    * After the optimization changed matchings, turn the frames (FrameU, FrameV) so that they
    * agree with them (default on): the turning a changed matching leaves on its path spreads
    * smoothly over the surface (vtkFrameSmoother's energy to second order, weighted 0.97 towards
-   * smoothness, FrameWeight as alignment weight when present), indices unchanged. Without it the
+   * smoothness, FrameWeight as alignment weight when present), indices unchanged. Frames held
+   * along the boundary (FrameConstrained, on a triangle with a boundary edge) do not turn, so the
+   * boundary stays on grid lines. Without it the
    * parameterization has to absorb a quarter turn along every merge path, which folds it.
    */
   vtkSetMacro(FitFramesToMatchings, bool);
