@@ -103,6 +103,7 @@ int vtkQuadCoverSolver::RequestData(
     options.gridSize = this->TargetEdgeLength > 0
       ? this->TargetEdgeLength
       : quadcover::gridSizeForQuadCount(mesh.V, mesh.F, this->TargetQuadCount);
+    options.targetQuads = this->TargetEdgeLength > 0 ? 0.0 : this->TargetQuadCount;
     options.pureQuads = this->PureQuads;
     options.rounding = this->RoundingMode == ROUNDING_NONE
       ? quadcover::Rounding::None

@@ -19,7 +19,10 @@
  * (Garanzha et al. 2021), the integers kept (MaximumUntangleRounds). With AlignToBoundary, boundary
  * edges along a frame direction lie on integer grid lines.
  *
- * The grid size is TargetEdgeLength when positive, else sqrt(area / TargetQuadCount).
+ * The grid size is TargetEdgeLength when positive. Otherwise it is chosen so that the
+ * continuous map covers TargetQuadCount unit cells (its (u, v) area): sqrt(area /
+ * TargetQuadCount) to begin with, corrected by the continuous map's area, which is smaller where
+ * the field is far from integrable. GridScale reports the size used.
  *
  * Input: a manifold, consistently oriented triangle surface with the cell arrays FrameU
  * (SetInputArrayToProcess(0, ...)) and Matching (SetInputArrayToProcess(1, ...)), as

@@ -964,7 +964,7 @@ Parameterization computeParameterization(const Eigen::MatrixX3d& V, const Eigen:
     const SparseMatrix full = lower.selfadjointView<Eigen::Lower>();
     H = P.transpose() * full * P;
   }
-  const double energyNorm = 2.0 * scale * scale * std::max(totalArea, 1e-300);
+  double energyNorm = 2.0 * scale * scale * std::max(totalArea, 1e-300);
   auto energyOf = [&](const Eigen::VectorXd& x) {
     return (D * (P * x) - rhs).squaredNorm() / energyNorm;
   };
@@ -1034,6 +1034,28 @@ Parameterization computeParameterization(const Eigen::MatrixX3d& V, const Eigen:
     }
   }
   out.solveSeconds.push_back(seconds(start));
+  if (options.targetQuads > 0 && n > 0)
+  {
+    // The constraints are homogeneous, so the minimizer is linear in the right-hand side
+    // (1 / gridSize); H and S do not depend on it.
+    const Eigen::MatrixX2d uv = uvOf(x);
+    double cells = 0.0;
+    for (int f = 0; f < nF; ++f)
+    {
+      const Eigen::Vector2d a = uv.row(out.cornerSector[3 * f]).transpose();
+      const Eigen::Vector2d b = uv.row(out.cornerSector[3 * f + 1]).transpose();
+      const Eigen::Vector2d c = uv.row(out.cornerSector[3 * f + 2]).transpose();
+      cells += 0.5 * ((b - a).x() * (c - a).y() - (b - a).y() * (c - a).x());
+    }
+    if (cells > 0 && std::isfinite(cells))
+    {
+      const double factor = std::sqrt(options.targetQuads / cells);
+      x *= factor;
+      rhs *= factor;
+      energyNorm *= factor * factor;
+      out.gridSize /= factor;
+    }
+  }
   out.energyContinuous = energyOf(x);
   out.flippedContinuous = static_cast<int>(flippedFaces(uvOf(x)).size());
 
@@ -1287,7 +1309,7 @@ Parameterization computeParameterization(const Eigen::MatrixX3d& V, const Eigen:
       direction += stretch * std::atan2(a.cross(b).norm(), a.dot(b));
       // place the face's other ring point (corner k + 2) in this face's chart
       const int ring = out.cornerSector[3 * f + (k + 2) % 3];
-      const double radius = b.norm() / options.gridSize;
+      const double radius = b.norm() / out.gridSize;
       const Eigen::Vector2d target(value(cone, 0) + radius * std::cos(direction),
         value(cone, 1) + radius * std::sin(direction));
       int sym[2] = { -1, -1 };
@@ -1344,7 +1366,7 @@ Parameterization computeParameterization(const Eigen::MatrixX3d& V, const Eigen:
       sqrtArea[f] = std::sqrt(std::max(0.0, faceArea[f]));
     }
     // in symbols; only the real ones move, and they are the real columns
-    const Untangler untangler{ Dr, D, sqrtArea, options.gridSize, numReal };
+    const Untangler untangler{ Dr, D, sqrtArea, out.gridSize, numReal };
     Eigen::VectorXd xs = P * x;
     // kept in case the repair leaves more flipped triangles and wrong fans than it found
     const Eigen::VectorXd before = x;

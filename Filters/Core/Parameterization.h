@@ -27,6 +27,12 @@ struct ParameterizationOptions
 {
   /// World length of one parameter unit (the quads' edge length); must be positive.
   double gridSize = 0.0;
+  /// When positive, the grid size is corrected after the continuous solve so that the map
+  /// covers this many unit cells (its (u, v) area): a field that is far from integrable is
+  /// fitted by a map with shorter gradients than 1/gridSize, which would give fewer and larger
+  /// quads than gridSizeForQuadCount promised. The map is linear in 1/gridSize, so the
+  /// correction costs no solve. The grid size used is Parameterization::gridSize.
+  double targetQuads = 0.0;
   /// Branch points on grid points (integer unknowns), so extraction gives only quads. Without
   /// it only the seam translations are integer and a branch point may lie at the middle of a
   /// grid cell or edge (Theorem 2).
