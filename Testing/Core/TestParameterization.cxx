@@ -267,6 +267,35 @@ TEST(Parameterization, SectorsCutTheSurfaceOpenConsistently)
   }
 }
 
+TEST(Parameterization, TargetQuadsCorrectsTheGridSizeByTheMapsArea)
+{
+  // The torus' field is not integrable as it stands (around the axis the fitted |grad| varies
+  // with the distance from the axis), so the least-squares map covers fewer cells than
+  // area / h^2; targetQuads corrects h after the continuous solve.
+  auto cells = [](const Eigen::MatrixXd& uv) {
+    double sum = 0.0;
+    for (Eigen::Index f = 0; f < uv.rows(); ++f)
+    {
+      sum += 0.5 * ((uv(f, 2) - uv(f, 0)) * (uv(f, 5) - uv(f, 1)) -
+                     (uv(f, 3) - uv(f, 1)) * (uv(f, 4) - uv(f, 0)));
+    }
+    return sum;
+  };
+  const Surface torus = makeTorus(1.0, 0.6, 96, 48);
+  const Chain plain = runChain(torus, 1500);
+  ParameterizationOptions options;
+  options.targetQuads = 1500;
+  const Chain corrected = runChain(torus, 1500, options);
+  std::printf("cells: %.1f by area / h^2, %.1f corrected; h %.5f -> %.5f\n",
+    cells(plain.map.cornerUV), cells(corrected.map.cornerUV), plain.map.gridSize,
+    corrected.map.gridSize);
+  EXPECT_LT(cells(plain.map.cornerUV), 0.97 * 1500);
+  // (the periods are then rounded to integers: a few per cent either way)
+  EXPECT_NEAR(cells(corrected.map.cornerUV), 1500, 0.05 * 1500);
+  EXPECT_LT(corrected.map.gridSize, plain.map.gridSize);
+  expectIntegerGridMap(corrected, "torus, corrected");
+}
+
 TEST(Parameterization, GridSizeFollowsTheQuadCount)
 {
   const Surface s = makeIcosphere(1.0, 3);
