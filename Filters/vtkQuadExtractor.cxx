@@ -137,7 +137,14 @@ int vtkQuadExtractor::RequestData(
 
   try
   {
-    const quadcover::QuadMesh quads = quadcover::extractQuads(mesh.V, mesh.F, mesh.topo, uv);
+    quadcover::QuadMesh quads = quadcover::extractQuads(mesh.V, mesh.F, mesh.topo, uv);
+    if (this->RelaxationIterations > 0)
+    {
+      this->UpdateProgress(0.4);
+      quadcover::QuadRelaxOptions relax;
+      relax.iterations = this->RelaxationIterations;
+      quadcover::relaxQuads(mesh.V, mesh.F, mesh.topo, quads, relax);
+    }
     this->UpdateProgress(0.6);
     const quadcover::QuadQuality m = quadcover::measureQuads(quads.V, quads.Q);
     const int dropped = quads.cellsOffSurface + quads.cellsDegenerate + quads.cellsConflicting;
@@ -259,6 +266,7 @@ int vtkQuadExtractor::RequestData(
 void vtkQuadExtractor::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
+  os << indent << "RelaxationIterations: " << this->RelaxationIterations << "\n";
   os << indent << "ComputeHausdorffDistance: " << (this->ComputeHausdorffDistance ? "On" : "Off")
      << "\n";
 }

@@ -47,6 +47,20 @@ public:
   vtkBooleanMacro(ComputeHausdorffDistance, bool);
   ///@}
 
+  ///@{
+  /** Sweeps of tangential relaxation after extraction, in [0, 1000] (default 0: the quads as
+   * the map cuts them). Each free vertex moves halfway towards the area-weighted mean of its
+   * quads' centres, in the input's tangent plane, and back onto the input surface; vertices on
+   * the boundary or on input creases (dihedral angle above 60 degrees) stay, and no move turns a
+   * quad corner inside out. It evens out uneven spacing (a jittered mesh returns to about its
+   * original figures) but it cannot change how many quads a region has, which is where most of a
+   * map's distortion shows: on the shared meshes it lowers the RSDs by a few per cent at most,
+   * raises the Hausdorff distance slightly, and the grid lines follow the frame field less
+   * exactly (README, "How the quads are cut out"). */
+  vtkSetClampMacro(RelaxationIterations, int, 0, 1000);
+  vtkGetMacro(RelaxationIterations, int);
+  ///@}
+
 protected:
   vtkQuadExtractor();
   ~vtkQuadExtractor() override = default;
@@ -54,6 +68,7 @@ protected:
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
   bool ComputeHausdorffDistance = true;
+  int RelaxationIterations = 0;
 
 private:
   vtkQuadExtractor(const vtkQuadExtractor&) = delete;

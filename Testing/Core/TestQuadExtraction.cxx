@@ -12,6 +12,7 @@
 
 #include <cmath>
 #include <map>
+#include <random>
 
 using namespace quadcover;
 
@@ -175,4 +176,87 @@ TEST(QuadExtraction, MeasuresAKnownQuadMesh)
   Eigen::MatrixX4i twice(2, 4);
   twice << 0, 1, 5, 4, 0, 1, 5, 4;
   EXPECT_EQ(measureQuads(V, twice).nonManifoldEdges, 4);
+}
+
+TEST(QuadRelaxation, EvensOutAJitteredMeshOnTheSurface)
+{
+  const Chain c = runChain(testSurface("sphere"), 800);
+  QuadMesh q = extractQuads(c.s.V, c.s.F, c.topo, c.map.cornerUV);
+  const QuadQuality clean = measureQuads(q.V, q.Q);
+  // jitter every vertex along the sphere by a third of an edge
+  const double edge = std::sqrt(4 * 3.14159265358979 / q.Q.rows());
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> uniform(-1.0, 1.0);
+  for (int v = 0; v < q.V.rows(); ++v)
+  {
+    const Eigen::Vector3d p = q.V.row(v);
+    Eigen::Vector3d d(uniform(rng), uniform(rng), uniform(rng));
+    d -= d.dot(p) * p / p.squaredNorm();
+    q.V.row(v) = (p + edge / 3 * d.normalized()).normalized() * p.norm();
+  }
+  const QuadQuality jittered = measureQuads(q.V, q.Q);
+  const Eigen::MatrixX4i quads = q.Q;
+  QuadRelaxOptions options;
+  options.iterations = 20;
+  const QuadRelaxReport report = relaxQuads(c.s.V, c.s.F, c.topo, q, options);
+  const QuadQuality relaxed = measureQuads(q.V, q.Q);
+  std::printf("edge RSD %.1f%% clean, %.1f%% jittered, %.1f%% relaxed; angle RSD %.1f / %.1f / "
+              "%.1f%%; %d moves rejected\n",
+    100 * clean.edgeLengthRSD, 100 * jittered.edgeLengthRSD, 100 * relaxed.edgeLengthRSD,
+    100 * clean.angleRSD, 100 * jittered.angleRSD, 100 * relaxed.angleRSD, report.rejectedMoves);
+  EXPECT_TRUE(q.Q == quads) << "the connectivity stays";
+  EXPECT_EQ(report.fixedVertices, 0) << "a sphere has no boundary and no crease";
+  EXPECT_LT(relaxed.edgeLengthRSD, 0.5 * jittered.edgeLengthRSD);
+  EXPECT_LT(relaxed.angleRSD, 0.5 * jittered.angleRSD);
+  EXPECT_GT(relaxed.minScaledJacobian, 0.0);
+  for (int v = 0; v < q.V.rows(); ++v)
+  {
+    ASSERT_NEAR(q.V.row(v).norm(), 1.0, 0.01) << "on the (inscribed) unit sphere";
+    // in the triangle it says it lies in
+    const int f = q.vertexTriangle[v];
+    const Eigen::Vector3d a = c.s.V.row(c.s.F(f, 0)), b = c.s.V.row(c.s.F(f, 1)),
+                          cc = c.s.V.row(c.s.F(f, 2));
+    const Eigen::Vector3d n = (b - a).cross(cc - a);
+    const Eigen::Vector3d p = q.V.row(v);
+    ASSERT_LT(std::abs((p - a).dot(n.normalized())), 1e-9) << v;
+    for (const auto& [s, t] : { std::pair{ a, b }, { b, cc }, { cc, a } })
+    {
+      ASSERT_GE((t - s).cross(p - s).dot(n), -1e-12 * n.squaredNorm()) << v;
+    }
+  }
+}
+
+TEST(QuadRelaxation, BoundaryVerticesStay)
+{
+  const Chain c = runChain(testSurface("cylinder"), 600);
+  QuadMesh q = extractQuads(c.s.V, c.s.F, c.topo, c.map.cornerUV);
+  const QuadQuality before = measureQuads(q.V, q.Q);
+  const Eigen::MatrixX3d start = q.V;
+  QuadRelaxOptions options;
+  options.iterations = 10;
+  const QuadRelaxReport report = relaxQuads(c.s.V, c.s.F, c.topo, q, options);
+  const QuadQuality after = measureQuads(q.V, q.Q);
+  EXPECT_EQ(report.fixedVertices, before.boundaryEdges) << "one per boundary edge on 2 loops";
+  int moved = 0;
+  for (int v = 0; v < q.V.rows(); ++v)
+  {
+    moved += (q.V.row(v) - start.row(v)).norm() > 1e-12;
+  }
+  EXPECT_LE(moved, q.V.rows() - report.fixedVertices);
+  EXPECT_EQ(after.boundaryLoops, 2);
+  EXPECT_EQ(after.irregularBoundary, 0);
+  EXPECT_NEAR(after.edgeLengthRSD, before.edgeLengthRSD, 0.01) << "a regular grid stays regular";
+}
+
+TEST(QuadRelaxation, RejectsBadOptions)
+{
+  const Chain c = runChain(testSurface("sphere"), 200);
+  QuadMesh q = extractQuads(c.s.V, c.s.F, c.topo, c.map.cornerUV);
+  QuadRelaxOptions options;
+  options.iterations = 1;
+  options.step = 0.0;
+  EXPECT_THROW(relaxQuads(c.s.V, c.s.F, c.topo, q, options), std::invalid_argument);
+  options.step = 0.5;
+  q.vertexTriangle.pop_back();
+  EXPECT_THROW(relaxQuads(c.s.V, c.s.F, c.topo, q, options), std::invalid_argument);
 }

@@ -18,6 +18,7 @@
 #include "vtkQuadCoverEigen.h"
 #include "vtkQuadCoverSolver.h"
 #include "vtkQuadExtractor.h"
+#include "vtkMath.h"
 
 #include "MeshTopology.h"
 #include "Surfaces.h"
@@ -72,6 +73,14 @@ TEST(vtkQuadExtractor, DefaultsErrorsAndPrintSelf)
   std::ostringstream os;
   e->Print(os);
   EXPECT_NE(os.str().find("ComputeHausdorffDistance: On"), std::string::npos);
+  EXPECT_EQ(e->GetRelaxationIterations(), 0);
+  e->SetRelaxationIterations(-3);
+  EXPECT_EQ(e->GetRelaxationIterations(), 0);
+  e->SetRelaxationIterations(7);
+  std::ostringstream os7;
+  e->Print(os7);
+  EXPECT_NE(os7.str().find("RelaxationIterations: 7"), std::string::npos);
+  e->SetRelaxationIterations(0);
   const quadcover::Surface sphere = quadcover::makeIcosphere(1.0, 2);
   vtkNew<QuadCoverIO::ErrorObserver> errors;
   errors->Attach(e);
@@ -117,6 +126,42 @@ TEST(vtkQuadExtractor, CellCentresOnMeshEdgesGiveOneQuadEach)
     EXPECT_EQ(Field(out, names::EulerCharacteristic), name == std::string("torus") ? 0 : 2);
     EXPECT_EQ(out->GetFieldData()->GetArray(names::HausdorffDistance), nullptr);
   }
+}
+
+TEST(vtkQuadExtractor, RelaxationKeepsTheMeshAndItsFigures)
+{
+  const quadcover::Surface knot =
+    quadcover::makeKnotTube(2, 3, 1.0, 0.4, 0.12, 240, 20, 0.3, 0.03, 7);
+  Pipeline p(vtkQuadCoverEigen::ToPolyData(knot.V, knot.F));
+  p.solver->SetTargetQuadCount(800);
+  p.extractor->Update();
+  vtkNew<vtkPolyData> raw;
+  raw->DeepCopy(p.extractor->GetOutput());
+  p.extractor->SetRelaxationIterations(10);
+  p.extractor->Update();
+  ASSERT_EQ(p.errors->Error(), "");
+  vtkPolyData* relaxed = p.extractor->GetOutput();
+  EXPECT_EQ(relaxed->GetNumberOfCells(), raw->GetNumberOfCells());
+  EXPECT_EQ(relaxed->GetNumberOfPoints(), raw->GetNumberOfPoints());
+  EXPECT_EQ(Field(relaxed, names::EulerCharacteristic), 0);
+  EXPECT_EQ(Field(relaxed, names::NonManifoldEdges), 0);
+  EXPECT_GT(Field(relaxed, names::ScaledJacobianStatistics, 0), 0.0) << "no inverted corner";
+  // the points moved, along the surface
+  double moved = 0.0;
+  for (vtkIdType i = 0; i < raw->GetNumberOfPoints(); ++i)
+  {
+    double a[3], b[3];
+    raw->GetPoint(i, a);
+    relaxed->GetPoint(i, b);
+    moved = std::max(moved, std::sqrt(vtkMath::Distance2BetweenPoints(a, b)));
+  }
+  EXPECT_GT(moved, 0.0);
+  EXPECT_LT(Field(relaxed, names::HausdorffDistance), 1.0) << "% of the diagonal";
+  std::printf("knot: edge RSD %.1f%% -> %.1f%%, angle RSD %.1f%% -> %.1f%%, Hausdorff %.2f%% -> "
+              "%.2f%%\n",
+    100 * Field(raw, names::EdgeLengthRSD), 100 * Field(relaxed, names::EdgeLengthRSD),
+    100 * Field(raw, names::AngleRSD), 100 * Field(relaxed, names::AngleRSD),
+    Field(raw, names::HausdorffDistance), Field(relaxed, names::HausdorffDistance));
 }
 
 class QuadsOn : public ::testing::TestWithParam<const char*>
