@@ -88,14 +88,20 @@ int vtkMatchingBuilder::RequestData(
     const int branchBefore = t.branchPoints;
     const double costBefore = t.matchingCost; // before the optimization changes t
     int pathsChanged = 0;
+    quadcover::BranchPointOptions options;
+    options.weight = this->BranchPointWeight;
+    options.maxVisited = this->MaximumSearchSize;
+    options.lengthScaled = this->LengthScaledCost;
+    double objective[2];
+    objective[0] = options.weight * t.singularities +
+      quadcover::scaledMatchingCost(mesh.F, mesh.topo, geometry, t, options.lengthScaled);
+    objective[1] = objective[0];
     if (this->OptimizeBranchPoints && !this->GetAbortExecute())
     {
-      quadcover::BranchPointOptions options;
-      options.weight = this->BranchPointWeight;
-      options.maxVisited = this->MaximumSearchSize;
       const quadcover::BranchPointReport report =
         quadcover::optimizeBranchPoints(mesh.F, mesh.topo, geometry, U, t, options);
       pathsChanged = report.pathsChanged;
+      objective[1] = report.costAfter;
     }
     this->UpdateProgress(0.7);
     Eigen::MatrixX3d fittedU;
@@ -201,6 +207,8 @@ int vtkMatchingBuilder::RequestData(
       fd, names::BranchPointCount, { double(branchBefore), double(t.branchPoints) });
     vtkQuadCoverEigen::AddField<vtkDoubleArray>(
       fd, names::MatchingCost, { costBefore, t.matchingCost });
+    vtkQuadCoverEigen::AddField<vtkDoubleArray>(
+      fd, names::BranchPointObjective, { objective[0], objective[1] });
 
     // The branch points, for glyphs.
     vtkNew<vtkPoints> points;
@@ -245,5 +253,6 @@ void vtkMatchingBuilder::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "OptimizeBranchPoints: " << (this->OptimizeBranchPoints ? "On" : "Off") << "\n";
   os << indent << "BranchPointWeight: " << this->BranchPointWeight << "\n";
   os << indent << "MaximumSearchSize: " << this->MaximumSearchSize << "\n";
+  os << indent << "LengthScaledCost: " << (this->LengthScaledCost ? "On" : "Off") << "\n";
   os << indent << "FitFramesToMatchings: " << (this->FitFramesToMatchings ? "On" : "Off") << "\n";
 }

@@ -10,14 +10,17 @@
  * With OptimizeBranchPoints (default on) it then runs the greedy search of Sect. 4.2: paths
  * from singular points (index +-1/4 or +-1/2) to nearby singular points get their matchings
  * changed when that lowers BranchPointWeight * (number of singular points) + sum over edges of
- * the matched frames' angle (radians). Only pairs that cancel are merged: no singularity grows.
- * Poincare-Hopf holds before and after.
+ * the matched frames' angle (radians), each edge's angle counted in proportion to its length
+ * over sqrt(area / 2000) with LengthScaledCost (default; about one per edge on a 4,000-triangle
+ * mesh), so that a finer mesh of the same surface keeps about the same singularities. Only pairs
+ * that cancel are merged: no singularity grows. Poincare-Hopf holds before and after.
  *
  * Output 0: the surface with cell data Matching (3 x int: for edge k = (point k, point k+1),
  * X_{neighbour,m} = X_{this,(m - r) mod 4}, X_0 = FrameU, X_1 = n x FrameU, ...; -1 on boundary
  * edges), point data LayerShift (int, 0 on the boundary) and SingularityIndex (double), field
  * data SingularityCount, SingularityHistogram ((index, inner points) per non-zero index),
- * BranchPointCount (before, after) and MatchingCost (before, after).
+ * BranchPointCount (before, after), MatchingCost (before, after) and BranchPointObjective
+ * (before, after: the cost the optimization lowers).
  * Output 1: the branch points (non-zero layer shift) as points with vertex cells and point data
  * SingularityIndex, LayerShift and SurfacePointId, ready for glyphs in ParaView.
  *
@@ -63,6 +66,17 @@ public:
   ///@}
 
   ///@{
+  /**
+   * Count each edge's matching angle in proportion to its length (default on), so that the
+   * cost of merging two singularities grows with their distance on the surface rather than
+   * with the number of edges between them; off, every edge counts once (the paper's cost).
+   */
+  vtkSetMacro(LengthScaledCost, bool);
+  vtkGetMacro(LengthScaledCost, bool);
+  vtkBooleanMacro(LengthScaledCost, bool);
+  ///@}
+
+  ///@{
   /** Points one search may visit from a branch point, in [1, 10^7] (default 20000). */
   vtkSetClampMacro(MaximumSearchSize, int, 1, 10000000);
   vtkGetMacro(MaximumSearchSize, int);
@@ -95,6 +109,7 @@ protected:
   bool OptimizeBranchPoints = true;
   double BranchPointWeight = 6.0;
   int MaximumSearchSize = 20000;
+  bool LengthScaledCost = true;
   bool FitFramesToMatchings = true;
 
 private:

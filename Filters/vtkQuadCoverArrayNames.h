@@ -61,6 +61,10 @@ constexpr const char* BranchPointCount = "BranchPointCount";
 /// field, 1 x double, 2 tuples: sum over inner edges of the matched frames' angle (C_ij), before
 /// and after the optimization.
 constexpr const char* MatchingCost = "MatchingCost";
+/// field, 1 x double, 2 tuples: what the branch-point optimization lowers, BranchPointWeight *
+/// singular points + the matching cost with each edge scaled by its length (LengthScaledCost),
+/// before and after.
+constexpr const char* BranchPointObjective = "BranchPointObjective";
 /// point data of the branch-point output (and of vtkQuadCoverSolver's SplitSeams output): the
 /// point's id in the surface.
 constexpr const char* SurfacePointId = "SurfacePointId";

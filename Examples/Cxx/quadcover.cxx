@@ -67,7 +67,8 @@ void Usage(std::ostream& os, const std::vector<NumberOption>& numbers)
     "  --no-input-frames  ignore a FrameU cell array on the input; use curvature frames\n",
     "  --no-features      do not hold frames along sharp edges\n"
     "  --no-boundary-alignment  do not hold frames along the boundary\n",
-    "  --no-branch-optimization  keep the smallest-angle matchings\n",
+    "  --no-branch-optimization  keep the smallest-angle matchings\n"
+    "  --edge-count-cost  every edge counts once in the merge cost (not by its length)\n",
     "  --no-pure-quads    only seam translations integer (branch points may lie mid-cell)\n"
     "  --rounding MODE    greedy|simple|none (default greedy)\n"
     "  --split-seams      write the surface cut open along the seams, with UV texture\n"
@@ -174,7 +175,7 @@ int main(int argc, char* argv[])
   vtkNew<vtkMatchingBuilder> matching;
   vtkNew<vtkQuadCoverSolver> solver;
   vtkNew<vtkQuadExtractor> extractor;
-  bool pureQuads = true, splitSeams = false, hausdorff = true;
+  bool pureQuads = true, splitSeams = false, hausdorff = true, lengthScaledCost = true;
   int rounding = solver->GetRoundingMode();
   std::vector<NumberOption> numbers = {
     { 0, "--radius R", "neighbourhood radius in median edge lengths",
@@ -209,6 +210,10 @@ int main(int argc, char* argv[])
       double(solver->GetMaximumUntangleRoundsMinValue()),
       double(solver->GetMaximumUntangleRoundsMaxValue()),
       double(solver->GetMaximumUntangleRounds()), true },
+    { 4, "--relax N", "sweeps of tangential relaxation of the quads",
+      double(extractor->GetRelaxationIterationsMinValue()),
+      double(extractor->GetRelaxationIterationsMaxValue()),
+      double(extractor->GetRelaxationIterations()), true },
   };
   for (int i = 1; i < argc; ++i)
   {
@@ -259,6 +264,8 @@ int main(int argc, char* argv[])
       boundary = false;
     else if (a == "--no-branch-optimization")
       optimizeBranches = false;
+    else if (a == "--edge-count-cost")
+      lengthScaledCost = false;
     else if (a == "--pure-quads")
       pureQuads = true;
     else if (a == "--no-pure-quads")
@@ -368,6 +375,7 @@ int main(int argc, char* argv[])
   smoother->SetAlignToBoundary(boundary);
   matching->SetInputConnection(smoother->GetOutputPort());
   matching->SetOptimizeBranchPoints(optimizeBranches);
+  matching->SetLengthScaledCost(lengthScaledCost);
   matching->SetBranchPointWeight(numbers[5].value);
   solver->SetInputConnection(matching->GetOutputPort());
   solver->SetTargetQuadCount(static_cast<int>(numbers[6].value));
@@ -379,6 +387,7 @@ int main(int argc, char* argv[])
   solver->SetSplitSeams(splitSeams);
   extractor->SetInputConnection(solver->GetOutputPort());
   extractor->SetComputeHausdorffDistance(hausdorff);
+  extractor->SetRelaxationIterations(static_cast<int>(numbers[10].value));
   vtkAlgorithm* const pipeline[] = { curvature, smoother, matching, solver, extractor };
   vtkPolyData* result = nullptr;
   for (int s = 0; s <= lastStage; ++s)

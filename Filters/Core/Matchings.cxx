@@ -8,6 +8,7 @@
 #include <cmath>
 #include <functional>
 #include <limits>
+#include <map>
 #include <queue>
 #include <stdexcept>
 #include <string>
@@ -55,14 +56,21 @@ FrameGeometry computeFrameGeometry(
   G.bases = computeFaceBases(V, F, topo);
   G.transport = computeTransport(V, F, topo, G.bases);
   G.edgeAngle.resize(F.rows(), 3);
+  G.edgeLength.resize(F.rows(), 3);
+  double area = 0.0;
   for (Eigen::Index f = 0; f < F.rows(); ++f)
   {
     for (int k = 0; k < 3; ++k)
     {
       const Eigen::RowVector3d e = V.row(F(f, (k + 1) % 3)) - V.row(F(f, k));
       G.edgeAngle(f, k) = std::atan2(e.dot(G.bases.b2.row(f)), e.dot(G.bases.b1.row(f)));
+      G.edgeLength(f, k) = e.norm();
     }
+    const Eigen::Vector3d a = V.row(F(f, 1)) - V.row(F(f, 0));
+    const Eigen::Vector3d b = V.row(F(f, 2)) - V.row(F(f, 0));
+    area += 0.5 * a.cross(b).norm();
   }
+  G.referenceLength = std::sqrt(area / 2000.0);
   G.defect = angleDefects(V, F, topo);
   return G;
 }
@@ -225,19 +233,51 @@ void changePath(const std::vector<std::vector<Step>>& steps, const std::vector<i
   }
 }
 
+/// What one edge's deviation counts for (BranchPointOptions::lengthScaled).
+double edgeWeight(const FrameGeometry& geometry, const Step& s, bool lengthScaled)
+{
+  if (!lengthScaled || !(geometry.referenceLength > 0) || geometry.edgeLength.rows() == 0)
+  {
+    return 1.0;
+  }
+  return geometry.edgeLength(s.g, s.kg) / geometry.referenceLength;
+}
+
 /// Would changing the step's matching by delta quarter turns wrap its residual past +-pi (and so
 /// move a whole turn of index onto a point between)? If not, what it adds to the deviation.
 bool stepCost(const FrameGeometry& geometry, const Eigen::VectorXd& phi, const Eigen::MatrixX3i& M,
-  const Step& s, int delta, double& added)
+  const Step& s, int delta, double& added, bool lengthScaled)
 {
   const double r0 = residual(turning(geometry, phi, s.g, s.kg, s.f), M(s.g, s.kg));
   if (!(std::abs(r0 + delta * Quarter) < Pi))
   {
     return false;
   }
-  added = std::abs(r0 + delta * Quarter) - std::abs(r0);
+  added = (std::abs(r0 + delta * Quarter) - std::abs(r0)) * edgeWeight(geometry, s, lengthScaled);
   return true;
 }
+}
+
+double scaledMatchingCost(const Eigen::MatrixX3i& F, const MeshTopology& topo,
+  const FrameGeometry& geometry, const FrameTopology& topology, bool lengthScaled)
+{
+  if (!lengthScaled || !(geometry.referenceLength > 0))
+  {
+    return topology.matchingCost;
+  }
+  double cost = 0.0;
+  for (int f = 0; f < static_cast<int>(F.rows()); ++f)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      const int g = topo.faceNeighbors(f, k);
+      if (g > f)
+      {
+        cost += topology.deviation(f, k) * geometry.edgeLength(f, k) / geometry.referenceLength;
+      }
+    }
+  }
+  return cost;
 }
 
 BranchPointReport optimizeBranchPoints(const Eigen::MatrixX3i& F, const MeshTopology& topo,
@@ -250,7 +290,8 @@ BranchPointReport optimizeBranchPoints(const Eigen::MatrixX3i& F, const MeshTopo
   BranchPointReport report;
   report.before = topology.branchPoints;
   report.singularitiesBefore = topology.singularities;
-  report.costBefore = lambda * topology.singularities + topology.matchingCost;
+  report.costBefore = lambda * topology.singularities +
+    scaledMatchingCost(F, topo, geometry, topology, options.lengthScaled);
   const std::vector<std::vector<Step>> steps = pathSteps(F, topo);
   Eigen::MatrixX3i& M = topology.matching;
   std::vector<double> dist(nv, 0.0);
@@ -348,7 +389,7 @@ BranchPointReport optimizeBranchPoints(const Eigen::MatrixX3i& F, const MeshTopo
           {
             const Step& s = steps[u][i];
             double added = 0.0;
-            if (q[s.to] != 0 || !stepCost(geometry, phi, M, s, -1, added))
+            if (q[s.to] != 0 || !stepCost(geometry, phi, M, s, -1, added, options.lengthScaled))
             {
               continue;
             }
@@ -381,7 +422,8 @@ BranchPointReport optimizeBranchPoints(const Eigen::MatrixX3i& F, const MeshTopo
     topology = evaluateMatchings(F, topo, geometry, frameU, M);
     report.after = topology.branchPoints;
     report.singularitiesAfter = topology.singularities;
-    report.costAfter = lambda * topology.singularities + topology.matchingCost;
+    report.costAfter = lambda * topology.singularities +
+    scaledMatchingCost(F, topo, geometry, topology, options.lengthScaled);
     return report;
   }
 
@@ -389,6 +431,112 @@ BranchPointReport optimizeBranchPoints(const Eigen::MatrixX3i& F, const MeshTopo
     const int r = mod4(M(s.g, s.kg) + delta);
     return std::abs(residual(turning(geometry, phi, s.g, s.kg, s.f), r));
   };
+  // A component between two or more boundary loops (a tube, say) whose last singularities a
+  // merge removes: its frames must then carry the same frame family along every loop whose
+  // frames follow it, or no grid can have all of its loops on grid lines (a tube whose field
+  // turns a quarter from one end to the other). The pair that absorbed the quarter turn stays.
+  std::vector<int> edgeLoop(topo.numEdges(), -1);
+  {
+    std::vector<int> vertexLoop(nv, -1);
+    for (int l = 0; l < static_cast<int>(topo.boundaryLoops.size()); ++l)
+    {
+      for (const int v : topo.boundaryLoops[l])
+      {
+        vertexLoop[v] = l;
+      }
+    }
+    for (int e = 0; e < topo.numEdges(); ++e)
+    {
+      if (topo.edgeFaceCount[e] == 1)
+      {
+        edgeLoop[e] = vertexLoop[topo.edges(e, 0)];
+      }
+    }
+  }
+  std::vector<int> label(F.rows(), -1);
+  auto twisted = [&](int component) {
+    if (component < 0 || component >= static_cast<int>(topo.components.size()))
+    {
+      return false;
+    }
+    const ComponentInfo& info = topo.components[component];
+    if (info.numBoundaryLoops < 2 || info.genus != 0)
+    {
+      return false;
+    }
+    for (int v = 0; v < nv; ++v)
+    {
+      if (q[v] != 0 && topo.vertexComponent[v] == component)
+      {
+        return false; // singularities left: the frame family is not the same along every path
+      }
+    }
+    // L(f): which of f's frame vectors is the root's X_0, carried across the matchings
+    int root = -1;
+    for (int f = 0; f < static_cast<int>(F.rows()) && root < 0; ++f)
+    {
+      root = topo.faceComponent[f] == component ? f : -1;
+    }
+    if (root < 0)
+    {
+      return false;
+    }
+    std::fill(label.begin(), label.end(), -1);
+    std::vector<int> stack = { root };
+    label[root] = 0;
+    std::map<int, int> loopFamily; // loop -> parity, or -1 where the loop mixes families
+    const double tolerance = 10.0 * Pi / 180.0;
+    while (!stack.empty())
+    {
+      const int f = stack.back();
+      stack.pop_back();
+      for (int k = 0; k < 3; ++k)
+      {
+        const int g = topo.faceNeighbors(f, k);
+        if (g >= 0)
+        {
+          if (label[g] < 0 && M(f, k) >= 0)
+          {
+            label[g] = mod4(label[f] + M(f, k));
+            stack.push_back(g);
+          }
+          continue;
+        }
+        const int loop = edgeLoop[topo.faceEdges(f, k)];
+        if (loop < 0)
+        {
+          continue;
+        }
+        const double along = geometry.edgeAngle(f, k) - phi[f];
+        const double quarters = std::round(along / Quarter);
+        if (std::abs(wrapAngle(along - quarters * Quarter)) > tolerance)
+        {
+          continue; // the frame does not follow this edge
+        }
+        const int family = ((static_cast<int>(quarters) - label[f]) % 2 + 2) % 2;
+        const auto [it, inserted] = loopFamily.insert({ loop, family });
+        if (!inserted && it->second != family)
+        {
+          it->second = -1;
+        }
+      }
+    }
+    int seen = -1;
+    for (const auto& entry : loopFamily)
+    {
+      if (entry.second < 0)
+      {
+        continue;
+      }
+      if (seen >= 0 && entry.second != seen)
+      {
+        return true;
+      }
+      seen = entry.second;
+    }
+    return false;
+  };
+
   // Work in quarter turns: q = 4 index. Changing the matchings along a path from a to b by
   // delta adds delta to q(a) and takes it from q(b).
   for (int pass = 0; pass < options.maxPasses; ++pass)
@@ -432,7 +580,8 @@ BranchPointReport optimizeBranchPoints(const Eigen::MatrixX3i& F, const MeshTopo
             for (int x = u; x != a; x = cameFrom[x])
             {
               const Step& s = steps[cameFrom[x]][stepIndex[x]];
-              pathCost += deviationWith(s, delta) - deviationWith(s, 0);
+              pathCost += (deviationWith(s, delta) - deviationWith(s, 0)) *
+                edgeWeight(geometry, s, options.lengthScaled);
             }
             const double gain = lambda * removed - pathCost;
             if (gain > bestGain + 1e-12)
@@ -450,7 +599,7 @@ BranchPointReport optimizeBranchPoints(const Eigen::MatrixX3i& F, const MeshTopo
           // the path: not if its residual would wrap past +-pi (possible for delta = +-2, or on
           // an edge an earlier path changed), which would put a whole turn on a point between.
           double added = 0.0;
-          if (!stepCost(geometry, phi, M, s, delta, added))
+          if (!stepCost(geometry, phi, M, s, delta, added, options.lengthScaled))
           {
             continue;
           }
@@ -472,6 +621,14 @@ BranchPointReport optimizeBranchPoints(const Eigen::MatrixX3i& F, const MeshTopo
       changePath(steps, cameFrom, stepIndex, a, best, delta, M);
       q[a] = 0;
       q[best] -= delta;
+      if (twisted(topo.vertexComponent[a]))
+      {
+        changePath(steps, cameFrom, stepIndex, a, best, -delta, M);
+        q[a] = -delta;
+        q[best] += delta;
+        ++report.twistsAvoided;
+        continue;
+      }
       ++changed;
       ++report.pathsChanged;
     }
@@ -483,7 +640,8 @@ BranchPointReport optimizeBranchPoints(const Eigen::MatrixX3i& F, const MeshTopo
   topology = evaluateMatchings(F, topo, geometry, frameU, M);
   report.after = topology.branchPoints;
   report.singularitiesAfter = topology.singularities;
-  report.costAfter = lambda * topology.singularities + topology.matchingCost;
+  report.costAfter = lambda * topology.singularities +
+    scaledMatchingCost(F, topo, geometry, topology, options.lengthScaled);
   return report;
 }
 

@@ -47,6 +47,9 @@ struct FrameGeometry
   Eigen::MatrixX3d transport; ///< computeTransport
   Eigen::MatrixX3d edgeAngle; ///< #F x 3 angle of edge k (corner k to k+1) in f's basis
   Eigen::VectorXd defect;     ///< angleDefects
+  Eigen::MatrixX3d edgeLength; ///< #F x 3 length of edge k
+  /// sqrt(total area / 2000): about the edge length of a 4,000-triangle mesh of the same area
+  double referenceLength = 0.0;
 };
 FrameGeometry computeFrameGeometry(
   const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F, const MeshTopology& topo);
@@ -65,6 +68,12 @@ struct BranchPointOptions
   /// lambda of the cost lambda * (number of singular inner points) + sum of matching deviations
   /// (radians); a path is changed only when it lowers that cost.
   double weight = 6.0;
+  /// Each edge's deviation counts in proportion to its length over FrameGeometry's
+  /// referenceLength, so that the cost of a path is about the same however finely the surface
+  /// is meshed (merging two singularities bends the field over their distance, not over a
+  /// number of edges). Off: every edge counts once, as in the paper, and a finer mesh keeps
+  /// more singularities.
+  bool lengthScaled = true;
   /// Vertices a search may visit from one branch point (a guard on very large meshes).
   int maxVisited = 20000;
   int maxPasses = 10;
@@ -79,12 +88,21 @@ struct BranchPointReport
   int after = 0;  ///< after
   int singularitiesBefore = 0;
   int singularitiesAfter = 0;
-  double costBefore = 0; ///< lambda * singularities + sum C_ij
+  double costBefore = 0; ///< lambda * singularities + scaledMatchingCost
   double costAfter = 0;
   int pathsChanged = 0;
   int split = 0;       ///< singularities of index >= 1/2 split into quarters
   int splitFailed = 0; ///< quarters that found no place (left where they were)
+  /// merges undone because they left a singularity-free component between boundary loops with
+  /// its frames following different frame families along different loops
+  int twistsAvoided = 0;
 };
+
+/// The matching cost the branch-point optimization weighs: the sum of deviations C_ij over
+/// inner edges, each times its length over geometry.referenceLength when lengthScaled
+/// (BranchPointOptions), else FrameTopology::matchingCost.
+double scaledMatchingCost(const Eigen::MatrixX3i& F, const MeshTopology& topo,
+  const FrameGeometry& geometry, const FrameTopology& topology, bool lengthScaled);
 
 /**
  * Greedy branch-point optimization (Sect. 4.2): from each singular point of index +-1/4 or
@@ -107,7 +125,7 @@ BranchPointReport optimizeBranchPoints(const Eigen::MatrixX3i& F, const MeshTopo
  *     + (1 - lambda) sum_f A_f w_f alpha_f^2
  * (the smoothing energy of smoothFrames, expanded to second order about the current frames),
  * where delta_fg is the angle left between the matched frames across the edge. lambda is
- * close to 1 by default (0.97): with smoothFrames' balance (0.5) the curvature alignment keeps
+ * close to 1 by default (0.97): with a balance of 0.5 the curvature alignment keeps
  * the turning near the changed edges, and the map must fold there (on the six shared meshes at
  * 3,000 quads, 7-196 triangles per mesh flipped after rounding and a 10-35% higher map energy;
  * at 0.97, 2-102). The matchings,

@@ -12,6 +12,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <random>
 
 using namespace quadcover;
@@ -440,4 +441,48 @@ TEST(Matchings, RejectsMatchingsThatAreNotInverse)
   Eigen::MatrixX3i bad = t.matching;
   bad(0, 0) = (bad(0, 0) + 1) % 4;
   EXPECT_THROW(evaluateMatchings(m.s.F, m.topo, m.geometry, U, bad), std::invalid_argument);
+}
+
+TEST(Matchings, LengthScaledMergeCostDoesNotDependOnTheMeshResolution)
+{
+  // A +1/4, -1/4 pair 0.3 apart on a (nearly flat) square of side 2, meshed with 20 and with 80
+  // quads a side: the length-scaled cost decides the same at both resolutions, the edge count
+  // (the paper's) keeps the pair on the fine mesh at a weight that merges it on the coarse one.
+  const Eigen::Vector2d a(-0.15, 0.05), b(0.15, 0.05);
+  std::map<std::pair<int, bool>, int> after;
+  std::map<std::pair<int, bool>, double> pathCost;
+  for (const int n : { 20, 80 })
+  {
+    const Mesh m = prepare(makeSaddle(1e6, 1.0, n));
+    Eigen::MatrixX3d U(m.s.F.rows(), 3);
+    for (int f = 0; f < m.s.F.rows(); ++f)
+    {
+      const Eigen::Vector3d c =
+        (m.s.V.row(m.s.F(f, 0)) + m.s.V.row(m.s.F(f, 1)) + m.s.V.row(m.s.F(f, 2))) / 3.0;
+      const Eigen::Vector2d p(c.x(), c.y());
+      const double theta = 0.25 *
+        (std::atan2((p - a).y(), (p - a).x()) - std::atan2((p - b).y(), (p - b).x()));
+      const Eigen::Vector3d normal = m.geometry.bases.normal.row(f);
+      Eigen::Vector3d u(std::cos(theta), std::sin(theta), 0.0);
+      U.row(f) = (u - u.dot(normal) * normal).normalized();
+    }
+    for (const bool scaled : { true, false })
+    {
+      FrameTopology t = computeMatchings(m.s.F, m.topo, m.geometry, U);
+      ASSERT_EQ(t.singularities, 2) << n;
+      BranchPointOptions opt;
+      opt.lengthScaled = scaled;
+      opt.weight = 1000; // merge whatever it costs: the cost of the path is what we look at
+      const BranchPointReport r = optimizeBranchPoints(m.s.F, m.topo, m.geometry, U, t, opt);
+      ASSERT_EQ(r.singularitiesAfter, 0);
+      pathCost[{ n, scaled }] = r.costAfter - r.costBefore + 2 * opt.weight;
+      std::printf("n %d, %s: the merge costs %.2f\n", n, scaled ? "length-scaled" : "edge count",
+        pathCost[{ n, scaled }]);
+    }
+  }
+  // the scaled cost changes little with a 4x finer mesh, the edge count about 4x
+  const double scaledRatio = pathCost[std::make_pair(80, true)] / pathCost[std::make_pair(20, true)];
+  const double countRatio = pathCost[std::make_pair(80, false)] / pathCost[std::make_pair(20, false)];
+  EXPECT_NEAR(scaledRatio, 1.0, 0.3);
+  EXPECT_GT(countRatio, 2.5);
 }

@@ -235,15 +235,26 @@ TEST_P(ChainOn, IndicesSumToTheEulerCharacteristic)
   EXPECT_NEAR(IndexSum(before), topo.eulerCharacteristic(), 1e-9);
   const double branchesBefore = Field(before, names::BranchPointCount, 1);
   const double singularBefore = Field(before, names::SingularityCount);
-  const double costBefore =
-    chain.matching->GetBranchPointWeight() * singularBefore + Field(before, names::MatchingCost, 1);
+  const double costBefore = Field(before, names::BranchPointObjective, 1);
   double largestBefore = 0.0;
+  // Inner points of index k/4 >= 1/2 are split into k quarters first (k - 1 more singular
+  // points, k more branch points where the layer shift was 0): the merges start from there.
+  double splitMore = 0.0, splitBranches = 0.0;
   {
     vtkDataArray* index = before->GetPointData()->GetArray(names::SingularityIndex);
     for (vtkIdType p = 0; p < index->GetNumberOfTuples(); ++p)
-      largestBefore = topo.boundaryVertex[p]
-        ? largestBefore
-        : std::max(largestBefore, std::abs(index->GetTuple1(p)));
+    {
+      if (topo.boundaryVertex[p])
+        continue;
+      const double i = index->GetTuple1(p);
+      largestBefore = std::max(largestBefore, std::abs(i));
+      const long k = std::lround(4 * i);
+      if (k >= 2)
+      {
+        splitMore += static_cast<double>(k - 1);
+        splitBranches += static_cast<double>(k) - (k % 4 != 0 ? 1.0 : 0.0);
+      }
+    }
   }
 
   chain.matching->OptimizeBranchPointsOn();
@@ -251,16 +262,20 @@ TEST_P(ChainOn, IndicesSumToTheEulerCharacteristic)
   EXPECT_NEAR(IndexSum(after), topo.eulerCharacteristic(), 1e-9);
   const double branchesAfter = Field(after, names::BranchPointCount, 1);
   const double singularAfter = Field(after, names::SingularityCount);
-  const double costAfter =
-    chain.matching->GetBranchPointWeight() * singularAfter + Field(after, names::MatchingCost, 1);
-  EXPECT_LE(branchesAfter, branchesBefore);
-  EXPECT_LE(singularAfter, singularBefore);
+  const double costAfter = Field(after, names::BranchPointObjective, 1);
+  EXPECT_NEAR(Field(after, names::BranchPointObjective, 0), costBefore, 1e-9 * (1 + costBefore));
+  EXPECT_LE(branchesAfter, branchesBefore + splitBranches);
+  EXPECT_LE(singularAfter, singularBefore + splitMore);
   if (shared)
   {
-    // Every shared mesh has pairs to cancel (README: bunny-lowres 62 -> 26, ...).
-    EXPECT_LT(singularAfter, singularBefore);
+    // Every shared mesh has pairs to cancel (README: bunny-lowres 62 -> 24, ...).
+    EXPECT_LT(singularAfter, singularBefore + splitMore);
   }
-  EXPECT_LE(costAfter, costBefore + 1e-9);
+  if (splitMore == 0)
+  {
+    // the split itself costs; the merges only ever lower the objective
+    EXPECT_LE(costAfter, costBefore + 1e-9);
+  }
   std::printf("[ %s ] chi %d, branch points %g -> %g, singularities %g -> %g, smoothing %g -> %g\n",
     name.c_str(), topo.eulerCharacteristic(), branchesBefore, branchesAfter, singularBefore,
     singularAfter, Field(chain.smoother->GetOutput(), names::SmoothingEnergy, 0),
