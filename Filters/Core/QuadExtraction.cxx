@@ -116,7 +116,69 @@ public:
     return turn(q, rotation(f, k)) + translation[3 * f + k];
   }
 
-  /// Walks from triangle f towards q (in f's chart) to the triangle holding q.
+  /// Follows the straight segment from p (in triangle f, f's chart) to q across edges and seams
+  /// to the triangle holding q. Around a cone the (u, v) plane has several sheets, and only the
+  /// straight segment stays on the sheet of the cell it starts in (a walk that merely steps
+  /// towards q can go around a cone the other way and find q on another sheet: another vertex).
+  bool walkLine(int f, Complex p, Complex q, Location& at) const
+  {
+    int entered = -1; // the edge of f we came in through
+    for (int step = 0; step < options.maxWalk; ++step)
+    {
+      if (flipped[f])
+      {
+        return false;
+      }
+      const Eigen::Vector3d bq = barycentric(f, q);
+      if (bq.minCoeff() >= -options.tolerance)
+      {
+        identify(f, q, bq, at);
+        return true;
+      }
+      const Eigen::Vector3d bp = barycentric(f, p).cwiseMax(0.0);
+      // leave through the edge whose coordinate reaches 0 first along p -> q
+      int exit = -1;
+      double first = 1e300;
+      for (int k = 0; k < 3; ++k)
+      {
+        const int edge = (k + 1) % 3;
+        if (!(bq[k] < -options.tolerance) || edge == entered)
+        {
+          continue;
+        }
+        const double t = bp[k] / (bp[k] - bq[k]);
+        if (t < first)
+        {
+          first = t;
+          exit = k;
+        }
+      }
+      if (exit < 0)
+      {
+        return false;
+      }
+      const int edge = (exit + 1) % 3;
+      const int g = topo.faceNeighbors(f, edge);
+      if (g < 0)
+      {
+        return false; // beyond the boundary
+      }
+      p += first * (q - p);
+      const int shared = topo.faceEdges(f, edge);
+      p = across(f, edge, p);
+      q = across(f, edge, q);
+      f = g;
+      entered = -1;
+      for (int k = 0; k < 3; ++k)
+      {
+        entered = topo.faceEdges(f, k) == shared ? k : entered;
+      }
+    }
+    return false;
+  }
+
+  /// Walks from triangle f towards q (in f's chart) to the triangle holding q: the fallback
+  /// where the straight segment cannot be followed (a flipped triangle on it).
   bool walk(int f, Complex q, Location& at) const
   {
     unsigned long long random = 0x9E3779B97F4A7C15ULL;
@@ -243,7 +305,7 @@ public:
           for (int i = 0; i < 4 && found; ++i)
           {
             Location at;
-            found = walk(f, c + offsets[i], at);
+            found = walkLine(f, c, c + offsets[i], at) || walk(f, c + offsets[i], at);
             if (!found)
             {
               break;
@@ -532,7 +594,6 @@ QuadQuality measureQuads(const Eigen::MatrixX3d& V, const Eigen::MatrixX4i& Q)
   m.eulerCharacteristic = m.vertices - static_cast<int>(edges.size()) + m.faces;
   return m;
 }
-
 
 namespace
 {
