@@ -51,7 +51,7 @@ public:
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   ///@{
-  /** Weight lambda of smoothness against curvature alignment, in [0, 1] (default 0.5). */
+  /** Weight lambda of smoothness against curvature alignment, in [0, 1] (default 0.95). */
   vtkSetClampMacro(SmoothingWeight, double, 0.0, 1.0);
   vtkGetMacro(SmoothingWeight, double);
   ///@}
@@ -107,7 +107,7 @@ protected:
 
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
-  double SmoothingWeight = 0.5;
+  double SmoothingWeight = 0.95;
   int MaximumNumberOfIterations = 200;
   double ConvergenceTolerance = 1e-7;
   bool AlignToFeatures = true;

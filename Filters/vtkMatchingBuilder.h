@@ -58,7 +58,7 @@ public:
   ///@{
   /**
    * lambda: the cost of one singular point in radians of matching angle, in [0, 100]
-   * (default 6). Larger values remove more singularities at the price of less straight
+   * (default 4). Larger values remove more singularities at the price of less straight
    * parameter lines (larger angles between matched frames along the merge paths).
    */
   vtkSetClampMacro(BranchPointWeight, double, 0.0, 100.0);
@@ -107,7 +107,7 @@ protected:
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
   bool OptimizeBranchPoints = true;
-  double BranchPointWeight = 6.0;
+  double BranchPointWeight = 4.0;
   int MaximumSearchSize = 20000;
   bool LengthScaledCost = true;
   bool FitFramesToMatchings = true;

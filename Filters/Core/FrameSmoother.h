@@ -15,7 +15,7 @@ namespace quadcover
 struct SmootherOptions
 {
   /// lambda in [0, 1]: E = lambda E_smooth + (1 - lambda) E_align.
-  double smoothingWeight = 0.5;
+  double smoothingWeight = 0.95;
   int maxIterations = 200;
   /// Stop when an iteration lowers the energy by less than this fraction.
   double tolerance = 1e-7;

@@ -423,7 +423,7 @@ BranchPointReport optimizeBranchPoints(const Eigen::MatrixX3i& F, const MeshTopo
     report.after = topology.branchPoints;
     report.singularitiesAfter = topology.singularities;
     report.costAfter = lambda * topology.singularities +
-    scaledMatchingCost(F, topo, geometry, topology, options.lengthScaled);
+      scaledMatchingCost(F, topo, geometry, topology, options.lengthScaled);
     return report;
   }
 

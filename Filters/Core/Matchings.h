@@ -67,7 +67,7 @@ struct BranchPointOptions
 {
   /// lambda of the cost lambda * (number of singular inner points) + sum of matching deviations
   /// (radians); a path is changed only when it lowers that cost.
-  double weight = 6.0;
+  double weight = 4.0;
   /// Each edge's deviation counts in proportion to its length over FrameGeometry's
   /// referenceLength, so that the cost of a path is about the same however finely the surface
   /// is meshed (merging two singularities bends the field over their distance, not over a

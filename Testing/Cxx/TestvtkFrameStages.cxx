@@ -78,7 +78,7 @@ double Field(vtkPolyData* out, const char* name, int i = 0)
 TEST(vtkFrameSmoother, DefaultsClampsAndPrintSelf)
 {
   vtkNew<vtkFrameSmoother> f;
-  EXPECT_EQ(f->GetSmoothingWeight(), 0.5);
+  EXPECT_EQ(f->GetSmoothingWeight(), 0.95);
   EXPECT_EQ(f->GetMaximumNumberOfIterations(), 200);
   EXPECT_EQ(f->GetFeatureAngle(), 60.0);
   EXPECT_EQ(f->GetMinimumFeatureLength(), 3);
@@ -101,7 +101,7 @@ TEST(vtkMatchingBuilder, DefaultsClampsAndPrintSelf)
 {
   vtkNew<vtkMatchingBuilder> m;
   EXPECT_TRUE(m->GetOptimizeBranchPoints());
-  EXPECT_EQ(m->GetBranchPointWeight(), 6.0);
+  EXPECT_EQ(m->GetBranchPointWeight(), 4.0);
   EXPECT_EQ(m->GetNumberOfOutputPorts(), 2);
   m->SetBranchPointWeight(-1.0);
   EXPECT_EQ(m->GetBranchPointWeight(), 0.0);

@@ -1,0 +1,41 @@
+#!/usr/bin/env bash
+# Quads at about QUADS quads (default 6,500) on the shared meshes for pairs of smoothing weight
+# (vtkFrameSmoother, --smoothing) and branch-point weight (vtkMatchingBuilder, --branch-weight):
+# irregular inner vertices, edge-length RSD / angle RSD, and (!) where the map kept a flipped
+# triangle or a fan wound the wrong way. The table that chose the defaults, kept in README.md.
+#   bash Benchmarks/tuning_table.sh [SHARED_DIR] [QUADS]      (after bash Scripts/build.sh)
+set -euo pipefail
+cd "$(dirname "$0")/.."
+shared=${1:-../shared/data}
+quads=${2:-6500}
+pairs=("0.5 6" "0.9 4" "0.95 3" "0.95 4" "0.95 6" "0.98 4")
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+header="| surface |"
+rule="|---|"
+for p in "${pairs[@]}"; do
+  set -- $p
+  header+=" λ $1, weight $2 |"
+  rule+="---|"
+done
+echo "$header"
+echo "$rule"
+for mesh in bunny-lowres spot fandisk rocker-arm cheburashka teapot; do
+  [ -f "$shared/$mesh.obj" ] || continue
+  row="| $mesh |"
+  for p in "${pairs[@]}"; do
+    set -- $p
+    build/bin/quadcover "$shared/$mesh.obj" -o "$tmp/q.vtp" --target-quads "$quads" \
+      --smoothing "$1" --branch-weight "$2" --no-hausdorff --stats "$tmp/s.json" 2>/dev/null
+    row+=" $(/usr/bin/python3 - "$tmp/s.json" <<'PY'
+import json, sys
+s = json.load(open(sys.argv[1]))
+q, p = s["quads"], s["param"]
+bad = "" if p["flipped"] == 0 and p["winding_errors"] == 0 else " (!)"
+print("%d, %.1f / %.1f%%%s" % (q["irregular_inner"], 100 * q["edge_length_rsd"],
+                              100 * q["angle_rsd"], bad))
+PY
+) |"
+  done
+  echo "$row"
+done
