@@ -260,3 +260,55 @@ TEST(QuadRelaxation, RejectsBadOptions)
   q.vertexTriangle.pop_back();
   EXPECT_THROW(relaxQuads(c.s.V, c.s.F, c.topo, q, options), std::invalid_argument);
 }
+
+TEST(QuadExtraction, AMapFoldedAtSeamlessPointsStillGivesAValidMesh)
+{
+  // Unlike the test above, this folds the map without breaking it: a point off the seams has the
+  // same (u, v) in every triangle around it, and moving it there by more than a cell folds its
+  // fan over its neighbours' while every transition stays integer.
+  Chain c = runChain(testSurface("sphere"), 800);
+  std::vector<std::vector<std::pair<int, int>>> corners(c.s.V.rows());
+  for (int f = 0; f < c.s.F.rows(); ++f)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      corners[c.s.F(f, k)].push_back({ f, k });
+    }
+  }
+  int moved = 0;
+  for (int p = 0; p < c.s.V.rows() && moved < 8; p += 211)
+  {
+    bool oneChart = true;
+    for (const auto& [f, k] : corners[p])
+    {
+      oneChart = oneChart &&
+        c.map.cornerUV(f, 2 * k) == c.map.cornerUV(corners[p][0].first, 2 * corners[p][0].second) &&
+        c.map.cornerUV(f, 2 * k + 1) ==
+          c.map.cornerUV(corners[p][0].first, 2 * corners[p][0].second + 1);
+    }
+    if (!oneChart || c.field.layerShift[p] != 0)
+    {
+      continue;
+    }
+    for (const auto& [f, k] : corners[p])
+    {
+      c.map.cornerUV(f, 2 * k) += 2.3;
+      c.map.cornerUV(f, 2 * k + 1) += 1.6;
+    }
+    ++moved;
+  }
+  ASSERT_GE(moved, 4);
+  ASSERT_GT(checks::flippedTriangles(c.map.cornerUV), 0);
+  ASSERT_EQ(checks::seamViolations(c.s.F, c.topo, c.map.cornerUV), 0) << "still seamless";
+  const QuadMesh q = extractQuads(c.s.V, c.s.F, c.topo, c.map.cornerUV);
+  const QuadQuality m = measureQuads(q.V, q.Q);
+  std::printf("folded at %d points: %d quads, %d off, %d degenerate, %d conflicting\n", moved,
+    m.faces, q.cellsOffSurface, q.cellsDegenerate, q.cellsConflicting);
+  EXPECT_GT(m.faces, 600);
+  EXPECT_EQ(m.nonManifoldEdges, 0);
+  EXPECT_EQ(m.quads, m.faces);
+  EXPECT_EQ(q.nonIntegerTransitions, 0);
+  EXPECT_GT(q.cellsOffSurface + q.cellsDegenerate + q.cellsConflicting, 0)
+    << "the folds cost cells, and they are counted (here as walks stopped by flipped "
+       "triangles; no overlapping quad is left to remove)";
+}
