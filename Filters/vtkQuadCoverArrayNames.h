@@ -77,7 +77,9 @@ constexpr const char* Seam = "Seam";
 /// point, 2 x double, SplitSeams output only: (u, v) of each point of the cut-open surface, the
 /// active texture coordinates.
 constexpr const char* UV = "UV";
-/// field, 1 x double: world length of one grid unit (the quads' edge length).
+/// field, 1 x double: world length of one grid unit, the length the frames are fitted to (where
+/// the map is stretched or compressed the quads' edges are longer or shorter; their mean is a few
+/// per cent above it when TargetQuadCount chose it).
 constexpr const char* GridScale = "GridScale";
 /// field, 1 x int, 3 tuples: triangles with a flipped or degenerate (u, v) image in the
 /// continuous minimizer, after rounding, and in the output map (after untangling).

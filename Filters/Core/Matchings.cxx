@@ -10,6 +10,7 @@
 #include <limits>
 #include <map>
 #include <queue>
+#include <set>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -454,6 +455,7 @@ BranchPointReport optimizeBranchPoints(const Eigen::MatrixX3i& F, const MeshTopo
     }
   }
   std::vector<int> label(F.rows(), -1);
+  std::set<std::pair<int, int>> twistRejected; // pairs whose merge was undone
   auto twisted = [&](int component) {
     if (component < 0 || component >= static_cast<int>(topo.components.size()))
     {
@@ -485,7 +487,7 @@ BranchPointReport optimizeBranchPoints(const Eigen::MatrixX3i& F, const MeshTopo
     std::vector<int> stack = { root };
     label[root] = 0;
     std::map<int, int> loopFamily; // loop -> parity, or -1 where the loop mixes families
-    const double tolerance = 10.0 * Pi / 180.0;
+    const double tolerance = options.boundaryTolerance * Pi / 180.0;
     while (!stack.empty())
     {
       const int f = stack.back();
@@ -568,7 +570,7 @@ BranchPointReport optimizeBranchPoints(const Eigen::MatrixX3i& F, const MeshTopo
           continue; // stale, or no path this long can pay for itself
         }
         ++visited;
-        if (u != a && q[u] != 0)
+        if (u != a && q[u] != 0 && twistRejected.count({ std::min(a, u), std::max(a, u) }) == 0)
         {
           // Ending here: a becomes regular; u only if the two cancel. Accept only paths that
           // make u's index smaller (never merge into a higher-order singularity).
@@ -627,6 +629,8 @@ BranchPointReport optimizeBranchPoints(const Eigen::MatrixX3i& F, const MeshTopo
         q[a] = -delta;
         q[best] += delta;
         ++report.twistsAvoided;
+        twistRejected.insert({ std::min(a, best), std::max(a, best) }); // the next best, next pass
+        ++changed;
         continue;
       }
       ++changed;

@@ -44,9 +44,9 @@ struct FrameTopology
 struct FrameGeometry
 {
   FaceBases bases;
-  Eigen::MatrixX3d transport; ///< computeTransport
-  Eigen::MatrixX3d edgeAngle; ///< #F x 3 angle of edge k (corner k to k+1) in f's basis
-  Eigen::VectorXd defect;     ///< angleDefects
+  Eigen::MatrixX3d transport;  ///< computeTransport
+  Eigen::MatrixX3d edgeAngle;  ///< #F x 3 angle of edge k (corner k to k+1) in f's basis
+  Eigen::VectorXd defect;      ///< angleDefects
   Eigen::MatrixX3d edgeLength; ///< #F x 3 length of edge k
   /// sqrt(total area / 2000): about the edge length of a 4,000-triangle mesh of the same area
   double referenceLength = 0.0;
@@ -74,6 +74,10 @@ struct BranchPointOptions
   /// number of edges). Off: every edge counts once, as in the paper, and a finer mesh keeps
   /// more singularities.
   bool lengthScaled = true;
+  /// Frames within this many degrees of a boundary edge follow it (as the solver's
+  /// boundaryTolerance puts such edges on grid lines): used to undo merges that would leave a
+  /// tube's loops on different frame families.
+  double boundaryTolerance = 10.0;
   /// Vertices a search may visit from one branch point (a guard on very large meshes).
   int maxVisited = 20000;
   int maxPasses = 10;

@@ -1049,7 +1049,8 @@ Parameterization computeParameterization(const Eigen::MatrixX3d& V, const Eigen:
     }
     if (cells > 0 && std::isfinite(cells))
     {
-      const double factor = std::sqrt(options.targetQuads / cells);
+      // bounded: folds cancel area, and a badly folded map must not ask for 100x the quads
+      const double factor = std::clamp(std::sqrt(options.targetQuads / cells), 0.5, 4.0);
       x *= factor;
       rhs *= factor;
       energyNorm *= factor * factor;

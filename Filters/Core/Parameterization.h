@@ -31,7 +31,8 @@ struct ParameterizationOptions
   /// covers this many unit cells (its (u, v) area): a field that is far from integrable is
   /// fitted by a map with shorter gradients than 1/gridSize, which would give fewer and larger
   /// quads than gridSizeForQuadCount promised. The map is linear in 1/gridSize, so the
-  /// correction costs no solve. The grid size used is Parameterization::gridSize.
+  /// correction costs no solve; it is bounded to a factor of 4 either way in the number of
+  /// quads (folds cancel area). The grid size used is Parameterization::gridSize.
   double targetQuads = 0.0;
   /// Branch points on grid points (integer unknowns), so extraction gives only quads. Without
   /// it only the seam translations are integer and a branch point may lie at the middle of a
@@ -68,6 +69,7 @@ struct Parameterization
   std::vector<int> cornerSector;
 
   // ---- figures ----
+  /// the grid size used: options.gridSize, or as targetQuads corrected it
   double gridSize = 0.0;
   int branchPoints = 0;         ///< inner points with a non-zero layer shift
   int branchPointsOnGrid = 0;   ///< of those, mapped to integer (u, v) within 1e-6

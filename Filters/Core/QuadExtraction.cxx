@@ -305,7 +305,12 @@ public:
           for (int i = 0; i < 4 && found; ++i)
           {
             Location at;
-            found = walkLine(f, c, c + offsets[i], at) || walk(f, c + offsets[i], at);
+            found = walkLine(f, c, c + offsets[i], at);
+            if (!found)
+            {
+              ++out.walkFallbacks;
+              found = walk(f, c + offsets[i], at);
+            }
             if (!found)
             {
               break;
@@ -840,12 +845,23 @@ QuadRelaxReport relaxQuads(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F,
     }
     return best;
   };
-  // the worst corner of v's quads, measured against the input normals at their corners
-  auto worstCorner = [&](int v) {
+  // The corners of v's quads: how many are not positive, and the worst, each measured against
+  // the input's normal at the corner and against the quad's own normal (its diagonals' cross
+  // product, as measureQuads does).
+  struct Corners
+  {
+    int inverted = 0;
     double worst = 1.0;
+  };
+  auto cornersOf = [&](int v) {
+    Corners r;
     for (int j = offsets[v]; j < offsets[v + 1]; ++j)
     {
       const int i = quadsOf[j];
+      const Eigen::Vector3d own =
+        (Eigen::Vector3d(mesh.V.row(mesh.Q(i, 2)) - mesh.V.row(mesh.Q(i, 0))))
+          .cross(Eigen::Vector3d(mesh.V.row(mesh.Q(i, 3)) - mesh.V.row(mesh.Q(i, 1))))
+          .normalized();
       for (int k = 0; k < 4; ++k)
       {
         const int c = mesh.Q(i, k);
@@ -853,10 +869,16 @@ QuadRelaxReport relaxQuads(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F,
         const Eigen::Vector3d prev = mesh.V.row(mesh.Q(i, (k + 3) % 4)) - mesh.V.row(c);
         const double ln = next.norm(), lp = prev.norm();
         const Eigen::Vector3d n = normal.row(mesh.vertexTriangle[c]);
-        worst = std::min(worst, ln > 0 && lp > 0 ? next.cross(prev).dot(n) / (ln * lp) : -1.0);
+        for (const Eigen::Vector3d& reference : { n, own })
+        {
+          double sj = ln > 0 && lp > 0 ? next.cross(prev).dot(reference) / (ln * lp) : -1.0;
+          sj = std::isfinite(sj) ? sj : -1.0;
+          r.inverted += sj <= 0;
+          r.worst = std::min(r.worst, sj);
+        }
       }
     }
-    return worst;
+    return r;
   };
 
   for (int iteration = 0; iteration < options.iterations; ++iteration)
@@ -887,13 +909,14 @@ QuadRelaxReport relaxQuads(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F,
       const Eigen::Vector3d n = normal.row(oldTriangle);
       Eigen::Vector3d move = options.step * (target / weight - old);
       move -= move.dot(n) * n;
-      const double before = worstCorner(v);
+      const Corners before = cornersOf(v);
       int f = oldTriangle;
       const Eigen::Vector3d moved = project(f, old + move);
       mesh.V.row(v) = moved;
       mesh.vertexTriangle[v] = f;
-      const double after = worstCorner(v);
-      if (!std::isfinite(after) || (after <= 0 && after < before))
+      const Corners after = cornersOf(v);
+      // no corner turns inside out, and none already inside out gets worse
+      if (after.inverted > before.inverted || (after.worst <= 0 && after.worst < before.worst))
       {
         mesh.V.row(v) = old;
         mesh.vertexTriangle[v] = oldTriangle;

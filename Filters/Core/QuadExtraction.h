@@ -31,6 +31,9 @@ struct QuadMesh
   int cellsDegenerate = 0;       ///< two corners at one grid point
   int cellsConflicting = 0;      ///< removed: they overlapped others (folded maps)
   int nonIntegerTransitions = 0; ///< inner edges whose translation is not integer
+  /// corners that could not be reached along the straight segment from their cell's centre (a
+  /// flipped triangle or the boundary on it) and were searched for by stepping towards them
+  int walkFallbacks = 0;
 };
 
 /**
@@ -64,9 +67,9 @@ struct QuadRelaxOptions
 
 struct QuadRelaxReport
 {
-  int fixedVertices = 0;  ///< on the boundary or on a crease: not moved
-  int rejectedMoves = 0;  ///< moves that would have folded a quad
-  double maxMove = 0.0;   ///< longest single move, in units of the mean edge length
+  int fixedVertices = 0; ///< on the boundary or on a crease: not moved
+  int rejectedMoves = 0; ///< moves that would have folded a quad
+  double maxMove = 0.0;  ///< longest single move, in units of the mean edge length
 };
 
 /**
@@ -77,8 +80,8 @@ struct QuadRelaxReport
  * or on input creases (featureAngle) stay where they are; a move that would turn a quad corner
  * inside out (against the input's normal) is not made. It evens out uneven spacing, at the
  * price of the grid lines' exact alignment with the frame field; it cannot move quads from one
- * region to another, so the distortion of a map far from the field's metric mostly stays. Updates mesh.V and mesh.vertexTriangle (vertexPoint becomes -1 where a vertex
- * leaves its input point).
+ * region to another, so the distortion of a map far from the field's metric mostly stays. Updates
+ * mesh.V and mesh.vertexTriangle (vertexPoint becomes -1 where a vertex leaves its input point).
  * @throws std::invalid_argument on sizes that do not match or step outside (0, 1]
  */
 QuadRelaxReport relaxQuads(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F,

@@ -46,6 +46,7 @@ void expectClosedQuadMesh(const Chain& c, const QuadMesh& q, const std::string& 
   EXPECT_EQ(m.eulerCharacteristic, c.topo.eulerCharacteristic());
   EXPECT_EQ(m.components, c.topo.numComponents());
   EXPECT_EQ(q.cellsOffSurface + q.cellsDegenerate + q.cellsConflicting, 0);
+  EXPECT_EQ(q.walkFallbacks, 0) << "every corner along its straight segment";
   EXPECT_EQ(expectValencesFromIndices(c, q, m), c.map.branchPoints);
   EXPECT_EQ(m.irregularInner, c.map.branchPoints) << "irregular vertices are the branch points";
   EXPECT_GT(m.minScaledJacobian, 0.0) << "no inverted quad";
@@ -308,6 +309,7 @@ TEST(QuadExtraction, AMapFoldedAtSeamlessPointsStillGivesAValidMesh)
   EXPECT_EQ(m.nonManifoldEdges, 0);
   EXPECT_EQ(m.quads, m.faces);
   EXPECT_EQ(q.nonIntegerTransitions, 0);
+  EXPECT_GT(q.walkFallbacks, 0) << "segments blocked by flipped triangles";
   EXPECT_GT(q.cellsOffSurface + q.cellsDegenerate + q.cellsConflicting, 0)
     << "the folds cost cells, and they are counted (here as walks stopped by flipped "
        "triangles; no overlapping quad is left to remove)";
