@@ -1,6 +1,7 @@
 #include "FrameField.h"
 
 #include "CurvatureFrames.h"
+#include "UnionFind.h"
 
 #include <Eigen/Dense>
 
@@ -162,6 +163,47 @@ void rotateFrames(
     U.row(f) = (c * u + s * n.cross(u)).transpose();
     V.row(f) = (c * v + s * n.cross(v)).transpose();
   }
+}
+
+
+std::vector<char> sharpEdges(
+  const MeshTopology& topo, const FaceBases& bases, double featureAngle, int minimumLength)
+{
+  const double cosFeature = std::cos(featureAngle * 3.14159265358979323846 / 180.0);
+  const int ne = topo.numEdges();
+  std::vector<char> sharp(ne, 0);
+  for (int e = 0; e < ne; ++e)
+  {
+    if (topo.edgeFaceCount[e] == 2)
+    {
+      const int f = topo.edgeFaces(e, 0), g = topo.edgeFaces(e, 1);
+      sharp[e] = bases.normal.row(f).dot(bases.normal.row(g)) < cosFeature;
+    }
+  }
+  std::vector<int> parent(ne), firstAt(topo.numVertices, -1);
+  for (int e = 0; e < ne; ++e)
+  {
+    parent[e] = e;
+  }
+  for (int e = 0; e < ne; ++e)
+  {
+    for (int j = 0; sharp[e] && j < 2; ++j)
+    {
+      int& other = firstAt[topo.edges(e, j)];
+      other = other < 0 ? e : other;
+      unite(parent, other, e);
+    }
+  }
+  std::vector<int> size(ne, 0);
+  for (int e = 0; e < ne; ++e)
+  {
+    size[findRoot(parent, e)] += sharp[e];
+  }
+  for (int e = 0; e < ne; ++e)
+  {
+    sharp[e] = sharp[e] && size[findRoot(parent, e)] >= minimumLength;
+  }
+  return sharp;
 }
 
 }

@@ -7,6 +7,8 @@
 
 #include <Eigen/Core>
 
+#include <vector>
+
 namespace quadcover
 {
 
@@ -60,6 +62,15 @@ Eigen::VectorXd angleDefects(
 /// a non-orthogonal frame keeps its shape).
 void rotateFrames(
   const FaceBases& bases, const Eigen::VectorXd& alpha, Eigen::MatrixX3d& U, Eigen::MatrixX3d& V);
+
+
+/**
+ * Sharp inner edges: the two triangles' normals more than featureAngle degrees apart, kept only in
+ * chains of at least minimumLength sharp edges joined end to end (isolated sharp edges are noise).
+ * @return #E, 1 on a sharp edge
+ */
+std::vector<char> sharpEdges(
+  const MeshTopology& topo, const FaceBases& bases, double featureAngle, int minimumLength);
 
 }
 

@@ -1,7 +1,6 @@
 #include "FrameSmoother.h"
 
 #include "SparseSolver.h"
-#include "UnionFind.h"
 #include <Eigen/Geometry>
 
 #include <cmath>
@@ -77,7 +76,6 @@ SmootherResult smoothFrames(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F
   R.constrained.assign(nf, 0);
   Eigen::VectorXd fixedAlpha = Eigen::VectorXd::Zero(nf);
   Eigen::VectorXd constraintLength = Eigen::VectorXd::Zero(nf);
-  const double cosFeature = std::cos(options.featureAngle * Pi / 180.0);
   auto hold = [&](int f, int k) {
     const double len = (V.row(F(f, (k + 1) % 3)) - V.row(F(f, k))).norm();
     if (len > constraintLength[f])
@@ -88,44 +86,11 @@ SmootherResult smoothFrames(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F
     }
   };
   // Sharp edges, kept only in chains of at least minimumFeatureLength edges.
-  const int ne = topo.numEdges();
-  std::vector<char> sharp(ne, 0);
-  for (int e = 0; e < ne; ++e)
+  const std::vector<char> sharp = sharpEdges(
+    topo, geometry.bases, options.featureAngle, options.minimumFeatureLength);
+  for (const char e : sharp)
   {
-    if (topo.edgeFaceCount[e] == 2)
-    {
-      const int f = topo.edgeFaces(e, 0), g = topo.edgeFaces(e, 1);
-      sharp[e] = geometry.bases.normal.row(f).dot(geometry.bases.normal.row(g)) < cosFeature;
-    }
-  }
-  {
-    std::vector<int> parent(ne), firstAt(topo.numVertices, -1);
-    for (int e = 0; e < ne; ++e)
-    {
-      parent[e] = e;
-    }
-    for (int e = 0; e < ne; ++e)
-    {
-      for (int j = 0; sharp[e] && j < 2; ++j)
-      {
-        int& other = firstAt[topo.edges(e, j)];
-        other = other < 0 ? e : other;
-        unite(parent, other, e);
-      }
-    }
-    std::vector<int> size(ne, 0);
-    for (int e = 0; e < ne; ++e)
-    {
-      size[findRoot(parent, e)] += sharp[e];
-    }
-    for (int e = 0; e < ne; ++e)
-    {
-      if (sharp[e])
-      {
-        sharp[e] = size[findRoot(parent, e)] >= options.minimumFeatureLength;
-        R.featureEdges += sharp[e];
-      }
-    }
+    R.featureEdges += e;
   }
   for (int f = 0; f < nf; ++f)
   {
