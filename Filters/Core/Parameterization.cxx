@@ -1368,50 +1368,83 @@ Parameterization computeParameterization(const Eigen::MatrixX3d& V, const Eigen:
     }
     // in symbols; only the real ones move, and they are the real columns
     const Untangler untangler{ Dr, D, sqrtArea, out.gridSize, numReal };
-    Eigen::VectorXd xs = P * x;
     // kept in case the repair leaves more flipped triangles and wrong fans than it found
     const Eigen::VectorXd before = x;
+    const std::vector<int> flippedBefore = flipped, wrongBefore = wrong;
     const std::size_t defectsBefore = flipped.size() + wrong.size();
-    for (int attempt = 0; attempt < 3 && (!flipped.empty() || !wrong.empty()); ++attempt)
+    // Three attempts: the fans wound the wrong way are laid out again (cones first, then in
+    // later attempts every point listed) and held while their surroundings untangle; then
+    // everything untangles, with those fans free again or (keepFans) still held.
+    auto repair = [&](bool keepFans, Eigen::VectorXd& xr, std::vector<int>& fl,
+                    std::vector<int>& wr) {
+      xr = before;
+      fl = flippedBefore;
+      wr = wrongBefore;
+      Eigen::VectorXd xs = P * xr;
+      for (int attempt = 0; attempt < (keepFans ? 1 : 3) && (!fl.empty() || !wr.empty()); ++attempt)
+      {
+        // cones first: a point wound twice is usually the neighbour of a cone closed up into
+        // 90 degrees, and comes right with it
+        std::stable_sort(wr.begin(), wr.end(),
+          [&](int a, int b) { return (ft.layerShift[a] != 0) > (ft.layerShift[b] != 0); });
+        std::vector<char> frozen(xs.size(), 0);
+        for (const int p : wr)
+        {
+          if (ft.layerShift[p] != 0 || attempt > 0)
+          {
+            layOut(p, xs, frozen);
+          }
+        }
+        xr.head(numReal) = xs.head(numReal);
+        // the new fans held first, so that their winding stays, then everything
+        if (!wr.empty())
+        {
+          fl = flippedFaces(uvOf(xr));
+          for (int rings = 2; rings <= 8 && !fl.empty(); rings *= 2)
+          {
+            untangler.run(topo, F, fl, rings, options.maxUntangleRounds, xs, frozen);
+            xr.head(numReal) = xs.head(numReal);
+            fl = flippedFaces(uvOf(xr));
+          }
+        }
+        if (!keepFans)
+        {
+          std::fill(frozen.begin(), frozen.end(), 0);
+        }
+        for (int rings = 2; rings <= 16 && !fl.empty(); rings *= 2)
+        {
+          ++out.untangleRegions;
+          untangler.run(topo, F, fl, rings, options.maxUntangleRounds, xs, frozen);
+          xr.head(numReal) = xs.head(numReal);
+          fl = flippedFaces(uvOf(xr));
+        }
+        wr = wrongWindings(uvOf(xr));
+      }
+    };
+    repair(false, x, flipped, wrong);
+    const std::size_t left = flipped.size() + wrong.size();
+    if (left > 0 && left <= 8)
     {
-      // cones first: a point wound twice is usually the neighbour of a cone closed up into
-      // 90 degrees, and comes right with it
-      std::stable_sort(wrong.begin(), wrong.end(),
-        [&](int a, int b) { return (ft.layerShift[a] != 0) > (ft.layerShift[b] != 0); });
-      std::vector<char> frozen(xs.size(), 0);
-      for (const int p : wrong)
+      // Freed, a fan laid out again can close up once more as its surroundings untangle (on
+      // fine meshes a cone's fan is small against a grid cell); held, it cannot, though its
+      // surroundings may then keep folds. The run with fewer defects wins. Only for a handful
+      // left: where many are, holding their fans blocks the untangling (spot refined 64 times:
+      // 20 wrong fans, and 50 s more for nothing).
+      Eigen::VectorXd held;
+      std::vector<int> heldFlipped, heldWrong;
+      repair(true, held, heldFlipped, heldWrong);
+      if (heldFlipped.size() + heldWrong.size() < flipped.size() + wrong.size())
       {
-        if (ft.layerShift[p] != 0 || attempt > 0)
-        {
-          layOut(p, xs, frozen);
-        }
+        x = held;
+        flipped = heldFlipped;
+        wrong = heldWrong;
       }
-      x.head(numReal) = xs.head(numReal);
-      // the new fans held first, so that their winding stays, then everything free
-      if (!wrong.empty())
-      {
-        flipped = flippedFaces(uvOf(x));
-        for (int rings = 2; rings <= 8 && !flipped.empty(); rings *= 2)
-        {
-          untangler.run(topo, F, flipped, rings, options.maxUntangleRounds, xs, frozen);
-          x.head(numReal) = xs.head(numReal);
-          flipped = flippedFaces(uvOf(x));
-        }
-      }
-      for (int rings = 2; rings <= 16 && !flipped.empty(); rings *= 2)
-      {
-        ++out.untangleRegions;
-        untangler.run(topo, F, flipped, rings, options.maxUntangleRounds, xs);
-        x.head(numReal) = xs.head(numReal);
-        flipped = flippedFaces(uvOf(x));
-      }
-      wrong = wrongWindings(uvOf(x));
     }
     if (flipped.size() + wrong.size() > defectsBefore)
     {
       x = before;
-      flipped = flippedFaces(uvOf(x));
-      wrong = wrongWindings(uvOf(x));
+      flipped = flippedBefore;
+      wrong = wrongBefore;
     }
     out.untangleSeconds = seconds(started);
   }
