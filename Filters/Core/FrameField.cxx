@@ -4,6 +4,7 @@
 #include "UnionFind.h"
 
 #include <Eigen/Dense>
+#include <Eigen/Geometry>
 
 #include <cmath>
 
@@ -165,6 +166,18 @@ void rotateFrames(
   }
 }
 
+
+double surfaceArea(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F)
+{
+  double area = 0.0;
+  for (Eigen::Index f = 0; f < F.rows(); ++f)
+  {
+    const Eigen::Vector3d a = V.row(F(f, 1)) - V.row(F(f, 0));
+    const Eigen::Vector3d b = V.row(F(f, 2)) - V.row(F(f, 0));
+    area += 0.5 * a.cross(b).norm();
+  }
+  return area;
+}
 
 std::vector<char> sharpEdges(
   const MeshTopology& topo, const FaceBases& bases, double featureAngle, int minimumLength)

@@ -64,6 +64,9 @@ void rotateFrames(
   const FaceBases& bases, const Eigen::VectorXd& alpha, Eigen::MatrixX3d& U, Eigen::MatrixX3d& V);
 
 
+/// Total area of the triangles.
+double surfaceArea(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F);
+
 /**
  * Sharp inner edges: the two triangles' normals more than featureAngle degrees apart, kept only in
  * chains of at least minimumLength sharp edges joined end to end (isolated sharp edges are noise).

@@ -58,7 +58,6 @@ FrameGeometry computeFrameGeometry(
   G.transport = computeTransport(V, F, topo, G.bases);
   G.edgeAngle.resize(F.rows(), 3);
   G.edgeLength.resize(F.rows(), 3);
-  double area = 0.0;
   for (Eigen::Index f = 0; f < F.rows(); ++f)
   {
     for (int k = 0; k < 3; ++k)
@@ -67,11 +66,8 @@ FrameGeometry computeFrameGeometry(
       G.edgeAngle(f, k) = std::atan2(e.dot(G.bases.b2.row(f)), e.dot(G.bases.b1.row(f)));
       G.edgeLength(f, k) = e.norm();
     }
-    const Eigen::Vector3d a = V.row(F(f, 1)) - V.row(F(f, 0));
-    const Eigen::Vector3d b = V.row(F(f, 2)) - V.row(F(f, 0));
-    area += 0.5 * a.cross(b).norm();
   }
-  G.referenceLength = std::sqrt(area / 2000.0);
+  G.referenceLength = std::sqrt(surfaceArea(V, F) / 2000.0);
   G.defect = angleDefects(V, F, topo);
   return G;
 }

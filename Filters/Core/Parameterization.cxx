@@ -553,14 +553,7 @@ double gridSizeForQuadCount(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F
   {
     throw std::invalid_argument("the quad count must be positive");
   }
-  double area = 0.0;
-  for (Eigen::Index f = 0; f < F.rows(); ++f)
-  {
-    const Eigen::Vector3d a = V.row(F(f, 1)) - V.row(F(f, 0));
-    const Eigen::Vector3d b = V.row(F(f, 2)) - V.row(F(f, 0));
-    area += 0.5 * a.cross(b).norm();
-  }
-  return std::sqrt(area / quads);
+  return std::sqrt(surfaceArea(V, F) / quads);
 }
 
 Parameterization computeParameterization(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F,
