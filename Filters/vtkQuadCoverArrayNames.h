@@ -124,6 +124,9 @@ constexpr const char* BoundaryLoops = "BoundaryLoops";
 /// field, 1 x double, 3 tuples: two-sided Hausdorff distance between the quad mesh and the
 /// input, then input to quads and quads to input, in % of the input's bounding-box diagonal.
 constexpr const char* HausdorffDistance = "HausdorffDistance";
+/// field, 1 x int, 2 tuples: quads with a corner turned inside out (scaled Jacobian <= 0) as
+/// extracted, and after RepairInvertedQuads.
+constexpr const char* InvertedQuads = "InvertedQuads";
 /// field, 1 x int, 3 tuples: grid cells that gave no quad: a corner off the surface, two corners
 /// at one grid point, overlapping others.
 constexpr const char* DroppedCells = "DroppedCells";

@@ -138,6 +138,11 @@ int vtkQuadExtractor::RequestData(
   try
   {
     quadcover::QuadMesh quads = quadcover::extractQuads(mesh.V, mesh.F, mesh.topo, uv);
+    std::pair<int, int> inverted(0, 0);
+    if (this->RepairInvertedQuads)
+    {
+      inverted = quadcover::repairInvertedQuads(mesh.V, mesh.F, mesh.topo, quads);
+    }
     if (this->RelaxationIterations > 0)
     {
       this->UpdateProgress(0.4);
@@ -204,6 +209,8 @@ int vtkQuadExtractor::RequestData(
     AddField<vtkIntArray>(fd, names::NonManifoldEdges, { double(m.nonManifoldEdges) });
     AddField<vtkIntArray>(fd, names::EulerCharacteristic, { double(m.eulerCharacteristic) });
     AddField<vtkIntArray>(fd, names::BoundaryLoops, { double(m.boundaryLoops) });
+    AddField<vtkIntArray>(
+      fd, names::InvertedQuads, { double(inverted.first), double(inverted.second) });
     AddField<vtkIntArray>(fd, names::DroppedCells,
       { double(quads.cellsOffSurface), double(quads.cellsDegenerate),
         double(quads.cellsConflicting) });
@@ -267,6 +274,7 @@ void vtkQuadExtractor::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "RelaxationIterations: " << this->RelaxationIterations << "\n";
+  os << indent << "RepairInvertedQuads: " << (this->RepairInvertedQuads ? "On" : "Off") << "\n";
   os << indent << "ComputeHausdorffDistance: " << (this->ComputeHausdorffDistance ? "On" : "Off")
      << "\n";
 }

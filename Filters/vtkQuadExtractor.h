@@ -23,7 +23,8 @@
  * quad's corners); field data with the figures of the paper's Table 1 and more: QuadShare,
  * IrregularVertices (inner, boundary), EdgeLengthRSD, AngleRSD, ScaledJacobianStatistics (min,
  * mean), NonManifoldEdges, EulerCharacteristic, BoundaryLoops, HausdorffDistance (two-sided, and
- * each way, in % of the input's bounding-box diagonal) and DroppedCells.
+ * each way, in % of the input's bounding-box diagonal), InvertedQuads (before and after
+ * RepairInvertedQuads) and DroppedCells.
  * @sa vtkQuadCoverSolver
  */
 #ifndef vtkQuadExtractor_h
@@ -48,6 +49,17 @@ public:
   ///@}
 
   ///@{
+  /** Relax the quads around any quad with a corner turned inside out (scaled Jacobian <= 0),
+   * which the map leaves at some branch points on coarse or strongly curved parts (default on):
+   * their vertices and those within two quad rings, as RelaxationIterations does, until none is
+   * left or a round repairs nothing. Far from them nothing moves. InvertedQuads reports how many
+   * there were and are. */
+  vtkSetMacro(RepairInvertedQuads, bool);
+  vtkGetMacro(RepairInvertedQuads, bool);
+  vtkBooleanMacro(RepairInvertedQuads, bool);
+  ///@}
+
+  ///@{
   /** Sweeps of tangential relaxation after extraction, in [0, 1000] (default 0: the quads as
    * the map cuts them). Each free vertex moves halfway towards the area-weighted mean of its
    * quads' centres, in the input's tangent plane, and back onto the input surface; vertices on
@@ -69,6 +81,7 @@ protected:
 
   bool ComputeHausdorffDistance = true;
   int RelaxationIterations = 0;
+  bool RepairInvertedQuads = true;
 
 private:
   vtkQuadExtractor(const vtkQuadExtractor&) = delete;

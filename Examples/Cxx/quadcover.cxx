@@ -73,7 +73,8 @@ void Usage(std::ostream& os, const std::vector<NumberOption>& numbers)
     "  --rounding MODE    greedy|simple|none (default greedy)\n"
     "  --split-seams      write the surface cut open along the seams, with UV texture\n"
     "                     coordinates (view it with a checkerboard texture)\n",
-    "  --no-hausdorff     skip the Hausdorff distance to the input\n",
+    "  --no-hausdorff     skip the Hausdorff distance to the input\n"
+    "  --no-quad-repair   leave quads with a corner turned inside out as extracted\n",
   };
   for (int stage = 0; stage < BuiltStages; ++stage)
   {
@@ -175,7 +176,8 @@ int main(int argc, char* argv[])
   vtkNew<vtkMatchingBuilder> matching;
   vtkNew<vtkQuadCoverSolver> solver;
   vtkNew<vtkQuadExtractor> extractor;
-  bool pureQuads = true, splitSeams = false, hausdorff = true, lengthScaledCost = true;
+  bool pureQuads = true, splitSeams = false, hausdorff = true, lengthScaledCost = true,
+       quadRepair = true;
   int rounding = solver->GetRoundingMode();
   std::vector<NumberOption> numbers = {
     { 0, "--radius R", "neighbourhood radius in median edge lengths",
@@ -274,6 +276,8 @@ int main(int argc, char* argv[])
       splitSeams = true;
     else if (a == "--no-hausdorff")
       hausdorff = false;
+    else if (a == "--no-quad-repair")
+      quadRepair = false;
     else if (a == "--rounding")
     {
       const std::string mode = argv[++i];
@@ -387,6 +391,7 @@ int main(int argc, char* argv[])
   solver->SetSplitSeams(splitSeams);
   extractor->SetInputConnection(solver->GetOutputPort());
   extractor->SetComputeHausdorffDistance(hausdorff);
+  extractor->SetRepairInvertedQuads(quadRepair);
   extractor->SetRelaxationIterations(static_cast<int>(numbers[10].value));
   vtkAlgorithm* const pipeline[] = { curvature, smoother, matching, solver, extractor };
   vtkPolyData* result = nullptr;
@@ -547,6 +552,8 @@ int main(int argc, char* argv[])
          << ", \"euler_characteristic\": " << field(extractor, names::EulerCharacteristic, 0)
          << ", \"boundary_loops\": " << field(extractor, names::BoundaryLoops, 0)
          << ", \"hausdorff_percent\": " << field(extractor, names::HausdorffDistance, 0)
+         << ", \"inverted_quads_extracted\": " << field(extractor, names::InvertedQuads, 0)
+         << ", \"inverted_quads\": " << field(extractor, names::InvertedQuads, 1)
          << ", \"dropped_cells\": "
          << field(extractor, names::DroppedCells, 0) + field(extractor, names::DroppedCells, 1) +
           field(extractor, names::DroppedCells, 2)

@@ -645,7 +645,8 @@ QuadRelaxReport relaxQuads(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F,
   const int nV = static_cast<int>(mesh.V.rows());
   const int nQ = static_cast<int>(mesh.Q.rows());
   if (topo.numFaces != nF || static_cast<int>(mesh.vertexTriangle.size()) != nV ||
-    static_cast<int>(mesh.vertexPoint.size()) != nV)
+    static_cast<int>(mesh.vertexPoint.size()) != nV ||
+    (!options.movable.empty() && static_cast<int>(options.movable.size()) != nV))
   {
     throw std::invalid_argument("relaxQuads: sizes do not match");
   }
@@ -885,7 +886,8 @@ QuadRelaxReport relaxQuads(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F,
   {
     for (int v = 0; v < nV; ++v)
     {
-      if (fixed[v] || offsets[v] == offsets[v + 1])
+      if (fixed[v] || offsets[v] == offsets[v + 1] ||
+        (!options.movable.empty() && !options.movable[v]))
       {
         continue;
       }
@@ -931,6 +933,63 @@ QuadRelaxReport relaxQuads(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F,
     }
   }
   return report;
+}
+
+std::pair<int, int> repairInvertedQuads(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F,
+  const MeshTopology& topo, QuadMesh& mesh, int rings, int iterations, int rounds)
+{
+  const int nV = static_cast<int>(mesh.V.rows());
+  auto inverted = [&]() {
+    const QuadQuality q = measureQuads(mesh.V, mesh.Q);
+    std::vector<int> bad;
+    for (int i = 0; i < q.faces; ++i)
+    {
+      if (!(q.scaledJacobian[i] > 0))
+      {
+        bad.push_back(i);
+      }
+    }
+    return bad;
+  };
+  std::vector<int> bad = inverted();
+  const int before = static_cast<int>(bad.size());
+  for (int round = 0; round < rounds && !bad.empty(); ++round)
+  {
+    QuadRelaxOptions options;
+    options.iterations = iterations;
+    options.movable.assign(nV, 0);
+    for (const int i : bad)
+    {
+      for (int k = 0; k < 4; ++k)
+      {
+        options.movable[mesh.Q(i, k)] = 1;
+      }
+    }
+    // grow by quad rings: every vertex of a quad with a movable vertex
+    for (int ring = 0; ring < rings; ++ring)
+    {
+      std::vector<char> grown = options.movable;
+      for (int i = 0; i < mesh.Q.rows(); ++i)
+      {
+        const bool touches = options.movable[mesh.Q(i, 0)] || options.movable[mesh.Q(i, 1)] ||
+          options.movable[mesh.Q(i, 2)] || options.movable[mesh.Q(i, 3)];
+        for (int k = 0; k < 4 && touches; ++k)
+        {
+          grown[mesh.Q(i, k)] = 1;
+        }
+      }
+      options.movable.swap(grown);
+    }
+    relaxQuads(V, F, topo, mesh, options);
+    const std::vector<int> now = inverted();
+    const bool progress = now.size() < bad.size();
+    bad = now;
+    if (!progress)
+    {
+      break;
+    }
+  }
+  return { before, static_cast<int>(bad.size()) };
 }
 
 }

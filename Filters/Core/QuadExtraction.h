@@ -6,6 +6,7 @@
 
 #include <Eigen/Core>
 
+#include <utility>
 #include <vector>
 
 namespace quadcover
@@ -63,6 +64,8 @@ struct QuadRelaxOptions
   /// Input edges with a dihedral angle above this (degrees) are creases: vertices on them stay,
   /// and no vertex is moved across one.
   double featureAngle = 60.0;
+  /// #V of the quad mesh, 1 for the vertices that may move; empty: all of them.
+  std::vector<char> movable;
 };
 
 struct QuadRelaxReport
@@ -86,6 +89,16 @@ struct QuadRelaxReport
  */
 QuadRelaxReport relaxQuads(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F,
   const MeshTopology& topo, QuadMesh& mesh, const QuadRelaxOptions& options);
+
+/**
+ * Repairs quads with a corner turned inside out (scaled Jacobian <= 0, as measureQuads measures
+ * it), which the map leaves at some branch points on coarse or strongly curved parts: relaxQuads
+ * on their vertices and those within `rings` quad rings, in rounds of `iterations` sweeps, until
+ * none is left or a round repairs nothing (at most `rounds`). Far from them nothing moves.
+ * @return the inverted quads before and after
+ */
+std::pair<int, int> repairInvertedQuads(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F,
+  const MeshTopology& topo, QuadMesh& mesh, int rings = 2, int iterations = 10, int rounds = 3);
 
 /// The paper's Table 1 figures and more, for a quad (or polygon) mesh.
 struct QuadQuality

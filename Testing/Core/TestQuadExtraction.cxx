@@ -314,3 +314,47 @@ TEST(QuadExtraction, AMapFoldedAtSeamlessPointsStillGivesAValidMesh)
     << "the folds cost cells, and they are counted (here as walks stopped by flipped "
        "triangles; no overlapping quad is left to remove)";
 }
+
+TEST(QuadRelaxation, RepairsInvertedQuadsAndLeavesTheRestAlone)
+{
+  const Chain c = runChain(testSurface("sphere"), 800);
+  QuadMesh q = extractQuads(c.s.V, c.s.F, c.topo, c.map.cornerUV);
+  ASSERT_EQ(repairInvertedQuads(c.s.V, c.s.F, c.topo, q).first, 0) << "a clean sphere";
+  // push three vertices far along the sphere, past their neighbours: their quads fold over
+  const double edge = std::sqrt(4 * 3.14159265358979 / q.Q.rows());
+  std::vector<int> pushed;
+  for (int v = 0; v < q.V.rows() && pushed.size() < 3; v += 97)
+  {
+    const Eigen::Vector3d p = q.V.row(v);
+    Eigen::Vector3d d = Eigen::Vector3d::UnitZ().cross(p);
+    if (d.norm() < 0.3)
+    {
+      continue;
+    }
+    q.V.row(v) = (p + 1.6 * edge * d.normalized()).normalized() * p.norm();
+    pushed.push_back(v);
+  }
+  const Eigen::MatrixX3d start = q.V;
+  const auto [before, after] = repairInvertedQuads(c.s.V, c.s.F, c.topo, q);
+  std::printf("inverted quads: %d -> %d\n", before, after);
+  EXPECT_GT(before, 0);
+  EXPECT_EQ(after, 0);
+  EXPECT_GT(measureQuads(q.V, q.Q).minScaledJacobian, 0.0);
+  // vertices further than 2 quad rings from a folded quad stay exactly where they were
+  int far = 0;
+  for (int v = 0; v < q.V.rows(); ++v)
+  {
+    bool nearPushed = false;
+    for (const int p : pushed)
+    {
+      nearPushed = nearPushed || (start.row(v) - start.row(p)).norm() < 6 * edge;
+    }
+    if (!nearPushed)
+    {
+      ++far;
+      ASSERT_EQ((q.V.row(v) - start.row(v)).norm(), 0.0) << v;
+    }
+    ASSERT_NEAR(q.V.row(v).norm(), 1.0, 0.01) << "on the (inscribed) unit sphere";
+  }
+  EXPECT_GT(far, q.V.rows() / 2);
+}

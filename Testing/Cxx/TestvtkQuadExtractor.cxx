@@ -73,8 +73,12 @@ TEST(vtkQuadExtractor, DefaultsErrorsAndPrintSelf)
   std::ostringstream os;
   e->Print(os);
   EXPECT_NE(os.str().find("ComputeHausdorffDistance: On"), std::string::npos);
+  EXPECT_TRUE(e->GetRepairInvertedQuads());
+  EXPECT_NE(os.str().find("RepairInvertedQuads: On"), std::string::npos);
   EXPECT_EQ(e->GetRelaxationIterations(), 0);
   e->SetRelaxationIterations(-3);
+  EXPECT_TRUE(e->GetRepairInvertedQuads());
+  EXPECT_NE(os.str().find("RepairInvertedQuads: On"), std::string::npos);
   EXPECT_EQ(e->GetRelaxationIterations(), 0);
   e->SetRelaxationIterations(7);
   std::ostringstream os7;
@@ -195,6 +199,8 @@ TEST_P(QuadsOn, ManifoldAllQuadMeshWithTheInputsTopology)
       ASSERT_EQ(out->GetCell(c)->GetNumberOfPoints(), 4);
     }
     EXPECT_EQ(Field(out, names::QuadShare), 1.0);
+    // the repair of quads turned inside out never leaves more than it found
+    EXPECT_LE(Field(out, names::InvertedQuads, 1), Field(out, names::InvertedQuads, 0));
     EXPECT_EQ(Field(out, names::NonManifoldEdges), 0);
     EXPECT_EQ(Field(out, names::BoundaryLoops), static_cast<double>(topo.boundaryLoops.size()));
     EXPECT_GT(Field(out, names::ScaledJacobianStatistics, 1), 0.85) << "mean scaled Jacobian";
