@@ -353,10 +353,14 @@ SmootherResult smoothFrames(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F
         u0 = solver.solve(b);
         starts.push_back(u0);
       }
-      // The smoothest field matters where the alignment says little (a sphere's curvature is
-      // noise: ratio 3e-4); on the shared meshes (ratios 0.08-0.12) the aligned start always
-      // won or tied, so the inverse iteration's dozen solves are spared there.
-      if (R.numConstrained == 0 && alignTotal < 0.02 * smoothTotal)
+      // The smoothest field matters where the curvature says little (a sphere's is noise:
+      // ratio 3e-4 of the two terms before lambda weighs them); on the shared meshes (ratios
+      // 0.08-0.12) the aligned start always won or tied, so the inverse iteration's dozen solves
+      // are spared there. The ratio leaves lambda out: it asks how much the curvature says, not
+      // how much it is listened to (with lambda in, every mesh fell below the bar at 0.95).
+      const bool weakCurvature = lambda >= 1.0 ||
+        alignTotal / (1.0 - lambda) < 0.02 * smoothTotal / lambda;
+      if (R.numConstrained == 0 && weakCurvature)
       {
         Eigen::VectorXcd u = u0;
         for (int it = 0; it < 40; ++it)
