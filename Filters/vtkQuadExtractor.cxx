@@ -138,10 +138,14 @@ int vtkQuadExtractor::RequestData(
   try
   {
     quadcover::QuadMesh quads = quadcover::extractQuads(mesh.V, mesh.F, mesh.topo, uv);
-    std::pair<int, int> inverted(0, 0);
+    int invertedExtracted = 0;
     if (this->RepairInvertedQuads)
     {
-      inverted = quadcover::repairInvertedQuads(mesh.V, mesh.F, mesh.topo, quads);
+      invertedExtracted = quadcover::repairInvertedQuads(mesh.V, mesh.F, mesh.topo, quads).first;
+    }
+    else
+    {
+      invertedExtracted = quadcover::countInvertedQuads(quads.V, quads.Q);
     }
     if (this->RelaxationIterations > 0)
     {
@@ -209,8 +213,13 @@ int vtkQuadExtractor::RequestData(
     AddField<vtkIntArray>(fd, names::NonManifoldEdges, { double(m.nonManifoldEdges) });
     AddField<vtkIntArray>(fd, names::EulerCharacteristic, { double(m.eulerCharacteristic) });
     AddField<vtkIntArray>(fd, names::BoundaryLoops, { double(m.boundaryLoops) });
+    int invertedNow = 0; // in the output, after the repair and any relaxation
+    for (Eigen::Index i = 0; i < m.scaledJacobian.size(); ++i)
+    {
+      invertedNow += !(m.scaledJacobian[i] > 0);
+    }
     AddField<vtkIntArray>(
-      fd, names::InvertedQuads, { double(inverted.first), double(inverted.second) });
+      fd, names::InvertedQuads, { double(invertedExtracted), double(invertedNow) });
     AddField<vtkIntArray>(fd, names::DroppedCells,
       { double(quads.cellsOffSurface), double(quads.cellsDegenerate),
         double(quads.cellsConflicting) });

@@ -166,7 +166,6 @@ void rotateFrames(
   }
 }
 
-
 double surfaceArea(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F)
 {
   double area = 0.0;

@@ -86,8 +86,8 @@ SmootherResult smoothFrames(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F
     }
   };
   // Sharp edges, kept only in chains of at least minimumFeatureLength edges.
-  const std::vector<char> sharp = sharpEdges(
-    topo, geometry.bases, options.featureAngle, options.minimumFeatureLength);
+  const std::vector<char> sharp =
+    sharpEdges(topo, geometry.bases, options.featureAngle, options.minimumFeatureLength);
   for (const char e : sharp)
   {
     R.featureEdges += e;
@@ -358,8 +358,8 @@ SmootherResult smoothFrames(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F
       // 0.08-0.12) the aligned start always won or tied, so the inverse iteration's dozen solves
       // are spared there. The ratio leaves lambda out: it asks how much the curvature says, not
       // how much it is listened to (with lambda in, every mesh fell below the bar at 0.95).
-      const bool weakCurvature = lambda >= 1.0 ||
-        alignTotal / (1.0 - lambda) < 0.02 * smoothTotal / lambda;
+      const bool weakCurvature =
+        lambda >= 1.0 || alignTotal / (1.0 - lambda) < 0.02 * smoothTotal / lambda;
       if (R.numConstrained == 0 && weakCurvature)
       {
         Eigen::VectorXcd u = u0;

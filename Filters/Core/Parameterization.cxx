@@ -1369,7 +1369,8 @@ Parameterization computeParameterization(const Eigen::MatrixX3d& V, const Eigen:
     // later attempts every point listed) and held while their surroundings untangle; then
     // everything untangles, with those fans free again or (keepFans) still held.
     auto repair = [&](bool keepFans, Eigen::VectorXd& xr, std::vector<int>& fl,
-                    std::vector<int>& wr) {
+                    std::vector<int>& wr, int& regions) {
+      regions = 0;
       xr = before;
       fl = flippedBefore;
       wr = wrongBefore;
@@ -1406,7 +1407,7 @@ Parameterization computeParameterization(const Eigen::MatrixX3d& V, const Eigen:
         }
         for (int rings = 2; rings <= 16 && !fl.empty(); rings *= 2)
         {
-          ++out.untangleRegions;
+          ++regions;
           untangler.run(topo, F, fl, rings, options.maxUntangleRounds, xs, frozen);
           xr.head(numReal) = xs.head(numReal);
           fl = flippedFaces(uvOf(xr));
@@ -1414,9 +1415,13 @@ Parameterization computeParameterization(const Eigen::MatrixX3d& V, const Eigen:
         wr = wrongWindings(uvOf(xr));
       }
     };
-    repair(false, x, flipped, wrong);
+    repair(false, x, flipped, wrong, out.untangleRegions);
     const std::size_t left = flipped.size() + wrong.size();
-    if (left > 0 && left <= 8)
+    // (with no cone among the fans wound the wrong way nothing would be held: the held run would
+    // repeat the first attempt)
+    const bool cones = std::any_of(
+      wrongBefore.begin(), wrongBefore.end(), [&](int p) { return ft.layerShift[p] != 0; });
+    if (left > 0 && left <= 8 && cones)
     {
       // Freed, a fan laid out again can close up once more as its surroundings untangle (on
       // fine meshes a cone's fan is small against a grid cell); held, it cannot, though its
@@ -1425,12 +1430,14 @@ Parameterization computeParameterization(const Eigen::MatrixX3d& V, const Eigen:
       // 20 wrong fans, and 50 s more for nothing).
       Eigen::VectorXd held;
       std::vector<int> heldFlipped, heldWrong;
-      repair(true, held, heldFlipped, heldWrong);
+      int heldRegions = 0;
+      repair(true, held, heldFlipped, heldWrong, heldRegions);
       if (heldFlipped.size() + heldWrong.size() < flipped.size() + wrong.size())
       {
         x = held;
         flipped = heldFlipped;
         wrong = heldWrong;
+        out.untangleRegions = heldRegions;
       }
     }
     if (flipped.size() + wrong.size() > defectsBefore)

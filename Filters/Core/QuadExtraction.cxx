@@ -935,6 +935,17 @@ QuadRelaxReport relaxQuads(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F,
   return report;
 }
 
+int countInvertedQuads(const Eigen::MatrixX3d& V, const Eigen::MatrixX4i& Q)
+{
+  const QuadQuality q = measureQuads(V, Q);
+  int count = 0;
+  for (Eigen::Index i = 0; i < q.scaledJacobian.size(); ++i)
+  {
+    count += !(q.scaledJacobian[i] > 0);
+  }
+  return count;
+}
+
 std::pair<int, int> repairInvertedQuads(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F,
   const MeshTopology& topo, QuadMesh& mesh, int rings, int iterations, int rounds)
 {
@@ -980,8 +991,18 @@ std::pair<int, int> repairInvertedQuads(const Eigen::MatrixX3d& V, const Eigen::
       }
       options.movable.swap(grown);
     }
+    const Eigen::MatrixX3d keptV = mesh.V;
+    const std::vector<int> keptTriangle = mesh.vertexTriangle, keptPoint = mesh.vertexPoint;
     relaxQuads(V, F, topo, mesh, options);
     const std::vector<int> now = inverted();
+    if (now.size() > bad.size())
+    {
+      // the guard counts corners against two normals, measureQuads quads against one: rare
+      mesh.V = keptV;
+      mesh.vertexTriangle = keptTriangle;
+      mesh.vertexPoint = keptPoint;
+      break;
+    }
     const bool progress = now.size() < bad.size();
     bad = now;
     if (!progress)

@@ -94,9 +94,13 @@ QuadRelaxReport relaxQuads(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F,
  * Repairs quads with a corner turned inside out (scaled Jacobian <= 0, as measureQuads measures
  * it), which the map leaves at some branch points on coarse or strongly curved parts: relaxQuads
  * on their vertices and those within `rings` quad rings, in rounds of `iterations` sweeps, until
- * none is left or a round repairs nothing (at most `rounds`). Far from them nothing moves.
+ * none is left or a round repairs nothing (at most `rounds`; a round that leaves more is undone).
+ * Far from them nothing moves.
  * @return the inverted quads before and after
  */
+/// Quads with a corner turned inside out: scaled Jacobian <= 0, as measureQuads measures it.
+int countInvertedQuads(const Eigen::MatrixX3d& V, const Eigen::MatrixX4i& Q);
+
 std::pair<int, int> repairInvertedQuads(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F,
   const MeshTopology& topo, QuadMesh& mesh, int rings = 2, int iterations = 10, int rounds = 3);
 

@@ -332,6 +332,20 @@ TEST(QuadRelaxation, RepairsInvertedQuadsAndLeavesTheRestAlone)
       continue;
     }
     q.V.row(v) = (p + 1.6 * edge * d.normalized()).normalized() * p.norm();
+    // and the triangle it now lies over (the nearest centroid)
+    double nearest = 1e300;
+    for (int f = 0; f < c.s.F.rows(); ++f)
+    {
+      const Eigen::Vector3d centre =
+        (c.s.V.row(c.s.F(f, 0)) + c.s.V.row(c.s.F(f, 1)) + c.s.V.row(c.s.F(f, 2))) / 3.0;
+      const double d2 = (centre - Eigen::Vector3d(q.V.row(v))).squaredNorm();
+      if (d2 < nearest)
+      {
+        nearest = d2;
+        q.vertexTriangle[v] = f;
+      }
+    }
+    q.vertexPoint[v] = -1;
     pushed.push_back(v);
   }
   const Eigen::MatrixX3d start = q.V;
