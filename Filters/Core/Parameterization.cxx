@@ -1368,14 +1368,33 @@ Parameterization computeParameterization(const Eigen::MatrixX3d& V, const Eigen:
     // Three attempts: the fans wound the wrong way are laid out again (cones first, then in
     // later attempts every point listed) and held while their surroundings untangle; then
     // everything untangles, with those fans free again or (keepFans) still held.
-    auto repair = [&](bool keepFans, Eigen::VectorXd& xr, std::vector<int>& fl,
-                    std::vector<int>& wr, int& regions) {
+    // The state after the first attempt has laid out and held its fans, before everything
+    // untangles: where the held run (below) starts from.
+    struct Snapshot
+    {
+      Eigen::VectorXd xs, xr;
+      std::vector<int> fl;
+      std::vector<char> frozen;
+      bool taken = false;
+    } firstHeld;
+    auto untangleAll = [&](Eigen::VectorXd& xs, Eigen::VectorXd& xr, std::vector<int>& fl,
+                         const std::vector<char>& frozen, int& regions) {
+      for (int rings = 2; rings <= 16 && !fl.empty(); rings *= 2)
+      {
+        ++regions;
+        untangler.run(topo, F, fl, rings, options.maxUntangleRounds, xs, frozen);
+        xr.head(numReal) = xs.head(numReal);
+        fl = flippedFaces(uvOf(xr));
+      }
+    };
+    auto repair = [&](
+                    Eigen::VectorXd& xr, std::vector<int>& fl, std::vector<int>& wr, int& regions) {
       regions = 0;
       xr = before;
       fl = flippedBefore;
       wr = wrongBefore;
       Eigen::VectorXd xs = P * xr;
-      for (int attempt = 0; attempt < (keepFans ? 1 : 3) && (!fl.empty() || !wr.empty()); ++attempt)
+      for (int attempt = 0; attempt < 3 && (!fl.empty() || !wr.empty()); ++attempt)
       {
         // cones first: a point wound twice is usually the neighbour of a cone closed up into
         // 90 degrees, and comes right with it
@@ -1401,37 +1420,32 @@ Parameterization computeParameterization(const Eigen::MatrixX3d& V, const Eigen:
             fl = flippedFaces(uvOf(xr));
           }
         }
-        if (!keepFans)
+        if (attempt == 0)
         {
-          std::fill(frozen.begin(), frozen.end(), 0);
+          firstHeld = { xs, xr, fl, frozen, true };
         }
-        for (int rings = 2; rings <= 16 && !fl.empty(); rings *= 2)
-        {
-          ++regions;
-          untangler.run(topo, F, fl, rings, options.maxUntangleRounds, xs, frozen);
-          xr.head(numReal) = xs.head(numReal);
-          fl = flippedFaces(uvOf(xr));
-        }
+        untangleAll(xs, xr, fl, std::vector<char>(), regions);
         wr = wrongWindings(uvOf(xr));
       }
     };
-    repair(false, x, flipped, wrong, out.untangleRegions);
+    repair(x, flipped, wrong, out.untangleRegions);
     const std::size_t left = flipped.size() + wrong.size();
     // (with no cone among the fans wound the wrong way nothing would be held: the held run would
     // repeat the first attempt)
     const bool cones = std::any_of(
       wrongBefore.begin(), wrongBefore.end(), [&](int p) { return ft.layerShift[p] != 0; });
-    if (left > 0 && left <= 8 && cones)
+    if (left > 0 && left <= 8 && cones && firstHeld.taken)
     {
       // Freed, a fan laid out again can close up once more as its surroundings untangle (on
       // fine meshes a cone's fan is small against a grid cell); held, it cannot, though its
       // surroundings may then keep folds. The run with fewer defects wins. Only for a handful
       // left: where many are, holding their fans blocks the untangling (spot refined 64 times:
       // 20 wrong fans, and 50 s more for nothing).
-      Eigen::VectorXd held;
-      std::vector<int> heldFlipped, heldWrong;
+      Eigen::VectorXd& held = firstHeld.xr;
+      std::vector<int>& heldFlipped = firstHeld.fl;
       int heldRegions = 0;
-      repair(true, held, heldFlipped, heldWrong, heldRegions);
+      untangleAll(firstHeld.xs, held, heldFlipped, firstHeld.frozen, heldRegions);
+      const std::vector<int> heldWrong = wrongWindings(uvOf(held));
       if (heldFlipped.size() + heldWrong.size() < flipped.size() + wrong.size())
       {
         x = held;
