@@ -381,66 +381,9 @@ public:
     }
   }
 
-  /// Merges repeated quads (a centre on an edge or point is held by every triangle there) and
-  /// removes every quad with a directed edge another quad also has, or on an edge of more than
-  /// two quads: what overlapping cells of a folded map leave.
   void removeConflicts(std::vector<std::array<int, 4>>& quads)
   {
-    std::map<std::array<int, 4>, int> seen;
-    std::vector<char> keep(quads.size(), 1);
-    for (std::size_t i = 0; i < quads.size(); ++i)
-    {
-      std::array<int, 4> key = quads[i];
-      std::rotate(key.begin(), std::min_element(key.begin(), key.end()), key.end());
-      if (!seen.emplace(key, static_cast<int>(i)).second)
-      {
-        keep[i] = 0; // the same cell, from another triangle holding its centre
-      }
-    }
-    std::map<std::pair<int, int>, std::vector<int>> directed;
-    std::map<std::pair<int, int>, int> undirected;
-    for (std::size_t i = 0; i < quads.size(); ++i)
-    {
-      if (!keep[i])
-      {
-        continue;
-      }
-      for (int k = 0; k < 4; ++k)
-      {
-        const int a = quads[i][k], b = quads[i][(k + 1) % 4];
-        directed[{ a, b }].push_back(static_cast<int>(i));
-        ++undirected[{ std::min(a, b), std::max(a, b) }];
-      }
-    }
-    for (std::size_t i = 0; i < quads.size(); ++i)
-    {
-      if (!keep[i])
-      {
-        continue;
-      }
-      for (int k = 0; k < 4; ++k)
-      {
-        const int a = quads[i][k], b = quads[i][(k + 1) % 4];
-        if (directed[{ a, b }].size() > 1 || undirected[{ std::min(a, b), std::max(a, b) }] > 2)
-        {
-          keep[i] = 0;
-          ++out.cellsConflicting;
-          break;
-        }
-      }
-    }
-    std::vector<std::array<int, 4>> kept;
-    std::vector<int> keptTriangle;
-    for (std::size_t i = 0; i < quads.size(); ++i)
-    {
-      if (keep[i])
-      {
-        kept.push_back(quads[i]);
-        keptTriangle.push_back(out.quadTriangle[i]);
-      }
-    }
-    quads.swap(kept);
-    out.quadTriangle.swap(keptTriangle);
+    out.cellsConflicting += removeOverlappingQuads(quads, out.quadTriangle);
   }
 
 private:
@@ -454,6 +397,59 @@ private:
   Eigen::MatrixX3i rotation;
   std::vector<Complex> translation;
 };
+}
+
+int removeOverlappingQuads(std::vector<std::array<int, 4>>& quads, std::vector<int>& owner)
+{
+  if (owner.size() != quads.size())
+  {
+    throw std::invalid_argument("removeOverlappingQuads: one owner per quad expected");
+  }
+  std::map<std::array<int, 4>, int> seen;
+  std::vector<char> keep(quads.size(), 1);
+  for (std::size_t i = 0; i < quads.size(); ++i)
+  {
+    std::array<int, 4> key = quads[i];
+    std::rotate(key.begin(), std::min_element(key.begin(), key.end()), key.end());
+    if (!seen.emplace(key, static_cast<int>(i)).second)
+    {
+      keep[i] = 0; // the same cell, from another triangle holding its centre
+    }
+  }
+  std::map<std::pair<int, int>, int> directed;
+  std::map<std::pair<int, int>, int> undirected;
+  for (std::size_t i = 0; i < quads.size(); ++i)
+  {
+    for (int k = 0; k < 4 && keep[i]; ++k)
+    {
+      const int a = quads[i][k], b = quads[i][(k + 1) % 4];
+      ++directed[{ a, b }];
+      ++undirected[{ std::min(a, b), std::max(a, b) }];
+    }
+  }
+  int removed = 0;
+  std::vector<std::array<int, 4>> kept;
+  std::vector<int> keptOwner;
+  for (std::size_t i = 0; i < quads.size(); ++i)
+  {
+    for (int k = 0; k < 4 && keep[i]; ++k)
+    {
+      const int a = quads[i][k], b = quads[i][(k + 1) % 4];
+      if (directed[{ a, b }] > 1 || undirected[{ std::min(a, b), std::max(a, b) }] > 2)
+      {
+        keep[i] = 0;
+        ++removed;
+      }
+    }
+    if (keep[i])
+    {
+      kept.push_back(quads[i]);
+      keptOwner.push_back(owner[i]);
+    }
+  }
+  quads.swap(kept);
+  owner.swap(keptOwner);
+  return removed;
 }
 
 QuadMesh extractQuads(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F,

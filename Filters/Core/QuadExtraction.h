@@ -6,6 +6,8 @@
 
 #include <Eigen/Core>
 
+#include <array>
+
 #include <utility>
 #include <vector>
 
@@ -36,6 +38,16 @@ struct QuadMesh
   /// flipped triangle or the boundary on it) and were searched for by stepping towards them
   int walkFallbacks = 0;
 };
+
+/**
+ * What overlapping cells of a folded map leave behind: repeated quads (the same corners in the
+ * same cyclic order: a centre on an edge or point is held by every triangle there) are merged,
+ * and every quad that shares a directed edge with another, or lies on an edge of more than two
+ * quads, is removed, so that what is left is manifold. `owner` (one entry per quad) follows.
+ * @return the quads removed (merged repeats not counted)
+ * @throws std::invalid_argument when owner and quads differ in size
+ */
+int removeOverlappingQuads(std::vector<std::array<int, 4>>& quads, std::vector<int>& owner);
 
 /**
  * Cuts the quads out of an integer-grid map: every unit cell [a, a+1] x [b, b+1] of the grid

@@ -372,3 +372,55 @@ TEST(QuadRelaxation, RepairsInvertedQuadsAndLeavesTheRestAlone)
   }
   EXPECT_GT(far, q.V.rows() / 2);
 }
+
+TEST(QuadExtraction, OverlappingQuadsAreRemovedAndRepeatsMerged)
+{
+  // a 2 x 2 block of quads on the points 0..8 (row by row), counterclockwise
+  std::vector<std::array<int, 4>> quads = { { 0, 1, 4, 3 }, { 1, 2, 5, 4 }, { 3, 4, 7, 6 },
+    { 4, 5, 8, 7 } };
+  std::vector<int> owner = { 10, 11, 12, 13 };
+  // the first found again from another triangle, starting at another corner
+  quads.push_back({ 4, 3, 0, 1 });
+  owner.push_back(14);
+  auto clean = quads;
+  auto cleanOwner = owner;
+  EXPECT_EQ(removeOverlappingQuads(clean, cleanOwner), 0);
+  EXPECT_EQ(clean.size(), 4u) << "the repeat merged";
+  EXPECT_EQ(cleanOwner, (std::vector<int>{ 10, 11, 12, 13 }));
+
+  // a fold: a fifth quad over the last one, sharing its directed edge 4 -> 5
+  auto folded = quads;
+  auto foldedOwner = owner;
+  folded.push_back({ 4, 5, 9, 10 });
+  foldedOwner.push_back(15);
+  EXPECT_EQ(removeOverlappingQuads(folded, foldedOwner), 3)
+    << "the two quads on the directed edge 4 -> 5 and the third on the edge 4 - 5";
+  for (const auto& q : folded)
+  {
+    for (int k = 0; k < 4; ++k)
+    {
+      EXPECT_FALSE(q[k] == 4 && q[(k + 1) % 4] == 5) << "no quad left on 4 -> 5";
+    }
+  }
+  EXPECT_EQ(folded.size(), 2u);
+  // what is left is manifold
+  std::map<std::pair<int, int>, int> directed;
+  for (const auto& q : folded)
+  {
+    for (int k = 0; k < 4; ++k)
+    {
+      const int uses = ++directed[std::make_pair(q[k], q[(k + 1) % 4])];
+      EXPECT_EQ(uses, 1);
+    }
+  }
+  EXPECT_EQ(folded.size(), foldedOwner.size());
+
+  // three quads on one (undirected) edge
+  std::vector<std::array<int, 4>> fan = { { 0, 1, 2, 3 }, { 1, 0, 4, 5 }, { 0, 1, 6, 7 } };
+  std::vector<int> fanOwner = { 0, 1, 2 };
+  EXPECT_EQ(removeOverlappingQuads(fan, fanOwner), 3);
+  EXPECT_TRUE(fan.empty());
+
+  std::vector<int> wrongSize = { 1 };
+  EXPECT_THROW(removeOverlappingQuads(fan, wrongSize), std::invalid_argument);
+}
