@@ -474,6 +474,28 @@ QuadMesh extractQuads(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F,
   return out;
 }
 
+namespace
+{
+/// The smallest scaled Jacobian over a quad's corners, against the quad's own normal (its
+/// diagonals' cross product); 0 at a corner with a zero-length edge.
+double quadScaledJacobian(const Eigen::MatrixX3d& V, const Eigen::MatrixX4i& Q, int i)
+{
+  const Eigen::Vector3d n = (Eigen::Vector3d(V.row(Q(i, 2)) - V.row(Q(i, 0))))
+                              .cross(Eigen::Vector3d(V.row(Q(i, 3)) - V.row(Q(i, 1))))
+                              .normalized();
+  double smallest = 1.0;
+  for (int k = 0; k < 4; ++k)
+  {
+    const Eigen::Vector3d next = V.row(Q(i, (k + 1) % 4)) - V.row(Q(i, k));
+    const Eigen::Vector3d prev = V.row(Q(i, (k + 3) % 4)) - V.row(Q(i, k));
+    const double ln = next.norm(), lp = prev.norm();
+    const double sj = ln > 0 && lp > 0 ? next.cross(prev).dot(n) / (ln * lp) : 0.0;
+    smallest = std::min(smallest, std::isfinite(sj) ? sj : 0.0);
+  }
+  return smallest;
+}
+}
+
 QuadQuality measureQuads(const Eigen::MatrixX3d& V, const Eigen::MatrixX4i& Q)
 {
   QuadQuality m;
@@ -494,10 +516,6 @@ QuadQuality measureQuads(const Eigen::MatrixX3d& V, const Eigen::MatrixX4i& Q)
     std::array<int, 4> sorted = q;
     std::sort(sorted.begin(), sorted.end());
     m.quads += std::adjacent_find(sorted.begin(), sorted.end()) == sorted.end();
-    const Eigen::Vector3d n =
-      (Eigen::Vector3d(V.row(q[2]) - V.row(q[0])).cross(Eigen::Vector3d(V.row(q[3]) - V.row(q[1]))))
-        .normalized();
-    double smallest = 1.0;
     for (int k = 0; k < 4; ++k)
     {
       usedVertex[q[k]] = 1;
@@ -511,13 +529,12 @@ QuadQuality measureQuads(const Eigen::MatrixX3d& V, const Eigen::MatrixX4i& Q)
       const Eigen::Vector3d next = V.row(q[(k + 1) % 4]) - V.row(q[k]);
       const Eigen::Vector3d prev = V.row(q[(k + 3) % 4]) - V.row(q[k]);
       const double ln = next.norm(), lp = prev.norm();
-      const double sj = ln > 0 && lp > 0 ? next.cross(prev).dot(n) / (ln * lp) : 0.0;
-      smallest = std::min(smallest, std::isfinite(sj) ? sj : 0.0);
       if (ln > 0 && lp > 0)
       {
         angles.push_back(std::acos(std::clamp(next.dot(prev) / (ln * lp), -1.0, 1.0)));
       }
     }
+    const double smallest = quadScaledJacobian(V, Q, i);
     m.scaledJacobian[i] = smallest;
     m.minScaledJacobian = std::min(m.minScaledJacobian, smallest);
     jacobianSum += smallest;
@@ -933,11 +950,10 @@ QuadRelaxReport relaxQuads(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F,
 
 int countInvertedQuads(const Eigen::MatrixX3d& V, const Eigen::MatrixX4i& Q)
 {
-  const QuadQuality q = measureQuads(V, Q);
   int count = 0;
-  for (Eigen::Index i = 0; i < q.scaledJacobian.size(); ++i)
+  for (int i = 0; i < static_cast<int>(Q.rows()); ++i)
   {
-    count += !(q.scaledJacobian[i] > 0);
+    count += !(quadScaledJacobian(V, Q, i) > 0);
   }
   return count;
 }
@@ -947,11 +963,10 @@ std::pair<int, int> repairInvertedQuads(const Eigen::MatrixX3d& V, const Eigen::
 {
   const int nV = static_cast<int>(mesh.V.rows());
   auto inverted = [&]() {
-    const QuadQuality q = measureQuads(mesh.V, mesh.Q);
     std::vector<int> bad;
-    for (int i = 0; i < q.faces; ++i)
+    for (int i = 0; i < static_cast<int>(mesh.Q.rows()); ++i)
     {
-      if (!(q.scaledJacobian[i] > 0))
+      if (!(quadScaledJacobian(mesh.V, mesh.Q, i) > 0))
       {
         bad.push_back(i);
       }
