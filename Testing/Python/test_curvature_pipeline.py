@@ -115,6 +115,32 @@ class CurvaturePipeline(unittest.TestCase):
         flipped = out.GetFieldData().GetArray("FlippedTriangles")
         self.assertEqual(flipped.GetValue(2), 0)
 
+    def test_quads_after_the_chain(self):
+        # The fifth stage from Python: an all-quad mesh with the sphere's Euler characteristic,
+        # eight valence-3 vertices, and the properties added for the quads' quality.
+        from quadcover import vtkQuadCoverSolver, vtkQuadExtractor
+        matching = self.matchings_of("sphere")
+        self.assertTrue(matching.GetLengthScaledCost())
+        solver = vtkQuadCoverSolver()
+        solver.SetInputConnection(matching.GetOutputPort())
+        solver.SetTargetQuadCount(800)
+        extractor = vtkQuadExtractor()
+        extractor.SetInputConnection(solver.GetOutputPort())
+        self.assertTrue(extractor.GetRepairInvertedQuads())
+        self.assertEqual(extractor.GetRelaxationIterations(), 0)
+        extractor.SetRelaxationIterations(5)
+        extractor.Update()
+        out = extractor.GetOutput()
+        self.assertGreater(out.GetNumberOfCells(), 600)
+        for c in range(out.GetNumberOfCells()):
+            self.assertEqual(out.GetCell(c).GetNumberOfPoints(), 4)
+        fd = out.GetFieldData()
+        self.assertEqual(fd.GetArray("EulerCharacteristic").GetValue(0), 2)
+        self.assertEqual(fd.GetArray("InvertedQuads").GetValue(1), 0)
+        valence = numpy_support.vtk_to_numpy(out.GetPointData().GetArray("Valence"))
+        self.assertEqual(int((valence == 3).sum()), 8)
+        self.assertEqual(int((valence != 3).sum()), int((valence == 4).sum()))
+
     def test_empty_input_is_an_error_not_a_crash(self):
         f = vtkCurvatureFrames()
         f.SetInputData(vtk.vtkPolyData())
