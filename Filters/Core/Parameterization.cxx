@@ -1365,9 +1365,6 @@ Parameterization computeParameterization(const Eigen::MatrixX3d& V, const Eigen:
     const Eigen::VectorXd before = x;
     const std::vector<int> flippedBefore = flipped, wrongBefore = wrong;
     const std::size_t defectsBefore = flipped.size() + wrong.size();
-    // Three attempts: the fans wound the wrong way are laid out again (cones first, then in
-    // later attempts every point listed) and held while their surroundings untangle; then
-    // everything untangles, with those fans free again or (keepFans) still held.
     // The state after the first attempt has laid out and held its fans, before everything
     // untangles: where the held run (below) starts from.
     struct Snapshot
@@ -1387,48 +1384,43 @@ Parameterization computeParameterization(const Eigen::MatrixX3d& V, const Eigen:
         fl = flippedFaces(uvOf(xr));
       }
     };
-    auto repair = [&](
-                    Eigen::VectorXd& xr, std::vector<int>& fl, std::vector<int>& wr, int& regions) {
-      regions = 0;
-      xr = before;
-      fl = flippedBefore;
-      wr = wrongBefore;
-      Eigen::VectorXd xs = P * xr;
-      for (int attempt = 0; attempt < 3 && (!fl.empty() || !wr.empty()); ++attempt)
+    // Three attempts: the fans wound the wrong way are laid out again (cones first, then in
+    // later attempts every point listed) and held while their surroundings untangle; then
+    // everything untangles, those fans free again.
+    Eigen::VectorXd xs = P * x;
+    for (int attempt = 0; attempt < 3 && (!flipped.empty() || !wrong.empty()); ++attempt)
+    {
+      // cones first: a point wound twice is usually the neighbour of a cone closed up into
+      // 90 degrees, and comes right with it
+      std::stable_sort(wrong.begin(), wrong.end(),
+        [&](int a, int b) { return (ft.layerShift[a] != 0) > (ft.layerShift[b] != 0); });
+      std::vector<char> frozen(xs.size(), 0);
+      for (const int p : wrong)
       {
-        // cones first: a point wound twice is usually the neighbour of a cone closed up into
-        // 90 degrees, and comes right with it
-        std::stable_sort(wr.begin(), wr.end(),
-          [&](int a, int b) { return (ft.layerShift[a] != 0) > (ft.layerShift[b] != 0); });
-        std::vector<char> frozen(xs.size(), 0);
-        for (const int p : wr)
+        if (ft.layerShift[p] != 0 || attempt > 0)
         {
-          if (ft.layerShift[p] != 0 || attempt > 0)
-          {
-            layOut(p, xs, frozen);
-          }
+          layOut(p, xs, frozen);
         }
-        xr.head(numReal) = xs.head(numReal);
-        // the new fans held first, so that their winding stays, then everything
-        if (!wr.empty())
-        {
-          fl = flippedFaces(uvOf(xr));
-          for (int rings = 2; rings <= 8 && !fl.empty(); rings *= 2)
-          {
-            untangler.run(topo, F, fl, rings, options.maxUntangleRounds, xs, frozen);
-            xr.head(numReal) = xs.head(numReal);
-            fl = flippedFaces(uvOf(xr));
-          }
-        }
-        if (attempt == 0)
-        {
-          firstHeld = { xs, xr, fl, frozen, true };
-        }
-        untangleAll(xs, xr, fl, std::vector<char>(), regions);
-        wr = wrongWindings(uvOf(xr));
       }
-    };
-    repair(x, flipped, wrong, out.untangleRegions);
+      x.head(numReal) = xs.head(numReal);
+      // the new fans held first, so that their winding stays, then everything
+      if (!wrong.empty())
+      {
+        flipped = flippedFaces(uvOf(x));
+        for (int rings = 2; rings <= 8 && !flipped.empty(); rings *= 2)
+        {
+          untangler.run(topo, F, flipped, rings, options.maxUntangleRounds, xs, frozen);
+          x.head(numReal) = xs.head(numReal);
+          flipped = flippedFaces(uvOf(x));
+        }
+      }
+      if (attempt == 0)
+      {
+        firstHeld = { xs, x, flipped, frozen, true };
+      }
+      untangleAll(xs, x, flipped, std::vector<char>(), out.untangleRegions);
+      wrong = wrongWindings(uvOf(x));
+    }
     const std::size_t left = flipped.size() + wrong.size();
     // (with no cone among the fans wound the wrong way nothing would be held: the held run would
     // repeat the first attempt)
