@@ -106,7 +106,7 @@ CurvatureField computeCurvatureField(const Eigen::MatrixX3d& V, const Eigen::Mat
   {
     throw std::invalid_argument("computeCurvatureField: non-finite point coordinates");
   }
-  if (!(options.radius >= 0.0) || !std::isfinite(options.radius))
+  if (!(options.neighborhoodRadius >= 0.0) || !std::isfinite(options.neighborhoodRadius))
   {
     throw std::invalid_argument("computeCurvatureField: radius must be finite and >= 0");
   }
@@ -116,7 +116,7 @@ CurvatureField computeCurvatureField(const Eigen::MatrixX3d& V, const Eigen::Mat
   out.normals = computeFaceNormals(V, F, topo, &degenerate);
   out.degenerateFaces = static_cast<int>(std::count(degenerate.begin(), degenerate.end(), 1));
   out.medianEdgeLength = medianEdgeLength(V, topo);
-  out.radius = options.radius * out.medianEdgeLength;
+  out.curvatureRadius = options.neighborhoodRadius * out.medianEdgeLength;
   const Eigen::MatrixX3d& N = out.normals;
 
   // Per-edge contribution beta |e| e e^T, beta > 0 where the edge is convex.
@@ -175,10 +175,10 @@ CurvatureField computeCurvatureField(const Eigen::MatrixX3d& V, const Eigen::Mat
   out.frameU.resize(nf, 3);
   out.frameV.resize(nf, 3);
   out.weight.resize(nf);
-  const double r2 = out.radius * out.radius;
-  const int threads = options.numThreads > 0 ? options.numThreads : defaultThreadCount();
+  const double r2 = out.curvatureRadius * out.curvatureRadius;
+  const int threads = options.numberOfThreads > 0 ? options.numberOfThreads : defaultThreadCount();
   const size_t cap =
-    options.maxNeighborhood > 0 ? static_cast<size_t>(options.maxNeighborhood) : size_t(-1);
+    options.maximumNeighborhood > 0 ? static_cast<size_t>(options.maximumNeighborhood) : size_t(-1);
   std::vector<int> truncated(std::max(1, threads), 0);
 
   parallelFor(nf, threads, [&](int begin, int end, int thread) {

@@ -16,12 +16,12 @@ struct CurvatureOptions
   /// Radius of the averaging neighbourhood in multiples of the median edge length (the median,
   /// not the mean, so that a few huge or tiny triangles do not change the scale). 0 uses each
   /// triangle's own three edges only.
-  double radius = 2.0;
+  double neighborhoodRadius = 2.0;
   /// At most this many triangles are summed per neighbourhood (a guard against pathological
   /// geometry, e.g. thousands of triangles crowded into one point); 0 means no limit.
-  int maxNeighborhood = 8192;
+  int maximumNeighborhood = 8192;
   /// Worker threads (0: defaultThreadCount()). Results do not depend on it.
-  int numThreads = 0;
+  int numberOfThreads = 0;
 };
 
 /// Per-triangle curvature and frames. Curvatures are positive where the surface bends away from
@@ -36,10 +36,10 @@ struct CurvatureField
   Eigen::MatrixX3d frameV;     ///< #F x 3 normal x frameU
   Eigen::VectorXd weight;      ///< #F omega = |k1-k2| / sqrt(k1^2+k2^2), 0 where both vanish
   double medianEdgeLength = 0.0;
-  double radius = 0.0;            ///< the neighbourhood radius used, world units
+  double curvatureRadius = 0.0;   ///< the neighbourhood radius used, world units
   int degenerateFaces = 0;        ///< zero-area triangles (they take the neighbourhood's normal)
   int zeroFrames = 0;             ///< triangles left with zero frames: no normal could be found
-  int truncatedNeighborhoods = 0; ///< neighbourhoods cut at maxNeighborhood triangles
+  int truncatedNeighborhoods = 0; ///< neighbourhoods cut at maximumNeighborhood triangles
 };
 
 /// Unit normals of the triangles. A triangle is degenerate when twice its area is at most 1e-12

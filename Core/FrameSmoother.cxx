@@ -200,7 +200,7 @@ SmootherResult smoothFrames(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F
     history.assign(1, E);
     iterations = 0;
     Eigen::VectorXd grad(n);
-    for (int it = 0; it < options.maxIterations && n > 0; ++it)
+    for (int it = 0; it < options.maximumNumberOfIterations && n > 0; ++it)
     {
       grad.setZero();
       for (const Link& l : P.links)
@@ -248,7 +248,7 @@ SmootherResult smoothFrames(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F
       ++iterations;
       alpha = next;
       history.push_back(En);
-      const bool done = E - En <= options.tolerance * std::max(E, 1e-300);
+      const bool done = E - En <= options.convergenceTolerance * std::max(E, 1e-300);
       E = En;
       if (done)
       {

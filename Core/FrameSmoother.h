@@ -16,9 +16,9 @@ struct SmootherOptions
 {
   /// lambda in [0, 1]: E = lambda E_smooth + (1 - lambda) E_align.
   double smoothingWeight = 0.95;
-  int maxIterations = 200;
+  int maximumNumberOfIterations = 200;
   /// Stop when an iteration lowers the energy by less than this fraction.
-  double tolerance = 1e-7;
+  double convergenceTolerance = 1e-7;
   /// Hold the frames of triangles along sharp edges (dihedral angle above featureAngle degrees,
   /// the angle between the two normals as vtkFeatureEdges measures it) aligned to that edge.
   /// 60 rather than vtkFeatureEdges' 30: coarse or noisy scans have many 30-60 degree edges

@@ -282,13 +282,13 @@ BranchPointReport optimizeBranchPoints(const Eigen::MatrixX3i& F, const MeshTopo
   const BranchPointOptions& options)
 {
   const int nv = topo.numVertices;
-  const double lambda = options.weight;
+  const double lambda = options.branchPointWeight;
   const Eigen::VectorXd phi = vectorAngles(geometry.bases, frameU);
   BranchPointReport report;
   report.before = topology.branchPoints;
   report.singularitiesBefore = topology.singularities;
   report.costBefore = lambda * topology.singularities +
-    scaledMatchingCost(F, topo, geometry, topology, options.lengthScaled);
+    scaledMatchingCost(F, topo, geometry, topology, options.lengthScaledCost);
   const std::vector<std::vector<Step>> steps = pathSteps(F, topo);
   Eigen::MatrixX3i& M = topology.matching;
   std::vector<double> dist(nv, 0.0);
@@ -367,7 +367,7 @@ BranchPointReport optimizeBranchPoints(const Eigen::MatrixX3i& F, const MeshTopo
         queue.push({ 0.0, a });
         int visited = 0;
         int target = -1;
-        while (!queue.empty() && visited < options.maxVisited && target < 0)
+        while (!queue.empty() && visited < options.maximumSearchSize && target < 0)
         {
           const auto [d, u] = queue.top();
           queue.pop();
@@ -386,7 +386,7 @@ BranchPointReport optimizeBranchPoints(const Eigen::MatrixX3i& F, const MeshTopo
           {
             const Step& s = steps[u][i];
             double added = 0.0;
-            if (q[s.to] != 0 || !stepCost(geometry, phi, M, s, -1, added, options.lengthScaled))
+            if (q[s.to] != 0 || !stepCost(geometry, phi, M, s, -1, added, options.lengthScaledCost))
             {
               continue;
             }
@@ -420,7 +420,7 @@ BranchPointReport optimizeBranchPoints(const Eigen::MatrixX3i& F, const MeshTopo
     report.after = topology.branchPoints;
     report.singularitiesAfter = topology.singularities;
     report.costAfter = lambda * topology.singularities +
-      scaledMatchingCost(F, topo, geometry, topology, options.lengthScaled);
+      scaledMatchingCost(F, topo, geometry, topology, options.lengthScaledCost);
     return report;
   }
 
@@ -537,7 +537,7 @@ BranchPointReport optimizeBranchPoints(const Eigen::MatrixX3i& F, const MeshTopo
 
   // Work in quarter turns: q = 4 index. Changing the matchings along a path from a to b by
   // delta adds delta to q(a) and takes it from q(b).
-  for (int pass = 0; pass < options.maxPasses; ++pass)
+  for (int pass = 0; pass < options.maximumPasses; ++pass)
   {
     int changed = 0;
     for (int a = 0; a < nv; ++a)
@@ -557,7 +557,7 @@ BranchPointReport optimizeBranchPoints(const Eigen::MatrixX3i& F, const MeshTopo
       queue.push({ 0.0, a });
       int visited = 0, best = -1;
       double bestGain = 0.0;
-      while (!queue.empty() && visited < options.maxVisited)
+      while (!queue.empty() && visited < options.maximumSearchSize)
       {
         const auto [d, u] = queue.top();
         queue.pop();
@@ -579,7 +579,7 @@ BranchPointReport optimizeBranchPoints(const Eigen::MatrixX3i& F, const MeshTopo
             {
               const Step& s = steps[cameFrom[x]][stepIndex[x]];
               pathCost += (deviationWith(s, delta) - deviationWith(s, 0)) *
-                edgeWeight(geometry, s, options.lengthScaled);
+                edgeWeight(geometry, s, options.lengthScaledCost);
             }
             const double gain = lambda * removed - pathCost;
             if (gain > bestGain + 1e-12)
@@ -597,7 +597,7 @@ BranchPointReport optimizeBranchPoints(const Eigen::MatrixX3i& F, const MeshTopo
           // the path: not if its residual would wrap past +-pi (possible for delta = +-2, or on
           // an edge an earlier path changed), which would put a whole turn on a point between.
           double added = 0.0;
-          if (!stepCost(geometry, phi, M, s, delta, added, options.lengthScaled))
+          if (!stepCost(geometry, phi, M, s, delta, added, options.lengthScaledCost))
           {
             continue;
           }
@@ -641,7 +641,7 @@ BranchPointReport optimizeBranchPoints(const Eigen::MatrixX3i& F, const MeshTopo
   report.after = topology.branchPoints;
   report.singularitiesAfter = topology.singularities;
   report.costAfter = lambda * topology.singularities +
-    scaledMatchingCost(F, topo, geometry, topology, options.lengthScaled);
+    scaledMatchingCost(F, topo, geometry, topology, options.lengthScaledCost);
   return report;
 }
 

@@ -67,20 +67,20 @@ struct BranchPointOptions
 {
   /// lambda of the cost lambda * (number of singular inner points) + sum of matching deviations
   /// (radians); a path is changed only when it lowers that cost.
-  double weight = 4.0;
+  double branchPointWeight = 4.0;
   /// Each edge's deviation counts in proportion to its length over FrameGeometry's
   /// referenceLength, so that the cost of a path is about the same however finely the surface
   /// is meshed (merging two singularities bends the field over their distance, not over a
   /// number of edges). Off: every edge counts once, as in the paper, and a finer mesh keeps
   /// more singularities.
-  bool lengthScaled = true;
+  bool lengthScaledCost = true;
   /// Frames within this many degrees of a boundary edge follow it (as the solver's
   /// boundaryTolerance puts such edges on grid lines): used to undo merges that would leave a
   /// tube's loops on different frame families.
   double boundaryTolerance = 10.0;
   /// Vertices a search may visit from one branch point (a guard on very large meshes).
-  int maxVisited = 20000;
-  int maxPasses = 10;
+  int maximumSearchSize = 20000;
+  int maximumPasses = 10;
   /// Inner singularities of index >= 1/2 are split first into quarters placed at least this
   /// many edges apart (and from other singularities); 0 leaves them alone.
   int splitDistance = 4;

@@ -292,7 +292,7 @@ struct Untangler
   const Eigen::SparseMatrix<double, Eigen::RowMajor>& Dr; // rows of D: 4 per triangle
   const SparseMatrix& Dc;                                 // the same, by column
   const Eigen::VectorXd& sqrtArea;                        // per triangle, 0 if skipped
-  double gridScale;                                       // h: J relative to the unit cell
+  double edgeLength;                                      // h: J relative to the unit cell
   int numReal;
   double theta = 0.25;
 
@@ -306,7 +306,7 @@ struct Untangler
       {
         value += it.value() * x[it.col()];
       }
-      J(i / 2, i % 2) = value * gridScale / sqrtArea[f];
+      J(i / 2, i % 2) = value * edgeLength / sqrtArea[f];
     }
     return J;
   }
@@ -335,7 +335,7 @@ struct Untangler
           theta * (2.0 * det / chi - (det * det + 1) * chiPrime / (chi * chi)) * dDet;
         for (int i = 0; i < 4; ++i)
         {
-          const double g = area * dE(i / 2, i % 2) * gridScale / sqrtArea[f];
+          const double g = area * dE(i / 2, i % 2) * edgeLength / sqrtArea[f];
           for (Eigen::SparseMatrix<double, Eigen::RowMajor>::InnerIterator it(Dr, 4 * f + i); it;
                ++it)
           {
@@ -547,7 +547,7 @@ struct Untangler
 };
 }
 
-double gridSizeForQuadCount(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F, double quads)
+double edgeLengthForQuadCount(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F, double quads)
 {
   if (!(quads > 0))
   {
@@ -567,16 +567,20 @@ Parameterization computeParameterization(const Eigen::MatrixX3d& V, const Eigen:
   {
     throw std::invalid_argument("computeParameterization: sizes do not match");
   }
-  if (!(options.gridSize > 0) || !std::isfinite(options.gridSize))
+  const bool fromQuadCount = options.targetEdgeLength == 0.0;
+  if (!(options.targetEdgeLength >= 0) || !std::isfinite(options.targetEdgeLength) ||
+    (fromQuadCount && !(options.targetQuadCount > 0 && std::isfinite(options.targetQuadCount))))
   {
-    throw std::invalid_argument("computeParameterization: the grid size must be positive");
+    throw std::invalid_argument("computeParameterization: the target edge length must be positive "
+                                "or 0 with a positive target quad count");
   }
   if (!topo.isManifold() || !topo.isOriented())
   {
     throw std::invalid_argument("computeParameterization: " + topo.describeDefects());
   }
   Parameterization out;
-  out.gridSize = options.gridSize;
+  out.edgeLength = fromQuadCount ? edgeLengthForQuadCount(V, F, options.targetQuadCount)
+                                 : options.targetEdgeLength;
 #ifdef QUADCOVER_HAVE_CHOLMOD
   out.solver = "CHOLMOD supernodal LLT";
 #else
@@ -723,7 +727,7 @@ Parameterization computeParameterization(const Eigen::MatrixX3d& V, const Eigen:
   // Boundary edges along a combed frame direction: the other coordinate is an integer line.
   const Eigen::VectorXd theta = vectorAngles(geometry.bases, frameU);
   std::vector<char> onLine(2 * static_cast<std::size_t>(nS), 0); // u or v of a sector on a line
-  if (options.alignBoundary)
+  if (options.alignToBoundary)
   {
     const double tolerance = options.boundaryTolerance * Pi / 180.0;
     for (int e = 0; e < topo.numEdges(); ++e)
@@ -873,7 +877,7 @@ Parameterization computeParameterization(const Eigen::MatrixX3d& V, const Eigen:
   }
 
   // ---- the energy: 4 rows per triangle, sqrt(A) (grad u - U'/h, grad v - V'/h) ----
-  const double scale = 1.0 / options.gridSize;
+  const double scale = 1.0 / out.edgeLength;
   double totalArea = 0.0;
   Eigen::VectorXd faceArea = Eigen::VectorXd::Zero(nF);
   std::vector<Eigen::Triplet<double>> triplets;
@@ -997,8 +1001,8 @@ Parameterization computeParameterization(const Eigen::MatrixX3d& V, const Eigen:
 
   // ---- the continuous minimizer ----
   auto start = std::chrono::steady_clock::now();
-  const bool round = options.rounding != Rounding::None && numInteger > 0;
-  const bool greedy = round && options.rounding == Rounding::Greedy;
+  const bool round = options.roundingMode != RoundingMode::None && numInteger > 0;
+  const bool greedy = round && options.roundingMode == RoundingMode::Greedy;
   SpdSolver<double> solver;
   Eigen::VectorXd x = Eigen::VectorXd::Zero(n);
   Eigen::MatrixXd S; // the integer block of H^-1 (Greedy)
@@ -1027,10 +1031,10 @@ Parameterization computeParameterization(const Eigen::MatrixX3d& V, const Eigen:
     }
   }
   out.solveSeconds.push_back(seconds(start));
-  if (options.targetQuads > 0 && n > 0)
+  if (fromQuadCount && n > 0)
   {
     // The constraints are homogeneous, so the minimizer is linear in the right-hand side
-    // (1 / gridSize); H and S do not depend on it.
+    // (1 / edgeLength); H and S do not depend on it.
     const Eigen::MatrixX2d uv = uvOf(x);
     double cells = 0.0;
     for (int f = 0; f < nF; ++f)
@@ -1043,11 +1047,11 @@ Parameterization computeParameterization(const Eigen::MatrixX3d& V, const Eigen:
     if (cells > 0 && std::isfinite(cells))
     {
       // bounded: folds cancel area, and a badly folded map must not ask for 100x the quads
-      const double factor = std::clamp(std::sqrt(options.targetQuads / cells), 0.5, 4.0);
+      const double factor = std::clamp(std::sqrt(options.targetQuadCount / cells), 0.5, 4.0);
       x *= factor;
       rhs *= factor;
       energyNorm *= factor * factor;
-      out.gridSize /= factor;
+      out.edgeLength /= factor;
     }
   }
   out.energyContinuous = energyOf(x);
@@ -1303,7 +1307,7 @@ Parameterization computeParameterization(const Eigen::MatrixX3d& V, const Eigen:
       direction += stretch * std::atan2(a.cross(b).norm(), a.dot(b));
       // place the face's other ring point (corner k + 2) in this face's chart
       const int ring = out.cornerSector[3 * f + (k + 2) % 3];
-      const double radius = b.norm() / out.gridSize;
+      const double radius = b.norm() / out.edgeLength;
       const Eigen::Vector2d target(value(cone, 0) + radius * std::cos(direction),
         value(cone, 1) + radius * std::sin(direction));
       int sym[2] = { -1, -1 };
@@ -1350,7 +1354,7 @@ Parameterization computeParameterization(const Eigen::MatrixX3d& V, const Eigen:
     }
   };
   std::vector<int> wrong = wrongWindings(uvOf(x));
-  if ((!flipped.empty() || !wrong.empty()) && options.maxUntangleRounds > 0)
+  if ((!flipped.empty() || !wrong.empty()) && options.maximumUntangleRounds > 0)
   {
     const auto started = std::chrono::steady_clock::now();
     const Eigen::SparseMatrix<double, Eigen::RowMajor> Dr = D;
@@ -1360,7 +1364,7 @@ Parameterization computeParameterization(const Eigen::MatrixX3d& V, const Eigen:
       sqrtArea[f] = std::sqrt(std::max(0.0, faceArea[f]));
     }
     // in symbols; only the real ones move, and they are the real columns
-    const Untangler untangler{ Dr, D, sqrtArea, out.gridSize, numReal };
+    const Untangler untangler{ Dr, D, sqrtArea, out.edgeLength, numReal };
     // kept in case the repair leaves more flipped triangles and wrong fans than it found
     const Eigen::VectorXd before = x;
     const std::vector<int> flippedBefore = flipped, wrongBefore = wrong;
@@ -1379,7 +1383,7 @@ Parameterization computeParameterization(const Eigen::MatrixX3d& V, const Eigen:
       for (int rings = 2; rings <= 16 && !fl.empty(); rings *= 2)
       {
         ++regions;
-        untangler.run(topo, F, fl, rings, options.maxUntangleRounds, xs, frozen);
+        untangler.run(topo, F, fl, rings, options.maximumUntangleRounds, xs, frozen);
         xr.head(numReal) = xs.head(numReal);
         fl = flippedFaces(uvOf(xr));
       }
@@ -1409,7 +1413,7 @@ Parameterization computeParameterization(const Eigen::MatrixX3d& V, const Eigen:
         flipped = flippedFaces(uvOf(x));
         for (int rings = 2; rings <= 8 && !flipped.empty(); rings *= 2)
         {
-          untangler.run(topo, F, flipped, rings, options.maxUntangleRounds, xs, frozen);
+          untangler.run(topo, F, flipped, rings, options.maximumUntangleRounds, xs, frozen);
           x.head(numReal) = xs.head(numReal);
           flipped = flippedFaces(uvOf(x));
         }

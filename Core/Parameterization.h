@@ -16,7 +16,7 @@
 namespace quadcover
 {
 
-enum class Rounding
+enum class RoundingMode
 {
   None,   ///< the continuous minimizer (translations and branch points not integer)
   Simple, ///< round every integer unknown of the continuous minimizer at once, then re-solve
@@ -25,34 +25,35 @@ enum class Rounding
 
 struct ParameterizationOptions
 {
-  /// World length of one parameter unit (the quads' edge length); must be positive.
-  double gridSize = 0.0;
-  /// When positive, the grid size is corrected after the continuous solve so that the map
-  /// covers this many unit cells (its (u, v) area): a field that is far from integrable is
-  /// fitted by a map with shorter gradients than 1/gridSize, which would give fewer and larger
-  /// quads than gridSizeForQuadCount promised. The map is linear in 1/gridSize, so the
-  /// correction costs no solve; it is bounded to a factor of 4 either way in the number of
-  /// quads (folds cancel area). The grid size used is Parameterization::gridSize.
-  double targetQuads = 0.0;
+  /// World length of one grid unit, the quads' edge length; 0 chooses it from targetQuadCount.
+  double targetEdgeLength = 0.0;
+  /// About how many quads, when targetEdgeLength is 0: the edge length starts at
+  /// edgeLengthForQuadCount and is corrected after the continuous solve so that the map covers
+  /// this many unit cells (its (u, v) area). A field that is far from integrable is fitted by a
+  /// map with shorter gradients than 1/edgeLength, which would give fewer and larger quads than
+  /// the area promised. The map is linear in 1/edgeLength, so the correction costs no solve; it
+  /// is bounded to a factor of 4 either way in the number of quads (folds cancel area). The
+  /// edge length used is Parameterization::edgeLength.
+  double targetQuadCount = 3000;
   /// Branch points on grid points (integer unknowns), so extraction gives only quads. Without
   /// it only the seam translations are integer and a branch point may lie at the middle of a
   /// grid cell or edge (Theorem 2).
   bool pureQuads = true;
-  Rounding rounding = Rounding::Greedy;
+  RoundingMode roundingMode = RoundingMode::Greedy;
   /// Boundary edges along a frame direction (within boundaryTolerance degrees) lie on an integer
   /// grid line (constant u or v), so quads end cleanly at the border.
-  bool alignBoundary = true;
+  bool alignToBoundary = true;
   double boundaryTolerance = 10.0;
   /// After rounding, triangles whose (u, v) image is flipped are untangled: the real unknowns
   /// of their neighbourhood (2 rings, then 4, 8, 16) move to minimize a foldover-free distortion
   /// energy, in at most this many rounds per neighbourhood; 0 leaves flips as they are.
-  int maxUntangleRounds = 30;
+  int maximumUntangleRounds = 30;
 };
 
 /**
  * The map and what it took. Complex notation: z = u + i v, J = multiplication by i (a quarter
  * turn). Across edge k of face f, on the cut, the neighbour g's values at the two shared points
- * are z_g = i^r z_f + t with r = combedMatching(f,k) and t in Z^2 once rounded (Rounding::None
+ * are z_g = i^r z_f + t with r = combedMatching(f,k) and t in Z^2 once rounded (RoundingMode::None
  * leaves t real); off the cut z_g = z_f.
  */
 struct Parameterization
@@ -69,8 +70,9 @@ struct Parameterization
   std::vector<int> cornerSector;
 
   // ---- figures ----
-  /// the grid size used: options.gridSize, or as targetQuads corrected it
-  double gridSize = 0.0;
+  /// the edge length used (world length of one grid unit): options.targetEdgeLength, or the one
+  /// targetQuadCount gave
+  double edgeLength = 0.0;
   int branchPoints = 0;         ///< inner points with a non-zero layer shift
   int branchPointsOnGrid = 0;   ///< of those, mapped to integer (u, v) within 1e-6
   int seamEdges = 0;            ///< cut edges
@@ -110,23 +112,24 @@ struct Parameterization
  * and the boundary lines are linear constraints with integer coefficients; they are eliminated
  * so that every remaining integer unknown (translations, branch points, boundary lines) keeps
  * every dependent one integer. The energy sum_f A_f |grad phi - K_f|^2 with K_f the combed
- * frame (X_c, X_{c+1}) / gridSize is minimized (one sparse Cholesky), the integer unknowns are
- * rounded (Rounding), the rest is solved again with the integers fixed, and flipped triangles
- * are untangled locally (maxUntangleRounds).
+ * frame (X_c, X_{c+1}) / edgeLength is minimized (one sparse Cholesky), the integer unknowns are
+ * rounded (roundingMode), the rest is solved again with the integers fixed, and flipped triangles
+ * are untangled locally (maximumUntangleRounds).
  *
  * @param[in] geometry computeFrameGeometry(V, F, topo)
  * @param[in] frameU   #F x 3 tangent frame directions (four-fold symmetric)
  * @param[in] matching #F x 3 in the convention of FrameTopology (vtkMatchingBuilder's Matching)
  * @throws std::invalid_argument on sizes that do not match, a non-manifold or misoriented
- *         surface, matchings that are not inverse across an edge, or gridSize <= 0
+ *         surface, matchings that are not inverse across an edge, a negative target edge
+ *         length, or a target edge length of 0 without a positive target quad count
  * @throws std::runtime_error when the sparse factorization fails
  */
 Parameterization computeParameterization(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F,
   const MeshTopology& topo, const FrameGeometry& geometry, const Eigen::MatrixX3d& frameU,
   const Eigen::MatrixX3i& matching, const ParameterizationOptions& options);
 
-/// The grid size that gives about `quads` quads: sqrt(total area / quads).
-double gridSizeForQuadCount(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F, double quads);
+/// The edge length that gives about `quads` quads: sqrt(total area / quads).
+double edgeLengthForQuadCount(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F, double quads);
 
 }
 

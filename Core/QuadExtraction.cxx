@@ -123,7 +123,7 @@ public:
   bool walkLine(int f, Complex p, Complex q, Location& at) const
   {
     int entered = -1; // the edge of f we came in through
-    for (int step = 0; step < options.maxWalk; ++step)
+    for (int step = 0; step < options.maximumWalk; ++step)
     {
       if (flipped[f])
       {
@@ -182,7 +182,7 @@ public:
   bool walk(int f, Complex q, Location& at) const
   {
     unsigned long long random = 0x9E3779B97F4A7C15ULL;
-    for (int step = 0; step < options.maxWalk; ++step)
+    for (int step = 0; step < options.maximumWalk; ++step)
     {
       if (flipped[f])
       {
@@ -668,7 +668,7 @@ QuadRelaxReport relaxQuads(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F,
     throw std::invalid_argument("relaxQuads: the step must be in (0, 1]");
   }
   QuadRelaxReport report;
-  if (options.iterations <= 0 || nQ == 0)
+  if (options.relaxationIterations <= 0 || nQ == 0)
   {
     return report;
   }
@@ -895,7 +895,7 @@ QuadRelaxReport relaxQuads(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F,
     return r;
   };
 
-  for (int iteration = 0; iteration < options.iterations; ++iteration)
+  for (int iteration = 0; iteration < options.relaxationIterations; ++iteration)
   {
     for (int v = 0; v < nV; ++v)
     {
@@ -978,7 +978,7 @@ std::pair<int, int> repairInvertedQuads(const Eigen::MatrixX3d& V, const Eigen::
   for (int round = 0; round < rounds && !bad.empty(); ++round)
   {
     QuadRelaxOptions options;
-    options.iterations = iterations;
+    options.relaxationIterations = iterations;
     options.movable.assign(nV, 0);
     for (const int i : bad)
     {

@@ -19,7 +19,7 @@ struct QuadExtractionOptions
   /// Barycentric tolerance for a grid point on a triangle's edge or corner.
   double tolerance = 1e-7;
   /// Triangles a walk from a cell's centre to one of its corners may cross.
-  int maxWalk = 10000;
+  int maximumWalk = 10000;
 };
 
 struct QuadMesh
@@ -70,7 +70,7 @@ QuadMesh extractQuads(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F,
 struct QuadRelaxOptions
 {
   /// Sweeps over the vertices; 0 leaves the mesh as extracted.
-  int iterations = 0;
+  int relaxationIterations = 0;
   /// Share of the way each vertex moves towards its target per sweep, in (0, 1].
   double step = 0.5;
   /// Input edges with a dihedral angle above this (degrees) are creases: vertices on them stay,

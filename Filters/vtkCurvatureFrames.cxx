@@ -62,8 +62,8 @@ int vtkCurvatureFrames::RequestData(
     }
 
     quadcover::CurvatureOptions options;
-    options.radius = this->NeighborhoodRadius;
-    options.numThreads = this->NumberOfThreads;
+    options.neighborhoodRadius = this->NeighborhoodRadius;
+    options.numberOfThreads = this->NumberOfThreads;
     quadcover::CurvatureField field = quadcover::computeCurvatureField(V, F, topo, options);
     this->UpdateProgress(0.8);
     if (field.zeroFrames == static_cast<int>(F.rows()))
@@ -79,7 +79,7 @@ int vtkCurvatureFrames::RequestData(
     if (field.truncatedNeighborhoods > 0)
     {
       vtkWarningMacro(<< field.truncatedNeighborhoods << " neighbourhoods were cut at "
-                      << options.maxNeighborhood << " triangles (very uneven triangle sizes?).");
+                      << options.maximumNeighborhood << " triangles (very uneven triangle sizes?).");
     }
 
     vtkDataArray* user = this->UseInputFrames ? this->GetInputArrayToProcess(0, surface) : nullptr;
@@ -109,7 +109,7 @@ int vtkCurvatureFrames::RequestData(
     cd->AddArray(vtkQuadCoverEigen::ToArray(field.frameV, names::FrameV));
     cd->AddArray(vtkQuadCoverEigen::ToArray(field.weight, names::FrameWeight));
     vtkQuadCoverEigen::AddField<vtkDoubleArray>(
-      output->GetFieldData(), names::CurvatureRadius, { field.radius });
+      output->GetFieldData(), names::CurvatureRadius, { field.curvatureRadius });
   }
   catch (const std::exception& e)
   {

@@ -111,8 +111,8 @@ int vtkFrameSmoother::RequestData(
 
     quadcover::SmootherOptions options;
     options.smoothingWeight = this->SmoothingWeight;
-    options.maxIterations = this->MaximumNumberOfIterations;
-    options.tolerance = this->ConvergenceTolerance;
+    options.maximumNumberOfIterations = this->MaximumNumberOfIterations;
+    options.convergenceTolerance = this->ConvergenceTolerance;
     options.alignToFeatures = this->AlignToFeatures;
     options.featureAngle = this->FeatureAngle;
     options.minimumFeatureLength = this->MinimumFeatureLength;

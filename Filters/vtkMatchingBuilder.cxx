@@ -89,12 +89,12 @@ int vtkMatchingBuilder::RequestData(
     const double costBefore = t.matchingCost; // before the optimization changes t
     int pathsChanged = 0;
     quadcover::BranchPointOptions options;
-    options.weight = this->BranchPointWeight;
-    options.maxVisited = this->MaximumSearchSize;
-    options.lengthScaled = this->LengthScaledCost;
+    options.branchPointWeight = this->BranchPointWeight;
+    options.maximumSearchSize = this->MaximumSearchSize;
+    options.lengthScaledCost = this->LengthScaledCost;
     double objective[2];
-    objective[0] = options.weight * t.singularities +
-      quadcover::scaledMatchingCost(mesh.F, mesh.topo, geometry, t, options.lengthScaled);
+    objective[0] = options.branchPointWeight * t.singularities +
+      quadcover::scaledMatchingCost(mesh.F, mesh.topo, geometry, t, options.lengthScaledCost);
     objective[1] = objective[0];
     if (this->OptimizeBranchPoints && !this->GetAbortExecute())
     {

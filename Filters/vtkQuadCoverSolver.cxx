@@ -100,18 +100,16 @@ int vtkQuadCoverSolver::RequestData(
     const quadcover::FrameGeometry geometry =
       quadcover::computeFrameGeometry(mesh.V, mesh.F, mesh.topo);
     quadcover::ParameterizationOptions options;
-    options.gridSize = this->TargetEdgeLength > 0
-      ? this->TargetEdgeLength
-      : quadcover::gridSizeForQuadCount(mesh.V, mesh.F, this->TargetQuadCount);
-    options.targetQuads = this->TargetEdgeLength > 0 ? 0.0 : this->TargetQuadCount;
+    options.targetEdgeLength = this->TargetEdgeLength;
+    options.targetQuadCount = this->TargetQuadCount;
     options.pureQuads = this->PureQuads;
-    options.rounding = this->RoundingMode == ROUNDING_NONE
-      ? quadcover::Rounding::None
-      : (this->RoundingMode == ROUNDING_SIMPLE ? quadcover::Rounding::Simple
-                                               : quadcover::Rounding::Greedy);
-    options.alignBoundary = this->AlignToBoundary;
+    options.roundingMode = this->RoundingMode == ROUNDING_NONE
+      ? quadcover::RoundingMode::None
+      : (this->RoundingMode == ROUNDING_SIMPLE ? quadcover::RoundingMode::Simple
+                                               : quadcover::RoundingMode::Greedy);
+    options.alignToBoundary = this->AlignToBoundary;
     options.boundaryTolerance = this->BoundaryTolerance;
-    options.maxUntangleRounds = this->MaximumUntangleRounds;
+    options.maximumUntangleRounds = this->MaximumUntangleRounds;
     this->UpdateProgress(0.2);
     const quadcover::Parameterization map =
       quadcover::computeParameterization(mesh.V, mesh.F, mesh.topo, geometry, U, matching, options);
@@ -180,7 +178,7 @@ int vtkQuadCoverSolver::RequestData(
     output->GetCellData()->AddArray(vtkQuadCoverEigen::ToArray(map.cornerUV, names::CornerUV));
     output->GetCellData()->AddArray(seam);
     vtkFieldData* fd = output->GetFieldData();
-    vtkQuadCoverEigen::AddField<vtkDoubleArray>(fd, names::GridScale, { map.gridSize });
+    vtkQuadCoverEigen::AddField<vtkDoubleArray>(fd, names::GridScale, { map.edgeLength });
     vtkQuadCoverEigen::AddField<vtkIntArray>(
       fd, names::WindingErrors, { double(map.wrongWindings) });
     vtkQuadCoverEigen::AddField<vtkIntArray>(fd, names::FlippedTriangles,

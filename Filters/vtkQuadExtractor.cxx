@@ -151,7 +151,7 @@ int vtkQuadExtractor::RequestData(
     {
       this->UpdateProgress(0.4);
       quadcover::QuadRelaxOptions relax;
-      relax.iterations = this->RelaxationIterations;
+      relax.relaxationIterations = this->RelaxationIterations;
       quadcover::relaxQuads(mesh.V, mesh.F, mesh.topo, quads, relax);
     }
     this->UpdateProgress(0.6);

@@ -28,8 +28,8 @@ Sample run(Surface s, double radius = 2.0, int threads = 0)
 {
   MeshTopology topo = buildTopology(s.F, static_cast<int>(s.V.rows()));
   CurvatureOptions opt;
-  opt.radius = radius;
-  opt.numThreads = threads;
+  opt.neighborhoodRadius = radius;
+  opt.numberOfThreads = threads;
   CurvatureField field = computeCurvatureField(s.V, s.F, topo, opt);
   return { std::move(s), std::move(topo), std::move(field) };
 }
@@ -125,7 +125,7 @@ TEST(CurvatureFrames, CylinderIsExact)
     maxAngle = std::max(maxAngle, lineAngle(r.field.direction1.row(f), analyticDirection1(r, f)));
     // Away from the rims the neighbourhood is complete.
     const double z = r.s.V.row(r.s.F(f, 0)).z();
-    if (std::abs(z) < 1.0 - 3.0 * r.field.radius)
+    if (std::abs(z) < 1.0 - 3.0 * r.field.curvatureRadius)
     {
       maxK1 = std::max(maxK1, std::abs(r.field.curvatures(f, 0) * radius - 1.0));
       maxK2 = std::max(maxK2, std::abs(r.field.curvatures(f, 1) * radius));
@@ -232,7 +232,7 @@ TEST(CurvatureFrames, RejectsBadInput)
   Surface s = testSurface("sphere");
   const MeshTopology topo = buildTopology(s.F, static_cast<int>(s.V.rows()));
   CurvatureOptions bad;
-  bad.radius = -1.0;
+  bad.neighborhoodRadius = -1.0;
   EXPECT_THROW(computeCurvatureField(s.V, s.F, topo, bad), std::invalid_argument);
   s.V(3, 1) = std::nan("");
   EXPECT_THROW(computeCurvatureField(s.V, s.F, topo), std::invalid_argument);
@@ -281,11 +281,11 @@ TEST(CurvatureFrames, NeighbourhoodIsCapped)
   Surface s = testSurface("torus");
   MeshTopology topo = buildTopology(s.F, static_cast<int>(s.V.rows()));
   CurvatureOptions opt;
-  opt.radius = 20.0;
-  opt.maxNeighborhood = 50;
+  opt.neighborhoodRadius = 20.0;
+  opt.maximumNeighborhood = 50;
   const CurvatureField field = computeCurvatureField(s.V, s.F, topo, opt);
   EXPECT_EQ(field.truncatedNeighborhoods, topo.numFaces);
-  opt.maxNeighborhood = 0; // no limit
+  opt.maximumNeighborhood = 0; // no limit
   EXPECT_EQ(computeCurvatureField(s.V, s.F, topo, opt).truncatedNeighborhoods, 0);
 }
 

@@ -187,7 +187,7 @@ TEST(FrameSmoother, HeldFramesFollowTheirEdgesAndStayPut)
     const SmootherResult r = smooth(c);
     ASSERT_GT(r.numConstrained, 0) << name;
     SmootherOptions loose;
-    loose.maxIterations = 1;
+    loose.maximumNumberOfIterations = 1;
     const SmootherResult early = smooth(c, loose);
     for (int f = 0; f < c.topo.numFaces; ++f)
     {

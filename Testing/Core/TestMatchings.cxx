@@ -210,7 +210,7 @@ TEST(Matchings, BranchPointOptimizationLowersTheCostAndKeepsPoincareHopf)
     const Eigen::MatrixX3d U = randomFrames(m, 5);
     FrameTopology t = computeMatchings(m.s.F, m.topo, m.geometry, U);
     BranchPointOptions opt;
-    opt.weight = 1.0;
+    opt.branchPointWeight = 1.0;
     opt.splitDistance = 0; // the merges alone (splits add singular points on purpose)
     const BranchPointReport r = optimizeBranchPoints(m.s.F, m.topo, m.geometry, U, t, opt);
     SCOPED_TRACE(name);
@@ -225,7 +225,7 @@ TEST(Matchings, BranchPointOptimizationLowersTheCostAndKeepsPoincareHopf)
     EXPECT_LT(t.maxIndexError, 1e-9);
     // A zero weight changes nothing.
     FrameTopology u = computeMatchings(m.s.F, m.topo, m.geometry, U);
-    opt.weight = 0.0;
+    opt.branchPointWeight = 0.0;
     EXPECT_EQ(optimizeBranchPoints(m.s.F, m.topo, m.geometry, U, u, opt).pathsChanged, 0);
   }
 }
@@ -255,7 +255,7 @@ TEST(Matchings, BranchPointOptimizationNeverCreatesSingularities)
         FrameTopology t = computeMatchings(m.s.F, m.topo, m.geometry, U);
         const FrameTopology before = t;
         BranchPointOptions opt;
-        opt.weight = weight;
+        opt.branchPointWeight = weight;
         opt.splitDistance = 0; // the merges alone (splits add singular points on purpose)
         optimizeBranchPoints(m.s.F, m.topo, m.geometry, U, t, opt);
         double largest = 0.0;
@@ -471,11 +471,11 @@ TEST(Matchings, LengthScaledMergeCostDoesNotDependOnTheMeshResolution)
       FrameTopology t = computeMatchings(m.s.F, m.topo, m.geometry, U);
       ASSERT_EQ(t.singularities, 2) << n;
       BranchPointOptions opt;
-      opt.lengthScaled = scaled;
-      opt.weight = 1000; // merge whatever it costs: the cost of the path is what we look at
+      opt.lengthScaledCost = scaled;
+      opt.branchPointWeight = 1000; // merge whatever it costs: the cost of the path is what we look at
       const BranchPointReport r = optimizeBranchPoints(m.s.F, m.topo, m.geometry, U, t, opt);
       ASSERT_EQ(r.singularitiesAfter, 0);
-      pathCost[{ n, scaled }] = r.costAfter - r.costBefore + 2 * opt.weight;
+      pathCost[{ n, scaled }] = r.costAfter - r.costBefore + 2 * opt.branchPointWeight;
       std::printf("n %d, %s: the merge costs %.2f\n", n, scaled ? "length-scaled" : "edge count",
         pathCost[{ n, scaled }]);
     }

@@ -108,7 +108,7 @@ TEST(Parameterization, TorusCurvatureLinesGiveTheAnalyticIntegerGrid)
   EXPECT_EQ(c.map.branchPoints, 0);
   EXPECT_EQ(c.map.integerUnknowns, 4) << "the two periods of a torus, u and v each";
   expectIntegerGridMap(c, "torus");
-  const double h = c.map.gridSize;
+  const double h = c.map.edgeLength;
   const double expectedMeridian = 2 * Pi * r / h;
   const double expectedParallel = 2 * Pi * std::sqrt(R * R - r * r) / h;
   std::vector<double> meridian; // 2 pi r |grad w| per triangle
@@ -179,7 +179,7 @@ TEST(Parameterization, ClosedSurfacesGiveSeamlessGridMapsWithoutFlips)
 TEST(Parameterization, GreedyRoundingIsNoWorseThanSimple)
 {
   ParameterizationOptions simple;
-  simple.rounding = Rounding::Simple;
+  simple.roundingMode = RoundingMode::Simple;
   for (const char* name : { "sphere", "roundedcube" })
   {
     const Chain greedy = runChain(testSurface(name), 800);
@@ -218,7 +218,7 @@ TEST(Parameterization, WithoutPureQuadsBranchPointsMayLieOnHalfGridOnly)
 TEST(Parameterization, ContinuousMapIsSeamlessUpToTranslationsAndHasTheLowestEnergy)
 {
   ParameterizationOptions options;
-  options.rounding = Rounding::None;
+  options.roundingMode = RoundingMode::None;
   const Chain r = runChain(testSurface("roundedcube"), 1000, options);
   // rotations match, translations are real: the seam check fails on integrality only
   EXPECT_EQ(seamViolations(r, 0.5), 0);
@@ -271,7 +271,7 @@ TEST(Parameterization, TargetQuadsCorrectsTheGridSizeByTheMapsArea)
 {
   // The torus' field is not integrable as it stands (around the axis the fitted |grad| varies
   // with the distance from the axis), so the least-squares map covers fewer cells than
-  // area / h^2; targetQuads corrects h after the continuous solve.
+  // area / h^2; targetQuadCount corrects h after the continuous solve.
   auto cells = [](const Eigen::MatrixXd& uv) {
     double sum = 0.0;
     for (Eigen::Index f = 0; f < uv.rows(); ++f)
@@ -283,24 +283,27 @@ TEST(Parameterization, TargetQuadsCorrectsTheGridSizeByTheMapsArea)
     return sum;
   };
   const Surface torus = makeTorus(1.0, 0.6, 96, 48);
-  const Chain plain = runChain(torus, 1500);
+  Chain plain = runChain(torus, 1500);
   ParameterizationOptions options;
-  options.targetQuads = 1500;
-  const Chain corrected = runChain(torus, 1500, options);
+  options.targetQuadCount = 1500; // and targetEdgeLength 0: chosen by the count, corrected
+  Chain corrected = plain;
+  corrected.map = computeParameterization(
+    plain.s.V, plain.s.F, plain.topo, plain.geometry, plain.frameU, plain.field.matching, options);
   std::printf("cells: %.1f by area / h^2, %.1f corrected; h %.5f -> %.5f\n",
-    cells(plain.map.cornerUV), cells(corrected.map.cornerUV), plain.map.gridSize,
-    corrected.map.gridSize);
+    cells(plain.map.cornerUV), cells(corrected.map.cornerUV), plain.map.edgeLength,
+    corrected.map.edgeLength);
+  EXPECT_NEAR(plain.map.edgeLength, edgeLengthForQuadCount(torus.V, torus.F, 1500), 1e-12);
   EXPECT_LT(cells(plain.map.cornerUV), 0.97 * 1500);
   // (the periods are then rounded to integers: a few per cent either way)
   EXPECT_NEAR(cells(corrected.map.cornerUV), 1500, 0.05 * 1500);
-  EXPECT_LT(corrected.map.gridSize, plain.map.gridSize);
+  EXPECT_LT(corrected.map.edgeLength, plain.map.edgeLength);
   expectIntegerGridMap(corrected, "torus, corrected");
 }
 
 TEST(Parameterization, GridSizeFollowsTheQuadCount)
 {
   const Surface s = makeIcosphere(1.0, 3);
-  const double h = gridSizeForQuadCount(s.V, s.F, 1000);
+  const double h = edgeLengthForQuadCount(s.V, s.F, 1000);
   double area = 0.0;
   for (int f = 0; f < s.F.rows(); ++f)
   {
@@ -309,18 +312,26 @@ TEST(Parameterization, GridSizeFollowsTheQuadCount)
     area += 0.5 * a.cross(b).norm();
   }
   EXPECT_NEAR(h * h * 1000, area, 1e-9 * area);
-  EXPECT_THROW(gridSizeForQuadCount(s.V, s.F, 0), std::invalid_argument);
+  EXPECT_THROW(edgeLengthForQuadCount(s.V, s.F, 0), std::invalid_argument);
 }
 
 TEST(Parameterization, RefusesBadArguments)
 {
   Chain r = runChain(makeTorus(1.0, 0.4, 24, 12), 100);
   ParameterizationOptions options;
-  options.gridSize = 0.0;
+  for (const double bad : { -1.0, std::nan("") })
+  {
+    options.targetEdgeLength = bad;
+    EXPECT_THROW(computeParameterization(
+                   r.s.V, r.s.F, r.topo, r.geometry, r.frameU, r.field.matching, options),
+      std::invalid_argument);
+  }
+  options.targetEdgeLength = 0.0; // chosen by the quad count, which must be positive
+  options.targetQuadCount = 0;
   EXPECT_THROW(
     computeParameterization(r.s.V, r.s.F, r.topo, r.geometry, r.frameU, r.field.matching, options),
     std::invalid_argument);
-  options.gridSize = 0.1;
+  options.targetEdgeLength = 0.1;
   Eigen::MatrixX3i broken = r.field.matching;
   broken(0, 0) = (broken(0, 0) + 1) % 4; // no longer the inverse of its twin
   EXPECT_THROW(computeParameterization(r.s.V, r.s.F, r.topo, r.geometry, r.frameU, broken, options),
@@ -350,12 +361,12 @@ TEST(Parameterization, TwistedFramesFoldTheMapAndUntanglingUnfoldsIt)
   }
   const Eigen::MatrixX3d U = angleVectors(c.geometry.bases, twisted);
   ParameterizationOptions options;
-  options.gridSize = c.map.gridSize;
-  options.maxUntangleRounds = 0;
+  options.targetEdgeLength = c.map.edgeLength;
+  options.maximumUntangleRounds = 0;
   const Parameterization folded =
     computeParameterization(c.s.V, c.s.F, c.topo, c.geometry, U, c.field.matching, options);
   ASSERT_GT(folded.flipped, 0) << "the twist should fold the least-squares map";
-  options.maxUntangleRounds = 30;
+  options.maximumUntangleRounds = 30;
   c.map = computeParameterization(c.s.V, c.s.F, c.topo, c.geometry, U, c.field.matching, options);
   EXPECT_EQ(c.map.flippedRounded, folded.flipped);
   EXPECT_GT(c.map.untangleRegions, 0);
@@ -439,7 +450,7 @@ TEST(Parameterization, BranchPointsOfOneTriangleNeverShareAGridPoint)
   ASSERT_EQ(c.field.layerShift[a], 0);
   ASSERT_EQ(c.field.layerShift[path[0]], 1);
   ParameterizationOptions options;
-  options.gridSize = c.map.gridSize * 2.0; // about 50 quads: one grid cell spans several edges
+  options.targetEdgeLength = c.map.edgeLength * 2.0; // about 50 quads: one grid cell spans several edges
   c.map = computeParameterization(c.s.V, c.s.F, c.topo, c.geometry, c.frameU, M, options);
   EXPECT_GT(c.map.separatedBranchPoints, 0) << "the two should have met at one grid point";
   EXPECT_EQ(seamViolations(c), 0);
@@ -499,10 +510,10 @@ TEST(Parameterization, NegativeConesKeepTheirIndex)
           FrameTopology t = computeMatchings(s.F, topo, g, U);
           ASSERT_NEAR(t.index[centre], index, 1e-9) << "the field's index at the centre";
           ParameterizationOptions options;
-          options.gridSize = h;
-          options.alignBoundary = false;
-          options.rounding = Rounding::None;
-          options.maxUntangleRounds = 0;
+          options.targetEdgeLength = h;
+          options.alignToBoundary = false;
+          options.roundingMode = RoundingMode::None;
+          options.maximumUntangleRounds = 0;
           const Parameterization map =
             computeParameterization(s.V, s.F, topo, g, U, t.matching, options);
           double sum = 0.0;
@@ -561,7 +572,7 @@ TEST(Parameterization, NoMergeTwistsATubeBetweenItsBoundaryLoops)
     FrameTopology field = computeMatchings(tube.F, topo, geometry, U);
     ASSERT_EQ(field.singularities, 2);
     BranchPointOptions options;
-    options.weight = 1000; // merge if at all possible
+    options.branchPointWeight = 1000; // merge if at all possible
     const BranchPointReport report =
       optimizeBranchPoints(tube.F, topo, geometry, U, field, options);
     avoided += report.twistsAvoided;
@@ -579,7 +590,7 @@ TEST(Parameterization, NoMergeTwistsATubeBetweenItsBoundaryLoops)
     Eigen::MatrixX3d fittedU = U, fittedV = U;
     rotateFrames(geometry.bases, alpha, fittedU, fittedV);
     ParameterizationOptions mapOptions;
-    mapOptions.gridSize = gridSizeForQuadCount(tube.V, tube.F, 800);
+    mapOptions.targetEdgeLength = edgeLengthForQuadCount(tube.V, tube.F, 800);
     const Parameterization map =
       computeParameterization(tube.V, tube.F, topo, geometry, fittedU, field.matching, mapOptions);
     EXPECT_EQ(map.flipped, 0);

@@ -198,7 +198,7 @@ TEST(QuadRelaxation, EvensOutAJitteredMeshOnTheSurface)
   const QuadQuality jittered = measureQuads(q.V, q.Q);
   const Eigen::MatrixX4i quads = q.Q;
   QuadRelaxOptions options;
-  options.iterations = 20;
+  options.relaxationIterations = 20;
   const QuadRelaxReport report = relaxQuads(c.s.V, c.s.F, c.topo, q, options);
   const QuadQuality relaxed = measureQuads(q.V, q.Q);
   std::printf("edge RSD %.1f%% clean, %.1f%% jittered, %.1f%% relaxed; angle RSD %.1f / %.1f / "
@@ -234,7 +234,7 @@ TEST(QuadRelaxation, BoundaryVerticesStay)
   const QuadQuality before = measureQuads(q.V, q.Q);
   const Eigen::MatrixX3d start = q.V;
   QuadRelaxOptions options;
-  options.iterations = 10;
+  options.relaxationIterations = 10;
   const QuadRelaxReport report = relaxQuads(c.s.V, c.s.F, c.topo, q, options);
   const QuadQuality after = measureQuads(q.V, q.Q);
   EXPECT_EQ(report.fixedVertices, before.boundaryEdges) << "one per boundary edge on 2 loops";
@@ -254,7 +254,7 @@ TEST(QuadRelaxation, RejectsBadOptions)
   const Chain c = runChain(testSurface("sphere"), 200);
   QuadMesh q = extractQuads(c.s.V, c.s.F, c.topo, c.map.cornerUV);
   QuadRelaxOptions options;
-  options.iterations = 1;
+  options.relaxationIterations = 1;
   options.step = 0.0;
   EXPECT_THROW(relaxQuads(c.s.V, c.s.F, c.topo, q, options), std::invalid_argument);
   options.step = 0.5;

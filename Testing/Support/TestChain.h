@@ -23,7 +23,7 @@ struct Chain
 };
 
 /// Curvature frames, smoothing, matchings with branch-point optimization and the frames fitted
-/// to them (the filters' defaults), then the map at about `quads` quads.
+/// to them (the filters' defaults), then the map with edge length sqrt(area / quads) (or options.targetEdgeLength).
 inline Chain runChain(
   Surface s, double quads, ParameterizationOptions options = ParameterizationOptions())
 {
@@ -53,7 +53,11 @@ inline Chain runChain(
     rotateFrames(r.geometry.bases, alpha, r.frameU, V);
     r.field = evaluateMatchings(r.s.F, r.topo, r.geometry, r.frameU, r.field.matching);
   }
-  options.gridSize = gridSizeForQuadCount(r.s.V, r.s.F, quads);
+  // a fixed edge length (no correction by the map's area) unless the options give one
+  if (options.targetEdgeLength == 0.0)
+  {
+    options.targetEdgeLength = edgeLengthForQuadCount(r.s.V, r.s.F, quads);
+  }
   r.map =
     computeParameterization(r.s.V, r.s.F, r.topo, r.geometry, r.frameU, r.field.matching, options);
   return r;
