@@ -46,8 +46,10 @@ struct Problem
 
 SmootherResult smoothFrames(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F,
   const MeshTopology& topo, const FrameGeometry& geometry, const Eigen::MatrixX3d& frameU,
-  const Eigen::MatrixX3d& frameV, const Eigen::VectorXd& weight, const SmootherOptions& options)
+  const Eigen::MatrixX3d& frameV, const Eigen::VectorXd& weight, const SmootherOptions& options,
+  const Progress& progress)
 {
+  progress.report(0.0);
   const int nf = static_cast<int>(F.rows());
   if (frameU.rows() != nf || frameV.rows() != nf || weight.size() != nf || topo.numFaces != nf)
   {

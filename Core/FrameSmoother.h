@@ -4,6 +4,7 @@
 
 #include "Matchings.h"
 #include "MeshTopology.h"
+#include "Progress.h"
 
 #include <Eigen/Core>
 
@@ -72,7 +73,7 @@ struct SmootherResult
 SmootherResult smoothFrames(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F,
   const MeshTopology& topo, const FrameGeometry& geometry, const Eigen::MatrixX3d& frameU,
   const Eigen::MatrixX3d& frameV, const Eigen::VectorXd& weight,
-  const SmootherOptions& options = SmootherOptions());
+  const SmootherOptions& options = SmootherOptions(), const Progress& progress = Progress());
 
 }
 

@@ -279,8 +279,9 @@ double scaledMatchingCost(const Eigen::MatrixX3i& F, const MeshTopology& topo,
 
 BranchPointReport optimizeBranchPoints(const Eigen::MatrixX3i& F, const MeshTopology& topo,
   const FrameGeometry& geometry, const Eigen::MatrixX3d& frameU, FrameTopology& topology,
-  const BranchPointOptions& options)
+  const BranchPointOptions& options, const Progress& progress)
 {
+  progress.report(0.0);
   const int nv = topo.numVertices;
   const double lambda = options.branchPointWeight;
   const Eigen::VectorXd phi = vectorAngles(geometry.bases, frameU);

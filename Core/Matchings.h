@@ -5,6 +5,7 @@
 
 #include "FrameField.h"
 #include "MeshTopology.h"
+#include "Progress.h"
 
 #include <Eigen/Core>
 
@@ -121,7 +122,7 @@ double scaledMatchingCost(const Eigen::MatrixX3i& F, const MeshTopology& topo,
  */
 BranchPointReport optimizeBranchPoints(const Eigen::MatrixX3i& F, const MeshTopology& topo,
   const FrameGeometry& geometry, const Eigen::MatrixX3d& frameU, FrameTopology& topology,
-  const BranchPointOptions& options = BranchPointOptions());
+  const BranchPointOptions& options = BranchPointOptions(), const Progress& progress = Progress());
 
 /**
  * Turns the frames so that they agree with given matchings: the angles alpha minimizing

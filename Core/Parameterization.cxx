@@ -558,8 +558,10 @@ double edgeLengthForQuadCount(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i&
 
 Parameterization computeParameterization(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F,
   const MeshTopology& topo, const FrameGeometry& geometry, const Eigen::MatrixX3d& frameU,
-  const Eigen::MatrixX3i& matching, const ParameterizationOptions& options)
+  const Eigen::MatrixX3i& matching, const ParameterizationOptions& options,
+  const Progress& progress)
 {
+  progress.report(0.0);
   const int nF = static_cast<int>(F.rows());
   const int nV = static_cast<int>(V.rows());
   if (topo.numFaces != nF || topo.numVertices != nV || frameU.rows() != nF ||

@@ -7,6 +7,7 @@
 #include "CutGraph.h"
 #include "Matchings.h"
 #include "MeshTopology.h"
+#include "Progress.h"
 
 #include <Eigen/Core>
 
@@ -126,7 +127,8 @@ struct Parameterization
  */
 Parameterization computeParameterization(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F,
   const MeshTopology& topo, const FrameGeometry& geometry, const Eigen::MatrixX3d& frameU,
-  const Eigen::MatrixX3i& matching, const ParameterizationOptions& options);
+  const Eigen::MatrixX3i& matching, const ParameterizationOptions& options = {},
+  const Progress& progress = Progress());
 
 /// The edge length that gives about `quads` quads: sqrt(total area / quads).
 double edgeLengthForQuadCount(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F, double quads);

@@ -453,8 +453,10 @@ int removeOverlappingQuads(std::vector<std::array<int, 4>>& quads, std::vector<i
 }
 
 QuadMesh extractQuads(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F,
-  const MeshTopology& topo, const Eigen::MatrixXd& cornerUV, const QuadExtractionOptions& options)
+  const MeshTopology& topo, const Eigen::MatrixXd& cornerUV, const QuadExtractionOptions& options,
+  const Progress& progress)
 {
+  progress.report(0.0);
   if (cornerUV.rows() != F.rows() || cornerUV.cols() != 6 || topo.numFaces != F.rows() ||
     topo.numVertices != V.rows())
   {
@@ -652,8 +654,10 @@ Eigen::Vector3d closestOnTriangle(const Eigen::Vector3d& p, const Eigen::Vector3
 }
 
 QuadRelaxReport relaxQuads(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F,
-  const MeshTopology& topo, QuadMesh& mesh, const QuadRelaxOptions& options)
+  const MeshTopology& topo, QuadMesh& mesh, const QuadRelaxOptions& options,
+  const Progress& progress)
 {
+  progress.report(0.0);
   const int nF = static_cast<int>(F.rows());
   const int nV = static_cast<int>(mesh.V.rows());
   const int nQ = static_cast<int>(mesh.Q.rows());

@@ -3,6 +3,7 @@
 #define quadcover_QuadExtraction_h
 
 #include "MeshTopology.h"
+#include "Progress.h"
 
 #include <Eigen/Core>
 
@@ -65,7 +66,8 @@ int removeOverlappingQuads(std::vector<std::array<int, 4>>& quads, std::vector<i
  */
 QuadMesh extractQuads(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F,
   const MeshTopology& topo, const Eigen::MatrixXd& cornerUV,
-  const QuadExtractionOptions& options = QuadExtractionOptions());
+  const QuadExtractionOptions& options = QuadExtractionOptions(),
+  const Progress& progress = Progress());
 
 struct QuadRelaxOptions
 {
@@ -100,7 +102,8 @@ struct QuadRelaxReport
  * @throws std::invalid_argument on sizes that do not match or step outside (0, 1]
  */
 QuadRelaxReport relaxQuads(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F,
-  const MeshTopology& topo, QuadMesh& mesh, const QuadRelaxOptions& options);
+  const MeshTopology& topo, QuadMesh& mesh, const QuadRelaxOptions& options,
+  const Progress& progress = Progress());
 
 /**
  * Repairs quads with a corner turned inside out (scaled Jacobian <= 0, as measureQuads measures
