@@ -7,6 +7,7 @@
 #include <Eigen/Geometry>
 
 #include <cmath>
+#include <stdexcept>
 
 namespace quadcover
 {
@@ -77,6 +78,29 @@ Eigen::VectorXd vectorAngles(const FaceBases& bases, const Eigen::MatrixX3d& U)
     a[f] = std::atan2(U.row(f).dot(bases.b2.row(f)), U.row(f).dot(bases.b1.row(f)));
   }
   return a;
+}
+
+std::pair<Eigen::MatrixX3d, Eigen::MatrixX3d> tangentFrames(
+  const FaceBases& bases, const Eigen::MatrixX3d& U, const Eigen::MatrixX3d& V)
+{
+  const Eigen::Index nf = bases.normal.rows();
+  if (U.rows() != nf || (V.rows() != 0 && V.rows() != nf))
+  {
+    throw std::invalid_argument("tangentFrames: sizes do not match");
+  }
+  std::pair<Eigen::MatrixX3d, Eigen::MatrixX3d> frames(U, Eigen::MatrixX3d(nf, 3));
+  for (Eigen::Index f = 0; f < nf; ++f)
+  {
+    const Eigen::Vector3d n = bases.normal.row(f);
+    Eigen::Vector3d x = U.row(f);
+    x -= x.dot(n) * n;
+    frames.first.row(f) = x.allFinite() && x.norm() > 0.0 ? Eigen::RowVector3d(x.normalized())
+                                                          : Eigen::RowVector3d(bases.b1.row(f));
+    const bool given = V.rows() != 0 && V.row(f).allFinite();
+    frames.second.row(f) = given ? Eigen::RowVector3d(V.row(f))
+                                 : Eigen::RowVector3d(n.cross(frames.first.row(f).transpose()));
+  }
+  return frames;
 }
 
 Eigen::MatrixX3d angleVectors(const FaceBases& bases, const Eigen::VectorXd& angles)

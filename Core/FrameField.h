@@ -7,6 +7,7 @@
 
 #include <Eigen/Core>
 
+#include <utility>
 #include <vector>
 
 namespace quadcover
@@ -35,6 +36,17 @@ FaceBases computeFaceBases(
 
 /// Angle of each row of U in its triangle's basis (#F).
 Eigen::VectorXd vectorAngles(const FaceBases& bases, const Eigen::MatrixX3d& U);
+
+/**
+ * Frames as the smoothing takes them: each row of U projected into its triangle's plane and
+ * normalized (the triangle's b1 where nothing tangent is left: a zero, normal or non-finite
+ * vector); V as given where its row is finite, else normal x U.
+ * @param[in] U #F x 3 @param[in] V #F x 3, or empty for normal x U everywhere
+ * @return (U, V), #F x 3 each
+ * @throws std::invalid_argument on sizes that do not match
+ */
+std::pair<Eigen::MatrixX3d, Eigen::MatrixX3d> tangentFrames(
+  const FaceBases& bases, const Eigen::MatrixX3d& U, const Eigen::MatrixX3d& V);
 
 /// Unit tangent vectors at the given angles (#F x 3).
 Eigen::MatrixX3d angleVectors(const FaceBases& bases, const Eigen::VectorXd& angles);

@@ -712,4 +712,86 @@ Eigen::VectorXd fitFramesToMatchings(const Eigen::MatrixX3d& V, const Eigen::Mat
   }
   return solver.solve(rhs);
 }
+std::string checkMatching(const MeshTopology& topo, const Eigen::MatrixX3i& matching)
+{
+  if (matching.rows() != topo.numFaces)
+  {
+    return "the matchings have " + std::to_string(matching.rows()) + " rows for " +
+      std::to_string(topo.numFaces) + " triangles";
+  }
+  for (int f = 0; f < topo.numFaces; ++f)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      const int r = matching(f, k);
+      const bool boundary = topo.faceNeighbors(f, k) < 0;
+      if (boundary ? r != -1 : (r < 0 || r > 3))
+      {
+        return "the matching of triangle " + std::to_string(f) + ", edge " + std::to_string(k) +
+          " is " + std::to_string(r) + "; it must be 0, 1, 2 or 3 (-1 on the boundary)";
+      }
+    }
+  }
+  return "";
+}
+
+MatchingResult buildMatchings(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F,
+  const MeshTopology& topo, const FrameGeometry& geometry, const Eigen::MatrixX3d& frameU,
+  const Eigen::MatrixX3d& frameV, const Eigen::VectorXd& weight,
+  const std::vector<char>& constrained, const MatchingOptions& options, const Progress& progress)
+{
+  const int nF = static_cast<int>(F.rows());
+  if (frameU.rows() != nF || (frameV.rows() != 0 && frameV.rows() != nF) ||
+    (weight.size() != 0 && weight.size() != nF) ||
+    (!constrained.empty() && static_cast<int>(constrained.size()) != nF))
+  {
+    throw std::invalid_argument("buildMatchings: sizes do not match");
+  }
+  const BranchPointOptions& bp = options.branchPoints;
+  MatchingResult r;
+  r.topology = computeMatchings(F, topo, geometry, frameU);
+  r.branchPointsBefore = r.topology.branchPoints;
+  r.matchingCostBefore = r.topology.matchingCost;
+  r.objectiveBefore = bp.branchPointWeight * r.topology.singularities +
+    scaledMatchingCost(F, topo, geometry, r.topology, bp.lengthScaledCost);
+  r.objectiveAfter = r.objectiveBefore;
+  progress.report(0.1);
+  if (options.optimizeBranchPoints)
+  {
+    r.report =
+      optimizeBranchPoints(F, topo, geometry, frameU, r.topology, bp, progress.part(0.1, 0.8));
+    r.objectiveAfter = r.report.costAfter;
+  }
+  r.frameU = frameU;
+  r.frameV = frameV;
+  if (frameV.rows() == 0)
+  {
+    r.frameV.resize(nF, 3);
+    for (int f = 0; f < nF; ++f)
+    {
+      r.frameV.row(f) = geometry.bases.normal.row(f).cross(frameU.row(f));
+    }
+  }
+  if (!options.fitFramesToMatchings || r.report.pathsChanged == 0)
+  {
+    return r;
+  }
+  std::vector<char> held(constrained.empty() ? 0 : nF, 0);
+  for (std::size_t f = 0; f < held.size(); ++f)
+  {
+    const int i = static_cast<int>(f);
+    held[f] = constrained[f] &&
+      (topo.faceNeighbors(i, 0) < 0 || topo.faceNeighbors(i, 1) < 0 ||
+        topo.faceNeighbors(i, 2) < 0);
+  }
+  const Eigen::VectorXd w = weight.array().isFinite().select(weight, 0.0);
+  const Eigen::VectorXd alpha = fitFramesToMatchings(
+    V, F, topo, geometry, frameU, r.topology.matching, w, options.fitSmoothingWeight, held);
+  rotateFrames(geometry.bases, alpha, r.frameU, r.frameV);
+  r.topology = evaluateMatchings(F, topo, geometry, r.frameU, r.topology.matching);
+  r.framesFitted = true;
+  progress.report(1.0);
+  return r;
+}
+
 }

@@ -9,6 +9,9 @@
 
 #include <Eigen/Core>
 
+#include <string>
+#include <vector>
+
 namespace quadcover
 {
 
@@ -148,6 +151,54 @@ Eigen::VectorXd fitFramesToMatchings(const Eigen::MatrixX3d& V, const Eigen::Mat
   const MeshTopology& topo, const FrameGeometry& geometry, const Eigen::MatrixX3d& frameU,
   const Eigen::MatrixX3i& matching, const Eigen::VectorXd& weight, double lambda = 0.97,
   const std::vector<char>& held = {});
+
+/**
+ * "" when every matching is 0, 1, 2 or 3 on an edge with a neighbour and -1 on one without
+ * (FrameTopology's convention), else one line naming the first triangle and edge that is not.
+ */
+std::string checkMatching(const MeshTopology& topo, const Eigen::MatrixX3i& matching);
+
+/// The whole matching stage (vtkMatchingBuilder): what it runs and with which weights.
+struct MatchingOptions
+{
+  /// Run optimizeBranchPoints after the smallest-angle matchings.
+  bool optimizeBranchPoints = true;
+  BranchPointOptions branchPoints;
+  /// After the optimization changed matchings, turn the frames so that they agree with them
+  /// (fitFramesToMatchings), frames held along the boundary staying as they are.
+  bool fitFramesToMatchings = true;
+  /// lambda of that fit: close to 1 (see fitFramesToMatchings).
+  double fitSmoothingWeight = 0.97;
+};
+
+struct MatchingResult
+{
+  FrameTopology topology;      ///< of the final matchings and frames
+  Eigen::MatrixX3d frameU;     ///< #F x 3 the frames: fitted when framesFitted, else as given
+  Eigen::MatrixX3d frameV;     ///< #F x 3 (normal x frameU where none was given)
+  bool framesFitted = false;   ///< the frames were turned to agree with changed matchings
+  int branchPointsBefore = 0;  ///< of the smallest-angle matchings
+  double matchingCostBefore = 0.0;
+  /// what the optimization lowers (BranchPointReport::costBefore/After), before and after
+  double objectiveBefore = 0.0;
+  double objectiveAfter = 0.0;
+  BranchPointReport report; ///< all 0 without the optimization
+};
+
+/**
+ * The matching stage as vtkMatchingBuilder runs it: computeMatchings, then (optionally)
+ * optimizeBranchPoints, then, when that changed matchings, fitFramesToMatchings (frames that
+ * `constrained` holds on a triangle with a boundary edge stay: the boundary must stay on grid
+ * lines), the frames turned and the matchings evaluated again.
+ * @param[in] frameV      #F x 3 or empty (normal x frameU)
+ * @param[in] weight      #F alignment weights (FrameWeight) or empty; non-finite ones count 0
+ * @param[in] constrained #F, 1 where smoothFrames held the frame, or empty
+ */
+MatchingResult buildMatchings(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F,
+  const MeshTopology& topo, const FrameGeometry& geometry, const Eigen::MatrixX3d& frameU,
+  const Eigen::MatrixX3d& frameV, const Eigen::VectorXd& weight,
+  const std::vector<char>& constrained, const MatchingOptions& options = MatchingOptions(),
+  const Progress& progress = Progress());
 
 }
 

@@ -74,31 +74,9 @@ int vtkFrameSmoother::RequestData(
     const quadcover::FrameGeometry geometry =
       quadcover::computeFrameGeometry(mesh.V, mesh.F, mesh.topo);
     // Frames as tangent unit vectors; FrameV defaults to n x FrameU, the weight to 1.
-    Eigen::MatrixX3d U = vtkQuadCoverEigen::FromArray3(u);
-    for (vtkIdType f = 0; f < nf; ++f)
-    {
-      const Eigen::Vector3d n = geometry.bases.normal.row(f);
-      Eigen::Vector3d x = U.row(f);
-      x -= x.dot(n) * n;
-      if (x.allFinite() && x.norm() > 0.0)
-      {
-        U.row(f) = x.normalized().transpose();
-      }
-      else
-      {
-        U.row(f) = geometry.bases.b1.row(f); // no usable direction: any tangent will do
-      }
-    }
-    // FrameV as given where it is finite, else n x FrameU.
     const bool haveV = v && v->GetNumberOfComponents() == 3 && v->GetNumberOfTuples() == nf;
-    Eigen::MatrixX3d Vf = haveV ? vtkQuadCoverEigen::FromArray3(v) : Eigen::MatrixX3d(nf, 3);
-    for (vtkIdType f = 0; f < nf; ++f)
-    {
-      if (!haveV || !Vf.row(f).allFinite())
-      {
-        Vf.row(f) = geometry.bases.normal.row(f).cross(U.row(f));
-      }
-    }
+    const auto [U, Vf] = quadcover::tangentFrames(geometry.bases, vtkQuadCoverEigen::FromArray3(u),
+      haveV ? vtkQuadCoverEigen::FromArray3(v) : Eigen::MatrixX3d());
     Eigen::VectorXd weight = Eigen::VectorXd::Ones(nf);
     if (w && w->GetNumberOfComponents() == 1 && w->GetNumberOfTuples() == nf)
     {

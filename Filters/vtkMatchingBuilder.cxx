@@ -83,84 +83,49 @@ int vtkMatchingBuilder::RequestData(
       vtkErrorMacro(<< "Cannot build matchings: " << names::FrameU << " has non-finite values.");
       return 0;
     }
-    quadcover::FrameTopology t = quadcover::computeMatchings(mesh.F, mesh.topo, geometry, U);
-    this->UpdateProgress(0.4);
-    const int branchBefore = t.branchPoints;
-    const double costBefore = t.matchingCost; // before the optimization changes t
-    int pathsChanged = 0;
-    quadcover::BranchPointOptions options;
-    options.branchPointWeight = this->BranchPointWeight;
-    options.maximumSearchSize = this->MaximumSearchSize;
-    options.lengthScaledCost = this->LengthScaledCost;
-    double objective[2];
-    objective[0] = options.branchPointWeight * t.singularities +
-      quadcover::scaledMatchingCost(mesh.F, mesh.topo, geometry, t, options.lengthScaledCost);
-    objective[1] = objective[0];
-    if (this->OptimizeBranchPoints && !this->GetAbortExecute())
+    vtkCellData* inCD = surface->GetCellData();
+    vtkDataArray* v = inCD->GetArray(names::FrameV);
+    vtkDataArray* w = inCD->GetArray(names::FrameWeight);
+    vtkDataArray* h = inCD->GetArray(names::FrameConstrained);
+    Eigen::VectorXd weight;
+    if (w && w->GetNumberOfComponents() == 1 && w->GetNumberOfTuples() == nf)
     {
-      const quadcover::BranchPointReport report =
-        quadcover::optimizeBranchPoints(mesh.F, mesh.topo, geometry, U, t, options);
-      pathsChanged = report.pathsChanged;
-      objective[1] = report.costAfter;
+      weight.resize(nf);
+      for (vtkIdType f = 0; f < nf; ++f)
+      {
+        weight[f] = w->GetComponent(f, 0);
+      }
     }
-    this->UpdateProgress(0.7);
-    Eigen::MatrixX3d fittedU;
-    Eigen::MatrixX3d fittedV;
-    if (this->FitFramesToMatchings && pathsChanged > 0 && !this->GetAbortExecute())
+    std::vector<char> held;
+    if (h && h->GetNumberOfComponents() == 1 && h->GetNumberOfTuples() == nf)
     {
-      vtkDataArray* w = surface->GetCellData()->GetArray(names::FrameWeight);
-      Eigen::VectorXd weight;
-      if (w && w->GetNumberOfComponents() == 1 && w->GetNumberOfTuples() == nf)
+      held.resize(nf);
+      for (vtkIdType f = 0; f < nf; ++f)
       {
-        weight.resize(nf);
-        for (vtkIdType f = 0; f < nf; ++f)
-        {
-          weight[f] = w->GetComponent(f, 0);
-        }
-        weight = weight.array().isFinite().select(weight, 0.0);
+        held[f] = h->GetComponent(f, 0) != 0.0;
       }
-      // frames vtkFrameSmoother held along the boundary stay held: the boundary must stay on
-      // grid lines (frames held along sharp edges may turn: holding them too left fans the map
-      // could not wind right on coarse meshes)
-      std::vector<char> held;
-      vtkDataArray* h = surface->GetCellData()->GetArray(names::FrameConstrained);
-      if (h && h->GetNumberOfComponents() == 1 && h->GetNumberOfTuples() == nf)
-      {
-        held.resize(nf);
-        for (vtkIdType f = 0; f < nf; ++f)
-        {
-          const bool boundary = mesh.topo.faceNeighbors(f, 0) < 0 ||
-            mesh.topo.faceNeighbors(f, 1) < 0 || mesh.topo.faceNeighbors(f, 2) < 0;
-          held[f] = boundary && h->GetComponent(f, 0) != 0.0;
-        }
-      }
-      const Eigen::VectorXd alpha = quadcover::fitFramesToMatchings(
-        mesh.V, mesh.F, mesh.topo, geometry, U, t.matching, weight, 0.97, held);
-      fittedU = U;
-      vtkDataArray* v = surface->GetCellData()->GetArray(names::FrameV);
-      if (v && v->GetNumberOfComponents() == 3 && v->GetNumberOfTuples() == nf)
-      {
-        fittedV = vtkQuadCoverEigen::FromArray3(v);
-      }
-      else
-      {
-        fittedV.resize(nf, 3);
-        for (vtkIdType f = 0; f < nf; ++f)
-        {
-          fittedV.row(f) = geometry.bases.normal.row(f).cross(U.row(f));
-        }
-      }
-      quadcover::rotateFrames(geometry.bases, alpha, fittedU, fittedV);
-      t = quadcover::evaluateMatchings(mesh.F, mesh.topo, geometry, fittedU, t.matching);
     }
+    quadcover::MatchingOptions options;
+    options.optimizeBranchPoints = this->OptimizeBranchPoints;
+    options.fitFramesToMatchings = this->FitFramesToMatchings;
+    options.branchPoints.branchPointWeight = this->BranchPointWeight;
+    options.branchPoints.maximumSearchSize = this->MaximumSearchSize;
+    options.branchPoints.lengthScaledCost = this->LengthScaledCost;
+    const quadcover::MatchingResult result = quadcover::buildMatchings(mesh.V, mesh.F, mesh.topo,
+      geometry, U,
+      v && v->GetNumberOfComponents() == 3 && v->GetNumberOfTuples() == nf
+        ? vtkQuadCoverEigen::FromArray3(v)
+        : Eigen::MatrixX3d(),
+      weight, held, options);
+    const quadcover::FrameTopology& t = result.topology;
     this->UpdateProgress(0.9);
 
     output->ShallowCopy(surface);
-    if (fittedU.rows() == nf)
+    if (result.framesFitted)
     {
       // new arrays: the input's stay untouched
-      output->GetCellData()->AddArray(vtkQuadCoverEigen::ToArray(fittedU, u->GetName()));
-      output->GetCellData()->AddArray(vtkQuadCoverEigen::ToArray(fittedV, names::FrameV));
+      output->GetCellData()->AddArray(vtkQuadCoverEigen::ToArray(result.frameU, u->GetName()));
+      output->GetCellData()->AddArray(vtkQuadCoverEigen::ToArray(result.frameV, names::FrameV));
     }
     vtkNew<vtkIntArray> matching;
     matching->SetName(names::Matching);
@@ -204,11 +169,11 @@ int vtkMatchingBuilder::RequestData(
     }
     fd->AddArray(table);
     vtkQuadCoverEigen::AddField<vtkIntArray>(
-      fd, names::BranchPointCount, { double(branchBefore), double(t.branchPoints) });
+      fd, names::BranchPointCount, { double(result.branchPointsBefore), double(t.branchPoints) });
     vtkQuadCoverEigen::AddField<vtkDoubleArray>(
-      fd, names::MatchingCost, { costBefore, t.matchingCost });
+      fd, names::MatchingCost, { result.matchingCostBefore, t.matchingCost });
     vtkQuadCoverEigen::AddField<vtkDoubleArray>(
-      fd, names::BranchPointObjective, { objective[0], objective[1] });
+      fd, names::BranchPointObjective, { result.objectiveBefore, result.objectiveAfter });
 
     // The branch points, for glyphs.
     vtkNew<vtkPoints> points;

@@ -23,7 +23,8 @@ struct Chain
 };
 
 /// Curvature frames, smoothing, matchings with branch-point optimization and the frames fitted
-/// to them (the filters' defaults), then the map with edge length sqrt(area / quads) (or options.targetEdgeLength).
+/// to them (the filters' defaults, buildMatchings), then the map with edge length
+/// sqrt(area / quads) (or options.targetEdgeLength).
 inline Chain runChain(
   Surface s, double quads, ParameterizationOptions options = ParameterizationOptions())
 {
@@ -33,26 +34,10 @@ inline Chain runChain(
   const CurvatureField c = computeCurvatureField(r.s.V, r.s.F, r.topo);
   const SmootherResult smooth =
     smoothFrames(r.s.V, r.s.F, r.topo, r.geometry, c.frameU, c.frameV, c.weight);
-  r.frameU = smooth.frameU;
-  r.field = computeMatchings(r.s.F, r.topo, r.geometry, r.frameU);
-  const BranchPointReport report =
-    optimizeBranchPoints(r.s.F, r.topo, r.geometry, r.frameU, r.field);
-  if (report.pathsChanged > 0)
-  {
-    std::vector<char> held(smooth.constrained.size(), 0); // the boundary's, as the filter does
-    for (std::size_t f = 0; f < held.size(); ++f)
-    {
-      const int i = static_cast<int>(f);
-      held[f] = smooth.constrained[f] &&
-        (r.topo.faceNeighbors(i, 0) < 0 || r.topo.faceNeighbors(i, 1) < 0 ||
-          r.topo.faceNeighbors(i, 2) < 0);
-    }
-    const Eigen::VectorXd alpha = fitFramesToMatchings(
-      r.s.V, r.s.F, r.topo, r.geometry, r.frameU, r.field.matching, c.weight, 0.97, held);
-    Eigen::MatrixX3d V = r.frameU;
-    rotateFrames(r.geometry.bases, alpha, r.frameU, V);
-    r.field = evaluateMatchings(r.s.F, r.topo, r.geometry, r.frameU, r.field.matching);
-  }
+  const MatchingResult m = buildMatchings(r.s.V, r.s.F, r.topo, r.geometry, smooth.frameU,
+    smooth.frameV, c.weight, smooth.constrained);
+  r.frameU = m.frameU;
+  r.field = m.topology;
   // a fixed edge length (no correction by the map's area) unless the options give one
   if (options.targetEdgeLength == 0.0)
   {
