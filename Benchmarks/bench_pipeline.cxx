@@ -9,7 +9,8 @@
 // Each case runs in a child process so that its peak resident memory (getrusage ru_maxrss of
 // the child: reading or generating the mesh included) is its own. Seconds are the best of K
 // runs of the stage on an already loaded surface.
-#include "QuadCoverIO.h"
+
+#include "TestSurfaceFiles.h"
 
 #include "vtkCurvatureFrames.h"
 #include "vtkFrameSmoother.h"
@@ -65,9 +66,7 @@ int RunCase(const Case& c, int threads, int repeat, int quads, int fd)
   else
   {
     std::string error;
-    vtkSmartPointer<vtkPolyData> raw = QuadCoverIO::ReadSurface(c.file, error);
-    QuadCoverIO::Repairs repairs;
-    surface = raw ? QuadCoverIO::PrepareSurface(raw, repairs, error) : nullptr;
+    surface = ReadRepaired(c.file, error);
     if (!surface)
     {
       return 1;

@@ -15,7 +15,7 @@ for mesh in Data/sphere.obj Data/torus.obj Data/knot.obj Data/roundedcube.obj Da
   "$shared"/bunny-lowres.obj "$shared"/spot.obj "$shared"/fandisk.obj "$shared"/rocker-arm.obj \
   "$shared"/cheburashka.obj "$shared"/teapot.obj; do
   [ -f "$mesh" ] || continue
-  build/bin/quadcover "$mesh" -o "$tmp/out.vtp" --stage param --target-quads "$quads" \
+  build/bin/quadcover "$mesh" -o "$tmp/out.vtp" --stage param --target-quad-count "$quads" \
     --stats "$tmp/s.json"
   /usr/bin/python3 - "$mesh" "$tmp/s.json" <<'PY'
 import json, os, sys
@@ -23,8 +23,7 @@ s = json.load(open(sys.argv[2]))
 p = s["param"]
 print("| %s | %d | %d (%d) | %d | %.4f → %.4f → %.4f | %d → %d → %d | %.2f |" % (
     os.path.basename(sys.argv[1]).replace(".obj", ""), s["surface"]["triangles"],
-    p["branch_points"], p["branch_points_on_grid"], p["seam_edges"], p["energy_continuous"],
-    p["energy_rounded"], p["energy"], p["flipped_continuous"], p["flipped_rounded"], p["flipped"],
-    s["seconds"]["param"]))
+    *p["branch_points_on_grid"], p["seam_edge_count"], *p["parameterization_energy"],
+    *p["flipped_triangles"], s["seconds"]["param"]))
 PY
 done

@@ -18,11 +18,11 @@ for mesh in Data/sphere.obj Data/torus.obj Data/knot.obj Data/roundedcube.obj Da
 import json, os, sys
 s = json.load(open(sys.argv[2]))
 sm, m = s["smooth"], s["matching"]
-by = ", ".join("%s: %d" % (k, v) for k, v in sorted(m["singularities_by_index"].items(), key=lambda kv: float(kv[0])))
-chi = round(m["index_sum"])
+by = ", ".join("%g: %d" % (index, count) for index, count in m["singularity_histogram"])
+chi = round(m["singularity_index_sum"])
 print("| %s | %d | %d | %d | %.3g → %.3g | %d → %d | %d (%s) | %.6g |" % (
     os.path.basename(sys.argv[1]).replace(".obj", ""), s["surface"]["triangles"], chi,
-    sm["held_triangles"], sm["energy_before"], sm["energy_after"], m["branch_points_before"],
-    m["branch_points_after"], m["singularities"], by or "none", m["index_sum"]))
+    sm["constrained_frame_count"], *sm["smoothing_energy"], *m["branch_point_count"],
+    m["singularity_count"], by or "none", m["singularity_index_sum"]))
 PY
 done

@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Quads at about QUADS quads (default 6,500) on the shared meshes for pairs of smoothing weight
-# (vtkFrameSmoother, --smoothing) and branch-point weight (vtkMatchingBuilder, --branch-weight):
+# (vtkFrameSmoother, --smoothing-weight) and branch-point weight (vtkMatchingBuilder,
+# --branch-point-weight):
 # irregular inner vertices, edge-length RSD / angle RSD, and (!) where the map kept a flipped
 # triangle or a fan wound the wrong way. The table that chose the defaults, kept in README.md.
 #   bash Benchmarks/tuning_table.sh [SHARED_DIR] [QUADS]      (after bash Scripts/build.sh)
@@ -25,14 +26,14 @@ for mesh in bunny-lowres spot fandisk rocker-arm cheburashka teapot; do
   row="| $mesh |"
   for p in "${pairs[@]}"; do
     set -- $p
-    build/bin/quadcover "$shared/$mesh.obj" -o "$tmp/q.vtp" --target-quads "$quads" \
-      --smoothing "$1" --branch-weight "$2" --no-hausdorff --stats "$tmp/s.json" 2>/dev/null
+    build/bin/quadcover "$shared/$mesh.obj" -o "$tmp/q.vtp" --target-quad-count "$quads" \
+      --smoothing-weight "$1" --branch-point-weight "$2" --no-compute-hausdorff-distance --stats "$tmp/s.json" 2>/dev/null
     row+=" $(/usr/bin/python3 - "$tmp/s.json" <<'PY'
 import json, sys
 s = json.load(open(sys.argv[1]))
 q, p = s["quads"], s["param"]
-bad = "" if p["flipped"] == 0 and p["winding_errors"] == 0 else " (!)"
-print("%d, %.1f / %.1f%%%s" % (q["irregular_inner"], 100 * q["edge_length_rsd"],
+bad = "" if p["flipped_triangles"][2] == 0 and p["winding_errors"] == 0 else " (!)"
+print("%d, %.1f / %.1f%%%s" % (q["irregular_vertices"][0], 100 * q["edge_length_rsd"],
                               100 * q["angle_rsd"], bad))
 PY
 ) |"

@@ -27,9 +27,9 @@
  * Errors (no output): no points, no triangles, point ids out of range, non-finite coordinates,
  * non-manifold edges (three or more triangles on one edge), inconsistently oriented neighbours,
  * and a surface whose triangles all have zero area. Triangles that repeat a point id (e.g. the
- * joins of triangle strips) carry no surface and are dropped with a warning. Merge duplicate points
- * and orient the surface first (vtkCleanPolyData, vtkPolyDataNormals with ConsistencyOn); the
- * quadcover command line does both. Vertices and lines are dropped with a warning. Zero-area
+ * joins of triangle strips) carry no surface and are dropped with a warning. Run
+ * vtkQuadCoverSurfaceRepair first on a raw surface (it merges duplicate points, orients the
+ * triangles and splits non-manifold vertices). Vertices and lines are dropped with a warning. Zero-area
  * triangles are accepted: they take their neighbourhood's normal and their edges add no bending
  * (zero frames, with a warning, where no neighbour has a normal either). Non-manifold vertices
  * (fans touching at one vertex) only give a warning: they do not disturb a per-triangle estimate.
@@ -40,14 +40,14 @@
 #ifndef vtkCurvatureFrames_h
 #define vtkCurvatureFrames_h
 
-#include "vtkPolyDataAlgorithm.h"
+#include "vtkQuadCoverAlgorithm.h"
 #include "vtkQuadCoverFiltersModule.h" // for export macro
 
-class VTKQUADCOVERFILTERS_EXPORT vtkCurvatureFrames : public vtkPolyDataAlgorithm
+class VTKQUADCOVERFILTERS_EXPORT vtkCurvatureFrames : public vtkQuadCoverAlgorithm
 {
 public:
   static vtkCurvatureFrames* New();
-  vtkTypeMacro(vtkCurvatureFrames, vtkPolyDataAlgorithm);
+  vtkTypeMacro(vtkCurvatureFrames, vtkQuadCoverAlgorithm);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   ///@{
@@ -82,11 +82,11 @@ protected:
   vtkCurvatureFrames();
   ~vtkCurvatureFrames() override = default;
 
-  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+  void Execute(vtkQuadCoverSurface& input, vtkInformationVector* outputVector) override;
 
-  double NeighborhoodRadius = 2.0;
+  double NeighborhoodRadius; // defaults: quadcover::CurvatureOptions
+  int NumberOfThreads;
   bool UseInputFrames = true;
-  int NumberOfThreads = 0;
 
 private:
   vtkCurvatureFrames(const vtkCurvatureFrames&) = delete;

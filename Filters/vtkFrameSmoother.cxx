@@ -7,8 +7,6 @@
 #include "vtkDataObject.h"
 #include "vtkDoubleArray.h"
 #include "vtkFieldData.h"
-#include "vtkInformation.h"
-#include "vtkInformationVector.h"
 #include "vtkIntArray.h"
 #include "vtkObjectFactory.h"
 #include "vtkPolyData.h"
@@ -17,13 +15,21 @@
 #include "FrameSmoother.h"
 #include "Matchings.h"
 
-#include <exception>
-
 vtkStandardNewMacro(vtkFrameSmoother);
 
 //------------------------------------------------------------------------------
 vtkFrameSmoother::vtkFrameSmoother()
+  : vtkQuadCoverAlgorithm(MANIFOLD_EDGES, "smooth frames")
 {
+  const quadcover::SmootherOptions defaults;
+  this->SmoothingWeight = defaults.smoothingWeight;
+  this->MaximumNumberOfIterations = defaults.maximumNumberOfIterations;
+  this->ConvergenceTolerance = defaults.convergenceTolerance;
+  this->AlignToFeatures = defaults.alignToFeatures;
+  this->FeatureAngle = defaults.featureAngle;
+  this->MinimumFeatureLength = defaults.minimumFeatureLength;
+  this->AlignToBoundary = defaults.alignToBoundary;
+  this->GlobalStart = defaults.globalStart;
   namespace names = vtkQuadCoverArrayNames;
   this->SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_CELLS, names::FrameU);
   this->SetInputArrayToProcess(1, 0, 0, vtkDataObject::FIELD_ASSOCIATION_CELLS, names::FrameV);
@@ -31,100 +37,54 @@ vtkFrameSmoother::vtkFrameSmoother()
 }
 
 //------------------------------------------------------------------------------
-int vtkFrameSmoother::RequestData(
-  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+void vtkFrameSmoother::Execute(vtkQuadCoverSurface& in, vtkInformationVector* outputVector)
 {
   namespace names = vtkQuadCoverArrayNames;
-  vtkPolyData* input = vtkPolyData::GetData(inputVector[0]);
-  vtkPolyData* output = vtkPolyData::GetData(outputVector);
-
-  vtkNew<vtkPolyData> surface;
-  vtkQuadCoverEigen::Mesh mesh;
-  std::string warning;
-  const std::string problem =
-    vtkQuadCoverEigen::Load(input, surface, mesh, vtkQuadCoverEigen::Needs::ManifoldEdges, warning);
-  if (!problem.empty())
-  {
-    vtkErrorMacro(<< "Cannot smooth frames: " << problem << ".");
-    return 0;
-  }
-  if (!warning.empty())
-  {
-    vtkWarningMacro(<< warning << ".");
-  }
-  const vtkIdType nf = mesh.F.rows();
-  vtkDataArray* u = this->GetInputArrayToProcess(0, surface);
-  vtkDataArray* v = this->GetInputArrayToProcess(1, surface);
-  vtkDataArray* w = this->GetInputArrayToProcess(2, surface);
-  const std::string missing = vtkQuadCoverEigen::CheckCellArray3(u, nf, names::FrameU,
+  const vtkIdType nf = in.NumberOfTriangles();
+  vtkDataArray* u = this->RequireCellArray(0, in.polyData, 3, names::FrameU,
     "run vtkCurvatureFrames first, or name your own with SetInputArrayToProcess");
-  if (!missing.empty())
-  {
-    vtkErrorMacro(<< "Cannot smooth frames: " << missing << ".");
-    return 0;
-  }
+  vtkDataArray* v = this->GetInputArrayToProcess(1, in.polyData);
+  vtkDataArray* w = this->GetInputArrayToProcess(2, in.polyData);
   this->UpdateProgress(0.1);
-  if (this->GetAbortExecute())
-  {
-    return 1;
-  }
+  const quadcover::FrameGeometry geometry = quadcover::computeFrameGeometry(in.V, in.F, in.topo);
+  // Frames as tangent unit vectors; FrameV defaults to n x FrameU, the weight to 1.
+  const bool haveV = v && v->GetNumberOfComponents() == 3 && v->GetNumberOfTuples() == nf;
+  const auto [U, Vf] = quadcover::tangentFrames(geometry.bases, vtkQuadCoverEigen::FromArray3(u),
+    haveV ? vtkQuadCoverEigen::FromArray3(v) : Eigen::MatrixX3d());
+  const bool haveWeight = w && w->GetNumberOfComponents() == 1 && w->GetNumberOfTuples() == nf;
+  const Eigen::VectorXd weight =
+    haveWeight ? Eigen::VectorXd(vtkQuadCoverEigen::FromArray(w)) : Eigen::VectorXd::Ones(nf);
+  this->UpdateProgress(0.2);
 
-  try
-  {
-    const quadcover::FrameGeometry geometry =
-      quadcover::computeFrameGeometry(mesh.V, mesh.F, mesh.topo);
-    // Frames as tangent unit vectors; FrameV defaults to n x FrameU, the weight to 1.
-    const bool haveV = v && v->GetNumberOfComponents() == 3 && v->GetNumberOfTuples() == nf;
-    const auto [U, Vf] = quadcover::tangentFrames(geometry.bases, vtkQuadCoverEigen::FromArray3(u),
-      haveV ? vtkQuadCoverEigen::FromArray3(v) : Eigen::MatrixX3d());
-    Eigen::VectorXd weight = Eigen::VectorXd::Ones(nf);
-    if (w && w->GetNumberOfComponents() == 1 && w->GetNumberOfTuples() == nf)
-    {
-      for (vtkIdType f = 0; f < nf; ++f)
-      {
-        weight[f] = w->GetComponent(f, 0);
-      }
-    }
-    this->UpdateProgress(0.2);
+  quadcover::SmootherOptions options;
+  options.smoothingWeight = this->SmoothingWeight;
+  options.maximumNumberOfIterations = this->MaximumNumberOfIterations;
+  options.convergenceTolerance = this->ConvergenceTolerance;
+  options.alignToFeatures = this->AlignToFeatures;
+  options.featureAngle = this->FeatureAngle;
+  options.minimumFeatureLength = this->MinimumFeatureLength;
+  options.alignToBoundary = this->AlignToBoundary;
+  options.globalStart = this->GlobalStart;
+  const quadcover::SmootherResult r = quadcover::smoothFrames(in.V, in.F, in.topo, geometry, U, Vf,
+    weight, options, vtkQuadCoverEigen::CoreProgress(this, 0.2, 0.95));
 
-    quadcover::SmootherOptions options;
-    options.smoothingWeight = this->SmoothingWeight;
-    options.maximumNumberOfIterations = this->MaximumNumberOfIterations;
-    options.convergenceTolerance = this->ConvergenceTolerance;
-    options.alignToFeatures = this->AlignToFeatures;
-    options.featureAngle = this->FeatureAngle;
-    options.minimumFeatureLength = this->MinimumFeatureLength;
-    options.alignToBoundary = this->AlignToBoundary;
-    options.globalStart = this->GlobalStart;
-    const quadcover::SmootherResult r =
-      quadcover::smoothFrames(mesh.V, mesh.F, mesh.topo, geometry, U, Vf, weight, options);
-    this->UpdateProgress(0.9);
-
-    output->ShallowCopy(surface);
-    vtkCellData* cd = output->GetCellData();
-    cd->AddArray(vtkQuadCoverEigen::ToArray(r.frameU, names::FrameU));
-    cd->AddArray(vtkQuadCoverEigen::ToArray(r.frameV, names::FrameV));
-    cd->AddArray(vtkQuadCoverEigen::ToArray(r.rotation, names::FrameRotation));
-    vtkNew<vtkUnsignedCharArray> held;
-    held->SetName(names::FrameConstrained);
-    held->SetNumberOfTuples(nf);
-    for (vtkIdType f = 0; f < nf; ++f)
-    {
-      held->SetValue(f, r.constrained[f]);
-    }
-    cd->AddArray(held);
-    vtkQuadCoverEigen::AddField<vtkDoubleArray>(
-      output->GetFieldData(), names::SmoothingEnergy, { r.energyBefore, r.energyAfter });
-    vtkQuadCoverEigen::AddField<vtkIntArray>(
-      output->GetFieldData(), names::SmoothingIterations, { double(r.iterations) });
-  }
-  catch (const std::exception& e)
-  {
-    vtkErrorMacro(<< "Cannot smooth frames: " << e.what());
-    return 0;
-  }
-  this->UpdateProgress(1.0);
-  return 1;
+  vtkPolyData* output = vtkPolyData::GetData(outputVector);
+  output->ShallowCopy(in.polyData);
+  vtkCellData* cd = output->GetCellData();
+  using vtkQuadCoverEigen::ToArray;
+  cd->AddArray(ToArray(r.frameU, names::FrameU));
+  cd->AddArray(ToArray(r.frameV, names::FrameV));
+  cd->AddArray(ToArray(r.rotation, names::FrameRotation));
+  cd->AddArray(ToArray<vtkUnsignedCharArray>(
+    Eigen::Map<const Eigen::Matrix<char, Eigen::Dynamic, 1>>(r.constrained.data(), nf),
+    names::FrameConstrained));
+  vtkFieldData* fd = output->GetFieldData();
+  vtkQuadCoverEigen::AddField<vtkDoubleArray>(
+    fd, names::SmoothingEnergy, { r.energyBefore, r.energyAfter });
+  vtkQuadCoverEigen::AddField<vtkIntArray>(
+    fd, names::SmoothingIterations, { double(r.iterations) });
+  vtkQuadCoverEigen::AddField<vtkIntArray>(
+    fd, names::ConstrainedFrameCount, { double(r.numConstrained) });
 }
 
 //------------------------------------------------------------------------------

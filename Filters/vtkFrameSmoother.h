@@ -30,8 +30,8 @@
  * point the filter at others with SetInputArrayToProcess(0|1|2, 0, 0,
  * vtkDataObject::FIELD_ASSOCIATION_CELLS, name). Output: the surface with FrameU and FrameV
  * replaced by the smoothed frames, cell data FrameRotation and FrameConstrained, field data
- * SmoothingEnergy (before: the input with held frames already on their edges; after) and
- * SmoothingIterations. Names: vtkQuadCoverArrayNames.h.
+ * SmoothingEnergy (before: the input with held frames already on their edges; after),
+ * SmoothingIterations and ConstrainedFrameCount. Names: vtkQuadCoverArrayNames.h.
  *
  * Errors: no points, no polygons, point ids out of range, non-finite coordinates, non-manifold
  * edges, inconsistently oriented neighbours, and a missing FrameU.
@@ -40,14 +40,14 @@
 #ifndef vtkFrameSmoother_h
 #define vtkFrameSmoother_h
 
-#include "vtkPolyDataAlgorithm.h"
+#include "vtkQuadCoverAlgorithm.h"
 #include "vtkQuadCoverFiltersModule.h" // for export macro
 
-class VTKQUADCOVERFILTERS_EXPORT vtkFrameSmoother : public vtkPolyDataAlgorithm
+class VTKQUADCOVERFILTERS_EXPORT vtkFrameSmoother : public vtkQuadCoverAlgorithm
 {
 public:
   static vtkFrameSmoother* New();
-  vtkTypeMacro(vtkFrameSmoother, vtkPolyDataAlgorithm);
+  vtkTypeMacro(vtkFrameSmoother, vtkQuadCoverAlgorithm);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   ///@{
@@ -105,16 +105,17 @@ protected:
   vtkFrameSmoother();
   ~vtkFrameSmoother() override = default;
 
-  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+  void Execute(vtkQuadCoverSurface& input, vtkInformationVector* outputVector) override;
 
-  double SmoothingWeight = 0.95;
-  int MaximumNumberOfIterations = 200;
-  double ConvergenceTolerance = 1e-7;
-  bool AlignToFeatures = true;
-  double FeatureAngle = 60.0;
-  int MinimumFeatureLength = 3;
-  bool AlignToBoundary = true;
-  bool GlobalStart = true;
+  // defaults: quadcover::SmootherOptions
+  double SmoothingWeight;
+  int MaximumNumberOfIterations;
+  double ConvergenceTolerance;
+  bool AlignToFeatures;
+  double FeatureAngle;
+  int MinimumFeatureLength;
+  bool AlignToBoundary;
+  bool GlobalStart;
 
 private:
   vtkFrameSmoother(const vtkFrameSmoother&) = delete;

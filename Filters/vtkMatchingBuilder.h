@@ -19,6 +19,7 @@
  * X_{neighbour,m} = X_{this,(m - r) mod 4}, X_0 = FrameU, X_1 = n x FrameU, ...; -1 on boundary
  * edges), point data LayerShift (int, 0 on the boundary) and SingularityIndex (double), field
  * data SingularityCount, SingularityHistogram ((index, inner points) per non-zero index),
+ * SingularityIndexSum (the sum of all points' indices: the Euler characteristic),
  * BranchPointCount (before, after), MatchingCost (before, after) and BranchPointObjective
  * (before, after: the cost the optimization lowers).
  * Output 1: the branch points (non-zero layer shift) as points with vertex cells and point data
@@ -38,14 +39,14 @@
 #ifndef vtkMatchingBuilder_h
 #define vtkMatchingBuilder_h
 
-#include "vtkPolyDataAlgorithm.h"
+#include "vtkQuadCoverAlgorithm.h"
 #include "vtkQuadCoverFiltersModule.h" // for export macro
 
-class VTKQUADCOVERFILTERS_EXPORT vtkMatchingBuilder : public vtkPolyDataAlgorithm
+class VTKQUADCOVERFILTERS_EXPORT vtkMatchingBuilder : public vtkQuadCoverAlgorithm
 {
 public:
   static vtkMatchingBuilder* New();
-  vtkTypeMacro(vtkMatchingBuilder, vtkPolyDataAlgorithm);
+  vtkTypeMacro(vtkMatchingBuilder, vtkQuadCoverAlgorithm);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   ///@{
@@ -77,6 +78,17 @@ public:
   ///@}
 
   ///@{
+  /**
+   * Degrees, in [0, 45] (default 10): frames within this angle of a boundary edge follow it, as
+   * vtkQuadCoverSolver's BoundaryTolerance puts such edges on grid lines. A merge is undone when
+   * it would leave a tube between two boundary loops with its frames following the loops in
+   * different directions (the map would have to twist). Give both filters the same value.
+   */
+  vtkSetClampMacro(BoundaryTolerance, double, 0.0, 45.0);
+  vtkGetMacro(BoundaryTolerance, double);
+  ///@}
+
+  ///@{
   /** Points one search may visit from a branch point, in [1, 10^7] (default 20000). */
   vtkSetClampMacro(MaximumSearchSize, int, 1, 10000000);
   vtkGetMacro(MaximumSearchSize, int);
@@ -104,13 +116,15 @@ protected:
   vtkMatchingBuilder();
   ~vtkMatchingBuilder() override = default;
 
-  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+  void Execute(vtkQuadCoverSurface& input, vtkInformationVector* outputVector) override;
 
-  bool OptimizeBranchPoints = true;
-  double BranchPointWeight = 4.0;
-  int MaximumSearchSize = 20000;
-  bool LengthScaledCost = true;
-  bool FitFramesToMatchings = true;
+  // defaults: quadcover::MatchingOptions and BranchPointOptions
+  bool OptimizeBranchPoints;
+  double BranchPointWeight;
+  int MaximumSearchSize;
+  bool LengthScaledCost;
+  double BoundaryTolerance;
+  bool FitFramesToMatchings;
 
 private:
   vtkMatchingBuilder(const vtkMatchingBuilder&) = delete;

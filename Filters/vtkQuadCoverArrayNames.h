@@ -3,14 +3,28 @@
  * @brief  The names of every array passed down the QuadCover pipeline: the public contract.
  *
  * Each stage reads the arrays the previous stage wrote and adds its own. The table in
- * README.md ("Arrays") lists, for every name here, its association, components, type, the filter
- * that writes it and the filters that read it. Change a name here and there, never elsewhere.
+ * Documentation/Arrays.md lists, for every name here, its association, components, type, the
+ * filter that writes it and the filters that read it (a test checks that the two agree). The
+ * command line's --stats JSON names each field-data array in snake_case (EdgeLength:
+ * "edge_length"). Change a name here and there, never elsewhere.
  */
 #ifndef vtkQuadCoverArrayNames_h
 #define vtkQuadCoverArrayNames_h
 
 namespace vtkQuadCoverArrayNames
 {
+// ---- vtkQuadCoverSurfaceRepair (field data, 1 x int each: what the repair changed) ----
+/// duplicate points merged into one (exactly coincident coordinates)
+constexpr const char* MergedPoints = "MergedPoints";
+/// vertex and line cells, and triangles left with a repeated point, removed
+constexpr const char* RemovedCells = "RemovedCells";
+/// polygons with more than three sides, and strips, triangulated
+constexpr const char* TriangulatedPolygons = "TriangulatedPolygons";
+/// triangles turned over to agree with their neighbours
+constexpr const char* ReorientedTriangles = "ReorientedTriangles";
+/// copies of a point added where separate fans of triangles touched at it
+constexpr const char* SplitVertices = "SplitVertices";
+
 // ---- vtkCurvatureFrames (cell data, one tuple per triangle) ----
 /// 2 x double: kappa1 >= kappa2. Positive where the surface bends away from its normal
 /// (a sphere with outward normals has +1/R).
@@ -40,6 +54,8 @@ constexpr const char* FrameConstrained = "FrameConstrained";
 constexpr const char* SmoothingEnergy = "SmoothingEnergy";
 /// field, 1 x int: iterations of the chosen run.
 constexpr const char* SmoothingIterations = "SmoothingIterations";
+/// field, 1 x int: triangles whose frame is held (FrameConstrained).
+constexpr const char* ConstrainedFrameCount = "ConstrainedFrameCount";
 
 // ---- vtkMatchingBuilder ----
 /// cell, 3 x int: for edge k = (point k, point k+1) of the triangle, the matching r in {0..3} to
@@ -55,6 +71,9 @@ constexpr const char* SingularityCount = "SingularityCount";
 /// field, 2 x double per tuple (index, number of inner points with it), one tuple per non-zero
 /// index, ascending.
 constexpr const char* SingularityHistogram = "SingularityHistogram";
+/// field, 1 x double: the sum of every point's SingularityIndex, inner and boundary: the Euler
+/// characteristic (Poincare-Hopf).
+constexpr const char* SingularityIndexSum = "SingularityIndexSum";
 /// field, 1 x int, 2 tuples: branch points (non-zero layer shift) before and after the
 /// optimization.
 constexpr const char* BranchPointCount = "BranchPointCount";
@@ -77,10 +96,11 @@ constexpr const char* Seam = "Seam";
 /// point, 2 x double, SplitSeams output only: (u, v) of each point of the cut-open surface, the
 /// active texture coordinates.
 constexpr const char* UV = "UV";
-/// field, 1 x double: world length of one grid unit, the length the frames are fitted to (where
-/// the map is stretched or compressed the quads' edges are longer or shorter; their mean is a few
-/// per cent above it when TargetQuadCount chose it).
-constexpr const char* GridScale = "GridScale";
+/// field, 1 x double: the edge length of the grid, the world length of one grid unit that the
+/// frames are fitted to: TargetEdgeLength, or the length TargetQuadCount chose (where the map is
+/// stretched or compressed the quads' edges are longer or shorter; their mean is a few per cent
+/// above it when TargetQuadCount chose it).
+constexpr const char* EdgeLength = "EdgeLength";
 /// field, 1 x int, 3 tuples: triangles with a flipped or degenerate (u, v) image in the
 /// continuous minimizer, after rounding, and in the output map (after untangling).
 constexpr const char* FlippedTriangles = "FlippedTriangles";
@@ -94,6 +114,8 @@ constexpr const char* ParameterizationEnergy = "ParameterizationEnergy";
 constexpr const char* SolveSeconds = "SolveSeconds";
 /// field, 1 x int: edges on the cut graph.
 constexpr const char* SeamEdgeCount = "SeamEdgeCount";
+/// field, 1 x int: boundary edges put on integer grid lines (AlignToBoundary).
+constexpr const char* AlignedBoundaryEdges = "AlignedBoundaryEdges";
 /// field, 1 x int, 2 tuples: branch points, and those mapped to a grid point.
 constexpr const char* BranchPointsOnGrid = "BranchPointsOnGrid";
 /// field, 1 x double: largest distance of a seam translation from Z^2 (grid units).

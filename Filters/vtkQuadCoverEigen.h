@@ -1,9 +1,11 @@
 // vtkQuadCoverEigen.h (private): copies between vtkPolyData/vtkDataArray and the core's Eigen
-// matrices. Not wrapped or installed (Eigen types must stay out of the public, wrapped headers);
-// the in-tree command line, tests and benchmarks use it too.
+// matrices, the core's progress forwarded to an algorithm, and a stage's checked input. Not
+// wrapped or installed (Eigen types must stay out of the public, wrapped headers); the tests
+// and benchmarks use it too.
 #ifndef vtkQuadCoverEigen_h
 #define vtkQuadCoverEigen_h
 
+#include "vtkAlgorithm.h"
 #include "vtkCellArray.h"
 #include "vtkDataArray.h"
 #include "vtkDoubleArray.h"
@@ -15,13 +17,13 @@
 #include "vtkSmartPointer.h"
 
 #include "MeshTopology.h"
-#include "vtkQuadCoverInput.h"
+#include "Progress.h"
 
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 
-#include <initializer_list>
-#include <string>
+#include <memory>
+#include <vector>
 
 namespace vtkQuadCoverEigen
 {
@@ -80,11 +82,12 @@ inline vtkSmartPointer<vtkPolyData> ToPolyData(const Eigen::MatrixX3d& V, const 
   return pd;
 }
 
-/// A new double array named `name` with the rows of M as tuples.
-template<typename Derived>
-vtkSmartPointer<vtkDoubleArray> ToArray(const Eigen::MatrixBase<Derived>& M, const char* name)
+/// A new array of type ArrayT (vtkDoubleArray unless given) named `name` with the rows of M as
+/// tuples.
+template<typename ArrayT = vtkDoubleArray, typename Derived>
+vtkSmartPointer<ArrayT> ToArray(const Eigen::MatrixBase<Derived>& M, const char* name)
 {
-  auto a = vtkSmartPointer<vtkDoubleArray>::New();
+  auto a = vtkSmartPointer<ArrayT>::New();
   a->SetName(name);
   a->SetNumberOfComponents(static_cast<int>(M.cols()));
   a->SetNumberOfTuples(M.rows());
@@ -92,7 +95,8 @@ vtkSmartPointer<vtkDoubleArray> ToArray(const Eigen::MatrixBase<Derived>& M, con
   {
     for (Eigen::Index j = 0; j < M.cols(); ++j)
     {
-      a->SetTypedComponent(i, static_cast<int>(j), M(i, j));
+      a->SetTypedComponent(
+        i, static_cast<int>(j), static_cast<typename ArrayT::ValueType>(M(i, j)));
     }
   }
   return a;
@@ -100,7 +104,7 @@ vtkSmartPointer<vtkDoubleArray> ToArray(const Eigen::MatrixBase<Derived>& M, con
 
 /// Adds a field-data array `name` of type ArrayT holding `values` (one component).
 template<typename ArrayT>
-void AddField(vtkFieldData* fd, const char* name, std::initializer_list<double> values)
+void AddField(vtkFieldData* fd, const char* name, const std::vector<double>& values)
 {
   vtkNew<ArrayT> a;
   a->SetName(name);
@@ -111,13 +115,13 @@ void AddField(vtkFieldData* fd, const char* name, std::initializer_list<double> 
   fd->AddArray(a);
 }
 
-/// #tuples x 3 from a 3-component array.
-inline Eigen::MatrixX3d FromArray3(vtkDataArray* a)
+/// #tuples x #components of any data array.
+inline Eigen::MatrixXd FromArray(vtkDataArray* a)
 {
-  Eigen::MatrixX3d M(a->GetNumberOfTuples(), 3);
+  Eigen::MatrixXd M(a->GetNumberOfTuples(), a->GetNumberOfComponents());
   for (vtkIdType i = 0; i < a->GetNumberOfTuples(); ++i)
   {
-    for (int j = 0; j < 3; ++j)
+    for (int j = 0; j < a->GetNumberOfComponents(); ++j)
     {
       M(i, j) = a->GetComponent(i, j);
     }
@@ -125,68 +129,40 @@ inline Eigen::MatrixX3d FromArray3(vtkDataArray* a)
   return M;
 }
 
-/// "" when `a` has 3 components and one tuple per triangle (#F = nf), else the one-line reason:
-/// "the input has no 3-component cell array NAME (HINT)".
-inline std::string CheckCellArray3(
-  vtkDataArray* a, vtkIdType nf, const char* name, const char* hint)
+/// #tuples x 3 from a 3-component array.
+inline Eigen::MatrixX3d FromArray3(vtkDataArray* a)
 {
-  if (a && a->GetNumberOfComponents() == 3 && a->GetNumberOfTuples() == nf)
-  {
-    return "";
-  }
-  return std::string("the input has no 3-component cell array ") + name + " (" + hint + ")";
+  return FromArray(a);
 }
 
-/// A triangle surface as the core sees it.
-struct Mesh
+/// A Core progress that forwards to `algorithm`'s UpdateProgress, mapped into [begin, end] and
+/// at most once per 1%, and stops the computation (quadcover::Cancelled) once AbortExecute is
+/// set.
+inline quadcover::Progress CoreProgress(vtkAlgorithm* algorithm, double begin, double end)
 {
-  Eigen::MatrixX3d V;
-  Eigen::MatrixX3i F;
-  quadcover::MeshTopology topo;
+  auto last = std::make_shared<double>(-1.0);
+  return quadcover::Progress([algorithm, begin, end, last](double fraction) {
+    const double p = begin + (end - begin) * fraction;
+    if (p >= *last + 0.01 || (fraction >= 1.0 && p > *last))
+    {
+      *last = p;
+      algorithm->UpdateProgress(p);
+    }
+    return !algorithm->GetAbortExecute();
+  });
+}
+}
+
+/// A stage's input once vtkQuadCoverAlgorithm has checked it (see its InputRequirement): the
+/// surface of triangles (the input itself when it held nothing else) and the core's view of it.
+struct vtkQuadCoverSurface
+{
+  vtkSmartPointer<vtkPolyData> polyData;
+  Eigen::MatrixX3d V;           ///< #V x 3 (not filled for ANY_POLYDATA)
+  Eigen::MatrixX3i F;           ///< #F x 3
+  quadcover::MeshTopology topo; ///< buildTopology(F, #V)
+  vtkIdType NumberOfTriangles() const { return this->F.rows(); }
 };
-
-/// What a stage needs of the surface's connectivity.
-enum class Needs
-{
-  ManifoldEdges,   ///< at most two triangles per edge, consistently oriented
-  ManifoldSurface, ///< and every vertex's triangles one fan (ordered one-rings)
-};
-
-/**
- * The check every filter starts with: triangulates `input` into `surface` (see
- * vtkQuadCoverInput::Triangulate), copies it into `mesh` and checks its connectivity.
- * @return "" or a one-line reason; `warning` gets what was dropped or is doubtful.
- */
-inline std::string Load(
-  vtkPolyData* input, vtkPolyData* surface, Mesh& mesh, Needs needs, std::string& warning)
-{
-  std::string problem = vtkQuadCoverInput::Triangulate(input, surface, warning);
-  if (!problem.empty())
-  {
-    return problem;
-  }
-  mesh.V = Points(surface);
-  mesh.F = Triangles(surface);
-  mesh.topo = quadcover::buildTopology(mesh.F, static_cast<int>(mesh.V.rows()));
-  const quadcover::MeshTopology& T = mesh.topo;
-  const bool vertices = needs == Needs::ManifoldSurface;
-  if (!T.degenerateFaces.empty() || !T.nonManifoldEdges.empty() || !T.misorientedEdges.empty() ||
-    (vertices && !T.nonManifoldVertices.empty()))
-  {
-    return "the surface has " + T.describeDefects() +
-      "; merge duplicate points, remove non-manifold parts (split non-manifold vertices) and "
-      "orient the triangles consistently first (the quadcover command line does all this)";
-  }
-  if (!T.nonManifoldVertices.empty())
-  {
-    warning += std::string(warning.empty() ? "" : "; ") +
-      std::to_string(T.nonManifoldVertices.size()) +
-      " non-manifold vertices (fans of triangles touching at one vertex); later stages need them "
-      "split";
-  }
-  return "";
-}
-}
 
 #endif
 // VTK-HeaderTest-Exclude: vtkQuadCoverEigen.h

@@ -9,8 +9,6 @@
 #include "vtkDoubleArray.h"
 #include "vtkFieldData.h"
 #include "vtkIdTypeArray.h"
-#include "vtkInformation.h"
-#include "vtkInformationVector.h"
 #include "vtkIntArray.h"
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
@@ -18,193 +16,176 @@
 #include "vtkPolyData.h"
 #include "vtkUnsignedCharArray.h"
 
+#include "Matchings.h"
 #include "Parameterization.h"
 
-#include <exception>
+#include <cmath>
+#include <stdexcept>
 
 vtkStandardNewMacro(vtkQuadCoverSolver);
 
-//------------------------------------------------------------------------------
-vtkQuadCoverSolver::vtkQuadCoverSolver()
+namespace
 {
-  this->SetInputArrayToProcess(
-    0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_CELLS, vtkQuadCoverArrayNames::FrameU);
-  this->SetInputArrayToProcess(
-    1, 0, 0, vtkDataObject::FIELD_ASSOCIATION_CELLS, vtkQuadCoverArrayNames::Matching);
+namespace names = vtkQuadCoverArrayNames;
+
+quadcover::RoundingMode CoreRounding(int mode)
+{
+  return mode == vtkQuadCoverSolver::ROUNDING_NONE
+    ? quadcover::RoundingMode::None
+    : (mode == vtkQuadCoverSolver::ROUNDING_SIMPLE ? quadcover::RoundingMode::Simple
+                                                   : quadcover::RoundingMode::Greedy);
+}
+
+int FilterRounding(quadcover::RoundingMode mode)
+{
+  return mode == quadcover::RoundingMode::None
+    ? vtkQuadCoverSolver::ROUNDING_NONE
+    : (mode == quadcover::RoundingMode::Simple ? vtkQuadCoverSolver::ROUNDING_SIMPLE
+                                               : vtkQuadCoverSolver::ROUNDING_GREEDY);
+}
+
+/// The Matching array as integers, checked (quadcover::checkMatching).
+Eigen::MatrixX3i ReadMatching(vtkDataArray* m, const quadcover::MeshTopology& topo)
+{
+  const Eigen::MatrixXd values = vtkQuadCoverEigen::FromArray(m);
+  if (!(values.array() == values.array().round()).all())
+  {
+    throw std::invalid_argument(std::string(names::Matching) + " holds values that are not whole");
+  }
+  const Eigen::MatrixX3i matching = values.cast<int>();
+  const std::string problem = quadcover::checkMatching(topo, matching);
+  if (!problem.empty())
+  {
+    throw std::invalid_argument(problem);
+  }
+  return matching;
+}
+
+/// The surface cut open along the seams: a point per sector, UV its texture coordinates.
+void WriteSplitSurface(vtkPolyData* output, const vtkQuadCoverSurface& in,
+  const quadcover::Parameterization& map)
+{
+  const vtkIdType ns = static_cast<vtkIdType>(map.sectorPoint.size());
+  const vtkIdType nf = in.NumberOfTriangles();
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  points->SetNumberOfPoints(ns);
+  vtkPointData* inPD = in.polyData->GetPointData();
+  vtkPointData* outPD = output->GetPointData();
+  outPD->CopyAllocate(inPD, ns);
+  vtkNew<vtkIdTypeArray> ids;
+  ids->SetName(names::SurfacePointId);
+  ids->SetNumberOfTuples(ns);
+  for (vtkIdType s = 0; s < ns; ++s)
+  {
+    const int p = map.sectorPoint[s];
+    points->SetPoint(s, in.V(p, 0), in.V(p, 1), in.V(p, 2));
+    outPD->CopyData(inPD, p, s);
+    ids->SetValue(s, p);
+  }
+  vtkNew<vtkCellArray> polys;
+  polys->AllocateExact(nf, 3 * nf);
+  for (vtkIdType f = 0; f < nf; ++f)
+  {
+    const vtkIdType cell[3] = { map.cornerSector[3 * f], map.cornerSector[3 * f + 1],
+      map.cornerSector[3 * f + 2] };
+    polys->InsertNextCell(3, cell);
+  }
+  output->SetPoints(points);
+  output->SetPolys(polys);
+  output->GetCellData()->ShallowCopy(in.polyData->GetCellData());
+  output->GetFieldData()->ShallowCopy(in.polyData->GetFieldData());
+  outPD->AddArray(ids);
+  outPD->SetTCoords(vtkQuadCoverEigen::ToArray(map.sectorUV, names::UV));
+}
+
+/// The map's figures as field data.
+void AddFigures(vtkFieldData* fd, const quadcover::Parameterization& map)
+{
+  using vtkQuadCoverEigen::AddField;
+  AddField<vtkDoubleArray>(fd, names::EdgeLength, { map.edgeLength });
+  AddField<vtkIntArray>(fd, names::WindingErrors, { double(map.wrongWindings) });
+  AddField<vtkIntArray>(fd, names::FlippedTriangles,
+    { double(map.flippedContinuous), double(map.flippedRounded), double(map.flipped) });
+  AddField<vtkDoubleArray>(fd, names::ParameterizationEnergy,
+    { map.energyContinuous, map.energyRounded, map.energyFinal });
+  AddField<vtkDoubleArray>(fd, names::SolveSeconds, map.solveSeconds);
+  AddField<vtkIntArray>(fd, names::SeamEdgeCount, { double(map.seamEdges) });
+  AddField<vtkIntArray>(fd, names::AlignedBoundaryEdges, { double(map.alignedBoundaryEdges) });
+  AddField<vtkIntArray>(
+    fd, names::BranchPointsOnGrid, { double(map.branchPoints), double(map.branchPointsOnGrid) });
+  AddField<vtkDoubleArray>(fd, names::SeamTranslationError, { map.maxSeamError });
+}
 }
 
 //------------------------------------------------------------------------------
-int vtkQuadCoverSolver::RequestData(
-  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+vtkQuadCoverSolver::vtkQuadCoverSolver()
+  : vtkQuadCoverAlgorithm(MANIFOLD_SURFACE, "parameterize")
 {
-  namespace names = vtkQuadCoverArrayNames;
-  vtkPolyData* input = vtkPolyData::GetData(inputVector[0]);
-  vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
+  const quadcover::ParameterizationOptions defaults;
+  this->TargetEdgeLength = defaults.targetEdgeLength;
+  this->TargetQuadCount = static_cast<int>(defaults.targetQuadCount);
+  this->PureQuads = defaults.pureQuads;
+  this->RoundingMode = FilterRounding(defaults.roundingMode);
+  this->AlignToBoundary = defaults.alignToBoundary;
+  this->BoundaryTolerance = defaults.boundaryTolerance;
+  this->MaximumUntangleRounds = defaults.maximumUntangleRounds;
+  this->SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_CELLS, names::FrameU);
+  this->SetInputArrayToProcess(1, 0, 0, vtkDataObject::FIELD_ASSOCIATION_CELLS, names::Matching);
+}
 
-  vtkNew<vtkPolyData> surface;
-  vtkQuadCoverEigen::Mesh mesh;
-  std::string warning;
-  const std::string problem = vtkQuadCoverEigen::Load(
-    input, surface, mesh, vtkQuadCoverEigen::Needs::ManifoldSurface, warning);
-  if (!problem.empty())
-  {
-    vtkErrorMacro(<< "Cannot parameterize: " << problem << ".");
-    return 0;
-  }
-  if (!warning.empty())
-  {
-    vtkWarningMacro(<< warning << ".");
-  }
-  const vtkIdType nf = mesh.F.rows();
-  vtkDataArray* u = this->GetInputArrayToProcess(0, surface);
-  vtkDataArray* m = this->GetInputArrayToProcess(1, surface);
-  std::string missing = vtkQuadCoverEigen::CheckCellArray3(u, nf, names::FrameU,
+//------------------------------------------------------------------------------
+void vtkQuadCoverSolver::Execute(vtkQuadCoverSurface& in, vtkInformationVector* outputVector)
+{
+  vtkDataArray* u = this->RequireCellArray(0, in.polyData, 3, names::FrameU,
     "run the earlier stages first, or name your own with SetInputArrayToProcess(0, ...)");
-  if (missing.empty())
-  {
-    missing = vtkQuadCoverEigen::CheckCellArray3(m, nf, names::Matching,
-      "run vtkMatchingBuilder first, or name your own with SetInputArrayToProcess(1, ...)");
-  }
-  if (!missing.empty())
-  {
-    vtkErrorMacro(<< "Cannot parameterize: " << missing << ".");
-    return 0;
-  }
+  vtkDataArray* m = this->RequireCellArray(1, in.polyData, 3, names::Matching,
+    "run vtkMatchingBuilder first, or name your own with SetInputArrayToProcess(1, ...)");
   const Eigen::MatrixX3d U = vtkQuadCoverEigen::FromArray3(u);
   if (!U.allFinite())
   {
-    vtkErrorMacro(<< "Cannot parameterize: " << names::FrameU << " has non-finite values.");
-    return 0;
+    throw std::invalid_argument(std::string(names::FrameU) + " has non-finite values");
   }
-  Eigen::MatrixX3i matching(nf, 3);
-  for (vtkIdType f = 0; f < nf; ++f)
-  {
-    for (int k = 0; k < 3; ++k)
-    {
-      const double r = m->GetComponent(f, k);
-      const bool boundary = mesh.topo.faceNeighbors(f, k) < 0;
-      if (!(boundary ? r == -1.0 : (r == 0.0 || r == 1.0 || r == 2.0 || r == 3.0)))
-      {
-        vtkErrorMacro(<< "Cannot parameterize: " << names::Matching << " of triangle " << f
-                      << ", edge " << k << " is " << r << "; it must be 0, 1, 2 or 3 (-1 on "
-                      << "the boundary).");
-        return 0;
-      }
-      matching(f, k) = static_cast<int>(r);
-    }
-  }
+  const Eigen::MatrixX3i matching = ReadMatching(m, in.topo);
   this->UpdateProgress(0.1);
 
-  try
+  const quadcover::FrameGeometry geometry = quadcover::computeFrameGeometry(in.V, in.F, in.topo);
+  quadcover::ParameterizationOptions options;
+  options.targetEdgeLength = this->TargetEdgeLength;
+  options.targetQuadCount = this->TargetQuadCount;
+  options.pureQuads = this->PureQuads;
+  options.roundingMode = CoreRounding(this->RoundingMode);
+  options.alignToBoundary = this->AlignToBoundary;
+  options.boundaryTolerance = this->BoundaryTolerance;
+  options.maximumUntangleRounds = this->MaximumUntangleRounds;
+  const quadcover::Parameterization map = quadcover::computeParameterization(in.V, in.F, in.topo,
+    geometry, U, matching, options, vtkQuadCoverEigen::CoreProgress(this, 0.15, 0.95));
+  if (map.wrongWindings > 0)
   {
-    const quadcover::FrameGeometry geometry =
-      quadcover::computeFrameGeometry(mesh.V, mesh.F, mesh.topo);
-    quadcover::ParameterizationOptions options;
-    options.targetEdgeLength = this->TargetEdgeLength;
-    options.targetQuadCount = this->TargetQuadCount;
-    options.pureQuads = this->PureQuads;
-    options.roundingMode = this->RoundingMode == ROUNDING_NONE
-      ? quadcover::RoundingMode::None
-      : (this->RoundingMode == ROUNDING_SIMPLE ? quadcover::RoundingMode::Simple
-                                               : quadcover::RoundingMode::Greedy);
-    options.alignToBoundary = this->AlignToBoundary;
-    options.boundaryTolerance = this->BoundaryTolerance;
-    options.maximumUntangleRounds = this->MaximumUntangleRounds;
-    this->UpdateProgress(0.2);
-    const quadcover::Parameterization map =
-      quadcover::computeParameterization(mesh.V, mesh.F, mesh.topo, geometry, U, matching, options);
-    this->UpdateProgress(0.9);
-    if (map.wrongWindings > 0)
-    {
-      vtkWarningMacro(<< map.wrongWindings << " points keep a map that winds around them unlike "
-                      << "the frame field; the quads there may be irregular.");
-    }
-    if (map.flipped > 0)
-    {
-      vtkWarningMacro(<< map.flipped << " triangles keep a flipped (u, v) image after "
-                      << "untangling; the quads there may be irregular (a finer or coarser grid "
-                      << "may help).");
-    }
+    this->Warn(std::to_string(map.wrongWindings) +
+      " points keep a map that winds around them unlike the frame field; the quads there may be "
+      "irregular");
+  }
+  if (map.flipped > 0)
+  {
+    this->Warn(std::to_string(map.flipped) +
+      " triangles keep a flipped (u, v) image after untangling; the quads there may be "
+      "irregular (a finer or coarser grid may help)");
+  }
 
-    vtkNew<vtkUnsignedCharArray> seam;
-    seam->SetName(names::Seam);
-    seam->SetNumberOfComponents(3);
-    seam->SetNumberOfTuples(nf);
-    for (vtkIdType f = 0; f < nf; ++f)
-    {
-      for (int k = 0; k < 3; ++k)
-      {
-        seam->SetTypedComponent(f, k, static_cast<unsigned char>(map.seam(f, k)));
-      }
-    }
-    if (this->SplitSeams)
-    {
-      const vtkIdType ns = static_cast<vtkIdType>(map.sectorPoint.size());
-      vtkNew<vtkPoints> points;
-      points->SetDataTypeToDouble();
-      points->SetNumberOfPoints(ns);
-      vtkPointData* inPD = surface->GetPointData();
-      vtkPointData* outPD = output->GetPointData();
-      outPD->CopyAllocate(inPD, ns);
-      vtkNew<vtkIdTypeArray> ids;
-      ids->SetName(names::SurfacePointId);
-      ids->SetNumberOfTuples(ns);
-      for (vtkIdType s = 0; s < ns; ++s)
-      {
-        const int p = map.sectorPoint[s];
-        points->SetPoint(s, mesh.V(p, 0), mesh.V(p, 1), mesh.V(p, 2));
-        outPD->CopyData(inPD, p, s);
-        ids->SetValue(s, p);
-      }
-      vtkNew<vtkCellArray> polys;
-      polys->AllocateExact(nf, 3 * nf);
-      for (vtkIdType f = 0; f < nf; ++f)
-      {
-        const vtkIdType cell[3] = { map.cornerSector[3 * f], map.cornerSector[3 * f + 1],
-          map.cornerSector[3 * f + 2] };
-        polys->InsertNextCell(3, cell);
-      }
-      output->SetPoints(points);
-      output->SetPolys(polys);
-      output->GetCellData()->ShallowCopy(surface->GetCellData());
-      output->GetFieldData()->ShallowCopy(surface->GetFieldData());
-      outPD->AddArray(ids);
-      outPD->SetTCoords(vtkQuadCoverEigen::ToArray(map.sectorUV, names::UV));
-    }
-    else
-    {
-      output->ShallowCopy(surface);
-    }
-    output->GetCellData()->AddArray(vtkQuadCoverEigen::ToArray(map.cornerUV, names::CornerUV));
-    output->GetCellData()->AddArray(seam);
-    vtkFieldData* fd = output->GetFieldData();
-    vtkQuadCoverEigen::AddField<vtkDoubleArray>(fd, names::GridScale, { map.edgeLength });
-    vtkQuadCoverEigen::AddField<vtkIntArray>(
-      fd, names::WindingErrors, { double(map.wrongWindings) });
-    vtkQuadCoverEigen::AddField<vtkIntArray>(fd, names::FlippedTriangles,
-      { double(map.flippedContinuous), double(map.flippedRounded), double(map.flipped) });
-    vtkQuadCoverEigen::AddField<vtkDoubleArray>(fd, names::ParameterizationEnergy,
-      { map.energyContinuous, map.energyRounded, map.energyFinal });
-    vtkNew<vtkDoubleArray> seconds;
-    seconds->SetName(names::SolveSeconds);
-    for (const double s : map.solveSeconds)
-    {
-      seconds->InsertNextValue(s);
-    }
-    fd->AddArray(seconds);
-    vtkQuadCoverEigen::AddField<vtkIntArray>(fd, names::SeamEdgeCount, { double(map.seamEdges) });
-    vtkQuadCoverEigen::AddField<vtkIntArray>(
-      fd, names::BranchPointsOnGrid, { double(map.branchPoints), double(map.branchPointsOnGrid) });
-    vtkQuadCoverEigen::AddField<vtkDoubleArray>(
-      fd, names::SeamTranslationError, { map.maxSeamError });
-  }
-  catch (const std::exception& e)
+  vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
+  if (this->SplitSeams)
   {
-    vtkErrorMacro(<< "Cannot parameterize: " << e.what());
-    return 0;
+    WriteSplitSurface(output, in, map);
   }
-  this->UpdateProgress(1.0);
-  return 1;
+  else
+  {
+    output->ShallowCopy(in.polyData);
+  }
+  output->GetCellData()->AddArray(vtkQuadCoverEigen::ToArray(map.cornerUV, names::CornerUV));
+  output->GetCellData()->AddArray(
+    vtkQuadCoverEigen::ToArray<vtkUnsignedCharArray>(map.seam, names::Seam));
+  AddFigures(output->GetFieldData(), map);
 }
 
 //------------------------------------------------------------------------------

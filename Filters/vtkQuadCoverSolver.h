@@ -19,10 +19,11 @@
  * (Garanzha et al. 2021), the integers kept (MaximumUntangleRounds). With AlignToBoundary, boundary
  * edges along a frame direction lie on integer grid lines.
  *
- * The grid size is TargetEdgeLength when positive. Otherwise it is chosen so that the
- * continuous map covers TargetQuadCount unit cells (its (u, v) area): sqrt(area /
- * TargetQuadCount) to begin with, corrected by the continuous map's area, which is smaller where
- * the field is far from integrable. GridScale reports the size used.
+ * The edge length of the grid (the world length of one grid unit) is TargetEdgeLength when
+ * positive. Otherwise it is chosen so that the continuous map covers TargetQuadCount unit cells
+ * (its (u, v) area): sqrt(area / TargetQuadCount) to begin with, corrected by the continuous
+ * map's area, which is smaller where the field is far from integrable. The field data
+ * EdgeLength reports the length used.
  *
  * Input: a manifold, consistently oriented triangle surface with the cell arrays FrameU
  * (SetInputArrayToProcess(0, ...)) and Matching (SetInputArrayToProcess(1, ...)), as
@@ -30,8 +31,9 @@
  *
  * Output: the surface with cell data CornerUV (6 x double: u0 v0 u1 v1 u2 v2 at the triangle's
  * points) and Seam (3 x unsigned char: 1 where edge k, from point k to k+1, is on the cut), field
- * data GridScale, FlippedTriangles, ParameterizationEnergy, SolveSeconds, SeamEdgeCount,
- * BranchPointsOnGrid and SeamTranslationError (see vtkQuadCoverArrayNames.h). With SplitSeams
+ * data EdgeLength, FlippedTriangles, WindingErrors, ParameterizationEnergy, SolveSeconds,
+ * SeamEdgeCount, AlignedBoundaryEdges, BranchPointsOnGrid and SeamTranslationError (see
+ * vtkQuadCoverArrayNames.h). With SplitSeams
  * the surface is cut open along the seams instead: one point per sector of a point between seam
  * edges, point data UV (the active texture coordinates) and SurfacePointId, so a checkerboard
  * texture shows the parameter lines at once.
@@ -40,14 +42,14 @@
 #ifndef vtkQuadCoverSolver_h
 #define vtkQuadCoverSolver_h
 
-#include "vtkPolyDataAlgorithm.h"
+#include "vtkQuadCoverAlgorithm.h"
 #include "vtkQuadCoverFiltersModule.h" // for export macro
 
-class VTKQUADCOVERFILTERS_EXPORT vtkQuadCoverSolver : public vtkPolyDataAlgorithm
+class VTKQUADCOVERFILTERS_EXPORT vtkQuadCoverSolver : public vtkQuadCoverAlgorithm
 {
 public:
   static vtkQuadCoverSolver* New();
-  vtkTypeMacro(vtkQuadCoverSolver, vtkPolyDataAlgorithm);
+  vtkTypeMacro(vtkQuadCoverSolver, vtkQuadCoverAlgorithm);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   enum RoundingModes
@@ -117,15 +119,16 @@ protected:
   vtkQuadCoverSolver();
   ~vtkQuadCoverSolver() override = default;
 
-  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+  void Execute(vtkQuadCoverSurface& input, vtkInformationVector* outputVector) override;
 
-  double TargetEdgeLength = 0.0;
-  int TargetQuadCount = 3000;
-  bool PureQuads = true;
-  int RoundingMode = ROUNDING_GREEDY;
-  bool AlignToBoundary = true;
-  double BoundaryTolerance = 10.0;
-  int MaximumUntangleRounds = 30;
+  // defaults: quadcover::ParameterizationOptions
+  double TargetEdgeLength;
+  int TargetQuadCount;
+  bool PureQuads;
+  int RoundingMode;
+  bool AlignToBoundary;
+  double BoundaryTolerance;
+  int MaximumUntangleRounds;
   bool SplitSeams = false;
 
 private:

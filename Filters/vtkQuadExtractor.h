@@ -30,14 +30,14 @@
 #ifndef vtkQuadExtractor_h
 #define vtkQuadExtractor_h
 
-#include "vtkPolyDataAlgorithm.h"
+#include "vtkQuadCoverAlgorithm.h"
 #include "vtkQuadCoverFiltersModule.h" // for export macro
 
-class VTKQUADCOVERFILTERS_EXPORT vtkQuadExtractor : public vtkPolyDataAlgorithm
+class VTKQUADCOVERFILTERS_EXPORT vtkQuadExtractor : public vtkQuadCoverAlgorithm
 {
 public:
   static vtkQuadExtractor* New();
-  vtkTypeMacro(vtkQuadExtractor, vtkPolyDataAlgorithm);
+  vtkTypeMacro(vtkQuadExtractor, vtkQuadCoverAlgorithm);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   ///@{
@@ -77,11 +77,12 @@ protected:
   vtkQuadExtractor();
   ~vtkQuadExtractor() override = default;
 
-  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+  void Execute(vtkQuadCoverSurface& input, vtkInformationVector* outputVector) override;
 
-  bool ComputeHausdorffDistance = true;
-  int RelaxationIterations = 0;
-  bool RepairInvertedQuads = true;
+  // defaults: quadcover::QuadMeshOptions
+  bool ComputeHausdorffDistance;
+  int RelaxationIterations;
+  bool RepairInvertedQuads;
 
 private:
   vtkQuadExtractor(const vtkQuadExtractor&) = delete;

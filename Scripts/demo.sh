@@ -9,9 +9,9 @@ cd "$(dirname "$0")/.."
 bash Scripts/install-deps.sh
 bash Scripts/build.sh
 mkdir -p out
-build/bin/quadcover Data/knot.obj -o out/knot_quads.vtp --target-quads 2000 \
+build/bin/quadcover Data/knot.obj -o out/knot_quads.vtp --target-quad-count 2000 \
   --stats out/knot.json -v
-build/bin/quadcover Data/knot.obj -o out/knot_quads.obj --target-quads 2000
+build/bin/quadcover Data/knot.obj -o out/knot_quads.obj --target-quad-count 2000
 xvfb-run -a -s "-screen 0 1600x1200x24" /usr/bin/python3 Examples/Python/render.py \
   out/knot_quads.vtp -o out/knot_quads.png --elevation 60
 echo "demo: wrote out/knot_quads.obj, out/knot_quads.vtp (open it in ParaView), out/knot.json" \

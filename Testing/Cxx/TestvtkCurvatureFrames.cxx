@@ -1,5 +1,6 @@
 // vtkCurvatureFrames through VTK: properties, error paths, arrays, user frames, shared meshes.
-#include "QuadCoverIO.h"
+
+#include "TestSurfaceFiles.h"
 
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
@@ -12,6 +13,7 @@
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkQuadCoverArrayNames.h"
+#include "vtkQuadCoverErrorObserver.h"
 #include "vtkQuadCoverEigen.h"
 
 #include "MeshTopology.h"
@@ -49,13 +51,16 @@ Result RunFilter(vtkPolyData* input, vtkCurvatureFrames* filter = nullptr)
   {
     f = vtkSmartPointer<vtkCurvatureFrames>::New();
   }
-  vtkNew<QuadCoverIO::ErrorObserver> observer;
+  vtkNew<vtkQuadCoverErrorObserver> observer;
   observer->Attach(f);
   f->SetInputData(input);
   f->Update();
   Result r;
-  r.error = observer->Error();
-  r.warnings = observer->Warnings();
+  r.error = observer->GetError();
+  for (int i = 0; i < observer->GetNumberOfWarnings(); ++i)
+  {
+    r.warnings.push_back(observer->GetWarning(i));
+  }
   r.output = f->GetOutput();
   return r;
 }
@@ -341,10 +346,7 @@ TEST_P(SharedMesh, RepairsThenGivesUnitTangentFrames)
     GTEST_SKIP() << "shared mesh not found: " << path;
   }
   std::string error;
-  vtkSmartPointer<vtkPolyData> raw = QuadCoverIO::ReadSurface(path, error);
-  ASSERT_TRUE(raw) << error;
-  QuadCoverIO::Repairs repairs;
-  vtkSmartPointer<vtkPolyData> surface = QuadCoverIO::PrepareSurface(raw, repairs, error);
+  vtkSmartPointer<vtkPolyData> surface = ReadRepaired(path, error);
   ASSERT_TRUE(surface) << error;
   const Result r = RunFilter(surface);
   ASSERT_EQ(r.error, "");
@@ -368,7 +370,9 @@ TEST_P(SharedMesh, RepairsThenGivesUnitTangentFrames)
     GetParam(), static_cast<long long>(surface->GetNumberOfPoints()),
     static_cast<long long>(surface->GetNumberOfPolys()), topo.numComponents(),
     topo.eulerCharacteristic(), topo.numComponents() ? topo.components[0].genus : -1,
-    topo.boundaryLoops.size(), repairs.mergedPoints);
+    topo.boundaryLoops.size(),
+    static_cast<long long>(
+      surface->GetFieldData()->GetArray(vtkQuadCoverArrayNames::MergedPoints)->GetTuple1(0)));
 
   vtkDataArray* u = CellArray(r.output, names::FrameU);
   vtkDataArray* v = CellArray(r.output, names::FrameV);

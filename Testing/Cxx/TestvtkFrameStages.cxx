@@ -1,6 +1,5 @@
 // vtkFrameSmoother and vtkMatchingBuilder through VTK: properties, errors, the array contract,
 // the branch-point output, and the whole chain on every generated and shared surface.
-#include "QuadCoverIO.h"
 #include "TestSurfaceFiles.h"
 
 #include "vtkCellData.h"
@@ -15,6 +14,7 @@
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
 #include "vtkQuadCoverArrayNames.h"
+#include "vtkQuadCoverErrorObserver.h"
 #include "vtkQuadCoverEigen.h"
 #include "vtkUnsignedCharArray.h"
 
@@ -38,7 +38,7 @@ struct Chain
   vtkNew<vtkCurvatureFrames> curvature;
   vtkNew<vtkFrameSmoother> smoother;
   vtkNew<vtkMatchingBuilder> matching;
-  vtkNew<QuadCoverIO::ErrorObserver> errors;
+  vtkNew<vtkQuadCoverErrorObserver> errors;
 
   explicit Chain(vtkPolyData* surface)
   {
@@ -121,12 +121,12 @@ TEST(vtkFrameStages, MissingFramesAndBadSurfacesAreErrors)
       f = vtkSmartPointer<vtkFrameSmoother>::New();
     else
       f = vtkSmartPointer<vtkMatchingBuilder>::New();
-    vtkNew<QuadCoverIO::ErrorObserver> errors;
+    vtkNew<vtkQuadCoverErrorObserver> errors;
     errors->Attach(f);
     f->SetInputData(bare);
     f->Update();
-    EXPECT_NE(errors->Error().find("no 3-component cell array FrameU"), std::string::npos)
-      << errors->Error();
+    EXPECT_NE(errors->GetError().find("no 3-component cell array FrameU"), std::string::npos)
+      << errors->GetError();
   }
   // A bowtie: fine for smoothing (a warning), refused by the matchings (no one-ring).
   Eigen::MatrixX3d V(5, 3);
@@ -135,8 +135,8 @@ TEST(vtkFrameStages, MissingFramesAndBadSurfacesAreErrors)
   F << 0, 1, 2, 0, 3, 4;
   Chain chain(vtkQuadCoverEigen::ToPolyData(V, F));
   chain.Run();
-  EXPECT_NE(chain.errors->Error().find("non-manifold vertices"), std::string::npos)
-    << chain.errors->Error();
+  EXPECT_NE(chain.errors->GetError().find("non-manifold vertices"), std::string::npos)
+    << chain.errors->GetError();
 }
 
 TEST(vtkFrameStages, ArraysOfTheChain)
@@ -144,7 +144,7 @@ TEST(vtkFrameStages, ArraysOfTheChain)
   const quadcover::Surface s = quadcover::makeRoundedCube(0.0, 6);
   Chain chain(vtkQuadCoverEigen::ToPolyData(s.V, s.F));
   vtkPolyData* out = chain.Run();
-  ASSERT_EQ(chain.errors->Error(), "");
+  ASSERT_EQ(chain.errors->GetError(), "");
   const vtkIdType nf = out->GetNumberOfCells(), nv = out->GetNumberOfPoints();
   // Smoother's arrays.
   vtkPolyData* smoothed = chain.smoother->GetOutput();
@@ -231,7 +231,7 @@ TEST_P(ChainOn, IndicesSumToTheEulerCharacteristic)
   Chain chain(surface);
   chain.matching->OptimizeBranchPointsOff();
   vtkPolyData* before = chain.Run();
-  ASSERT_EQ(chain.errors->Error(), "");
+  ASSERT_EQ(chain.errors->GetError(), "");
   EXPECT_NEAR(IndexSum(before), topo.eulerCharacteristic(), 1e-9);
   const double branchesBefore = Field(before, names::BranchPointCount, 1);
   const double singularBefore = Field(before, names::SingularityCount);

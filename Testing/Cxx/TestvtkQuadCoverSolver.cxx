@@ -1,7 +1,6 @@
 // vtkQuadCoverSolver through VTK: properties, errors, the array contract, the SplitSeams
 // output, and the whole chain on every generated and shared surface at about 3,000 quads:
 // seamless, branch points on the grid, no flipped triangle.
-#include "QuadCoverIO.h"
 #include "TestSurfaceFiles.h"
 
 #include "vtkCellData.h"
@@ -15,6 +14,7 @@
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
 #include "vtkQuadCoverArrayNames.h"
+#include "vtkQuadCoverErrorObserver.h"
 #include "vtkQuadCoverEigen.h"
 #include "vtkQuadCoverSolver.h"
 
@@ -39,7 +39,7 @@ struct Chain
   vtkNew<vtkFrameSmoother> smoother;
   vtkNew<vtkMatchingBuilder> matching;
   vtkNew<vtkQuadCoverSolver> solver;
-  vtkNew<QuadCoverIO::ErrorObserver> errors;
+  vtkNew<vtkQuadCoverErrorObserver> errors;
 
   explicit Chain(vtkPolyData* surface)
   {
@@ -111,12 +111,12 @@ TEST(vtkQuadCoverSolver, MissingOrBrokenArraysAreErrors)
   vtkSmartPointer<vtkPolyData> bare = vtkQuadCoverEigen::ToPolyData(sphere.V, sphere.F);
   {
     vtkNew<vtkQuadCoverSolver> s;
-    vtkNew<QuadCoverIO::ErrorObserver> errors;
+    vtkNew<vtkQuadCoverErrorObserver> errors;
     errors->Attach(s);
     s->SetInputData(bare);
     s->Update();
-    EXPECT_NE(errors->Error().find("no 3-component cell array FrameU"), std::string::npos)
-      << errors->Error();
+    EXPECT_NE(errors->GetError().find("no 3-component cell array FrameU"), std::string::npos)
+      << errors->GetError();
   }
   Chain chain(bare);
   chain.matching->Update();
@@ -125,12 +125,12 @@ TEST(vtkQuadCoverSolver, MissingOrBrokenArraysAreErrors)
   noMatching->GetCellData()->RemoveArray(names::Matching);
   {
     vtkNew<vtkQuadCoverSolver> s;
-    vtkNew<QuadCoverIO::ErrorObserver> errors;
+    vtkNew<vtkQuadCoverErrorObserver> errors;
     errors->Attach(s);
     s->SetInputData(noMatching);
     s->Update();
-    EXPECT_NE(errors->Error().find("no 3-component cell array Matching"), std::string::npos)
-      << errors->Error();
+    EXPECT_NE(errors->GetError().find("no 3-component cell array Matching"), std::string::npos)
+      << errors->GetError();
   }
   for (int broken : { 5, 1 }) // out of range; a valid value that is not its twin's inverse
   {
@@ -139,14 +139,14 @@ TEST(vtkQuadCoverSolver, MissingOrBrokenArraysAreErrors)
     vtkIntArray* m = vtkIntArray::SafeDownCast(bad->GetCellData()->GetArray(names::Matching));
     m->SetTypedComponent(0, 0, broken == 5 ? 5 : (m->GetTypedComponent(0, 0) + 1) % 4);
     vtkNew<vtkQuadCoverSolver> s;
-    vtkNew<QuadCoverIO::ErrorObserver> errors;
+    vtkNew<vtkQuadCoverErrorObserver> errors;
     errors->Attach(s);
     s->SetInputData(bad);
     s->Update();
-    EXPECT_NE(errors->Error().find("Cannot parameterize"), std::string::npos) << errors->Error();
+    EXPECT_NE(errors->GetError().find("Cannot parameterize"), std::string::npos) << errors->GetError();
     EXPECT_NE(
-      errors->Error().find(broken == 5 ? "must be 0, 1, 2 or 3" : "not inverse"), std::string::npos)
-      << errors->Error();
+      errors->GetError().find(broken == 5 ? "must be 0, 1, 2 or 3" : "not inverse"), std::string::npos)
+      << errors->GetError();
   }
 }
 
@@ -158,7 +158,7 @@ TEST(vtkQuadCoverSolver, SplitSeamsCutsTheSurfaceOpenWithTextureCoordinates)
   whole->DeepCopy(chain.Run());
   chain.solver->SplitSeamsOn();
   vtkPolyData* split = chain.Run();
-  ASSERT_EQ(chain.errors->Error(), "");
+  ASSERT_EQ(chain.errors->GetError(), "");
   EXPECT_EQ(split->GetNumberOfPolys(), whole->GetNumberOfPolys());
   EXPECT_GT(split->GetNumberOfPoints(), whole->GetNumberOfPoints()) << "seams double points";
   vtkDataArray* tc = split->GetPointData()->GetTCoords();
@@ -207,7 +207,7 @@ TEST_P(ParameterizeOn, SeamlessGridMapWithBranchPointsOnTheGridAndNoFlips)
   }
   Chain chain(surface);
   vtkPolyData* out = chain.Run();
-  ASSERT_EQ(chain.errors->Error(), "");
+  ASSERT_EQ(chain.errors->GetError(), "");
   const Eigen::MatrixX3i F = vtkQuadCoverEigen::Triangles(out);
   const MeshTopology topo = buildTopology(F, static_cast<int>(out->GetNumberOfPoints()));
   const Eigen::MatrixXd uv = CornerUV(out);

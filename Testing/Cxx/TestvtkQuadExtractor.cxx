@@ -2,7 +2,6 @@
 // closed, manifold, all-quad meshes with the input's Euler characteristic; open ones keep their
 // boundary loops; irregular vertices are the branch points with the valence their index
 // predicts; the quads stay close to the input (Hausdorff distance).
-#include "QuadCoverIO.h"
 #include "TestSurfaceFiles.h"
 
 #include "vtkCellData.h"
@@ -16,6 +15,7 @@
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
 #include "vtkQuadCoverArrayNames.h"
+#include "vtkQuadCoverErrorObserver.h"
 #include "vtkQuadCoverEigen.h"
 #include "vtkQuadCoverSolver.h"
 #include "vtkQuadExtractor.h"
@@ -41,7 +41,7 @@ struct Pipeline
   vtkNew<vtkMatchingBuilder> matching;
   vtkNew<vtkQuadCoverSolver> solver;
   vtkNew<vtkQuadExtractor> extractor;
-  vtkNew<QuadCoverIO::ErrorObserver> errors;
+  vtkNew<vtkQuadCoverErrorObserver> errors;
 
   explicit Pipeline(vtkPolyData* surface)
   {
@@ -84,12 +84,12 @@ TEST(vtkQuadExtractor, DefaultsErrorsAndPrintSelf)
   EXPECT_NE(os7.str().find("RelaxationIterations: 7"), std::string::npos);
   e->SetRelaxationIterations(0);
   const quadcover::Surface sphere = quadcover::makeIcosphere(1.0, 2);
-  vtkNew<QuadCoverIO::ErrorObserver> errors;
+  vtkNew<vtkQuadCoverErrorObserver> errors;
   errors->Attach(e);
   e->SetInputData(vtkQuadCoverEigen::ToPolyData(sphere.V, sphere.F));
   e->Update();
-  EXPECT_NE(errors->Error().find("no 6-component cell array CornerUV"), std::string::npos)
-    << errors->Error();
+  EXPECT_NE(errors->GetError().find("no 6-component cell array CornerUV"), std::string::npos)
+    << errors->GetError();
   EXPECT_EQ(e->GetOutput()->GetNumberOfCells(), 0);
 }
 
@@ -103,7 +103,7 @@ TEST(vtkQuadExtractor, TheSplitSeamsOutputGivesTheSameQuads)
   const vtkIdType quads = p.extractor->GetOutput()->GetNumberOfCells();
   p.solver->SplitSeamsOn();
   p.extractor->Update();
-  ASSERT_EQ(p.errors->Error(), "");
+  ASSERT_EQ(p.errors->GetError(), "");
   EXPECT_EQ(p.extractor->GetOutput()->GetNumberOfCells(), quads);
   EXPECT_EQ(Field(p.extractor->GetOutput(), names::EulerCharacteristic), 0);
   EXPECT_EQ(Field(p.extractor->GetOutput(), names::BoundaryLoops), 0);
@@ -122,7 +122,7 @@ TEST(vtkQuadExtractor, CellCentresOnMeshEdgesGiveOneQuadEach)
     p.solver->SetTargetQuadCount(6500);
     p.extractor->ComputeHausdorffDistanceOff();
     p.extractor->Update();
-    ASSERT_EQ(p.errors->Error(), "");
+    ASSERT_EQ(p.errors->GetError(), "");
     vtkPolyData* out = p.extractor->GetOutput();
     EXPECT_EQ(Field(out, names::BoundaryLoops), 0) << name;
     EXPECT_EQ(Field(out, names::EulerCharacteristic), name == std::string("torus") ? 0 : 2);
@@ -141,7 +141,7 @@ TEST(vtkQuadExtractor, RelaxationKeepsTheMeshAndItsFigures)
   raw->DeepCopy(p.extractor->GetOutput());
   p.extractor->SetRelaxationIterations(10);
   p.extractor->Update();
-  ASSERT_EQ(p.errors->Error(), "");
+  ASSERT_EQ(p.errors->GetError(), "");
   vtkPolyData* relaxed = p.extractor->GetOutput();
   EXPECT_EQ(relaxed->GetNumberOfCells(), raw->GetNumberOfCells());
   EXPECT_EQ(relaxed->GetNumberOfPoints(), raw->GetNumberOfPoints());
@@ -188,7 +188,7 @@ TEST_P(QuadsOn, ManifoldAllQuadMeshWithTheInputsTopology)
     SCOPED_TRACE(quads);
     p.solver->SetTargetQuadCount(quads);
     p.extractor->Update();
-    ASSERT_EQ(p.errors->Error(), "");
+    ASSERT_EQ(p.errors->GetError(), "");
     vtkPolyData* out = p.extractor->GetOutput();
     vtkPolyData* map = p.solver->GetOutput();
     // every cell a quad

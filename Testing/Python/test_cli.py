@@ -74,7 +74,9 @@ class CommandLine(unittest.TestCase):
         self.assertEqual(s["surface"]["points"], pd.GetNumberOfPoints())
         self.assertEqual(s["stage"], "curvature")
         self.assertGreaterEqual(s["seconds"]["curvature"], 0.0)
-        self.assertEqual(s["repairs"]["merged_points"], 0)
+        self.assertEqual(s["repair"]["merged_points"], 0)
+        self.assertEqual(s["options"]["neighborhood_radius"], 2)
+        self.assertIs(s["options"]["use_input_frames"], True)
 
     def test_matching_stage_on_the_sphere(self):
         # The sphere: 8 singularities of index +1/4, indices summing to 2.
@@ -85,9 +87,9 @@ class CommandLine(unittest.TestCase):
         self.assertEqual(code, 0, err)
         with open(stats) as f:
             m = json.load(f)["matching"]
-        self.assertEqual(m["singularities"], 8)
-        self.assertEqual(m["singularities_by_index"], {"0.25": 8})
-        self.assertAlmostEqual(m["index_sum"], 2.0, places=9)
+        self.assertEqual(m["singularity_count"], 8)
+        self.assertEqual(m["singularity_histogram"], [[0.25, 8]])
+        self.assertAlmostEqual(m["singularity_index_sum"], 2.0, places=9)
         reader = vtk.vtkXMLPolyDataReader()
         reader.SetFileName(out)
         reader.Update()
@@ -99,39 +101,42 @@ class CommandLine(unittest.TestCase):
 
     def test_param_stage_options_and_stats(self):
         # The default stage is param: a seamless map with the sphere's 8 branch points on the
-        # grid, no flips, about --target-quads cells; the options reach the solver.
+        # grid, no flips, about --target-quad-count cells; the options reach the solver.
         out = os.path.join(self.dir, "s.vtp")
         stats = os.path.join(self.dir, "s.json")
         code, _, err = run(os.path.join(DATA, "sphere.obj"), "-o", out, "--stage", "param",
-                           "--target-quads", "500", "--stats", stats)
+                           "--target-quad-count", "500", "--stats", stats)
         self.assertEqual(code, 0, err)
         with open(stats) as f:
             s = json.load(f)
         self.assertEqual(s["stage"], "param")
         p = s["param"]
-        self.assertEqual(p["branch_points"], 8)
-        self.assertEqual(p["branch_points_on_grid"], 8)
-        self.assertEqual(p["flipped"], 0)
+        self.assertEqual(p["branch_points_on_grid"], [8, 8])
+        self.assertEqual(p["flipped_triangles"][2], 0)
         self.assertLess(p["seam_translation_error"], 1e-6)
-        self.assertGreater(p["seam_edges"], 0)
+        self.assertGreater(p["seam_edge_count"], 0)
         self.assertGreaterEqual(len(p["solve_seconds"]), 1)
         area = 4 * math.pi * 0.99  # the icosphere is a little smaller than its sphere
-        self.assertAlmostEqual(p["grid_size"], math.sqrt(area / 500), delta=0.01)
+        self.assertAlmostEqual(p["edge_length"], math.sqrt(area / 500), delta=0.01)
         reader = vtk.vtkXMLPolyDataReader()
         reader.SetFileName(out)
         reader.Update()
         pd = reader.GetOutput()
         self.assertEqual(pd.GetCellData().GetArray("CornerUV").GetNumberOfComponents(), 6)
         self.assertEqual(pd.GetCellData().GetArray("Seam").GetNumberOfComponents(), 3)
-        # --edge-length wins over --target-quads; --no-pure-quads and --rounding reach the filter
+        # --target-edge-length wins over --target-quad-count; --no-pure-quads and
+        # --rounding-mode reach the filter
         code, _, err = run(os.path.join(DATA, "sphere.obj"), "-o", out, "--stage", "param",
-                           "--edge-length", "0.25",
-                           "--no-pure-quads", "--rounding", "simple", "--split-seams",
+                           "--target-edge-length=0.25",
+                           "--no-pure-quads", "--rounding-mode", "simple", "--split-seams",
                            "--stats", stats)
         self.assertEqual(code, 0, err)
         with open(stats) as f:
-            p = json.load(f)["param"]
-        self.assertEqual(p["grid_size"], 0.25)
+            s = json.load(f)
+        p = s["param"]
+        self.assertEqual(p["edge_length"], 0.25)
+        self.assertEqual(s["options"]["rounding_mode"], "simple")
+        self.assertIs(s["options"]["pure_quads"], False)
         reader.Modified()
         reader.Update()
         pd = reader.GetOutput()
@@ -144,20 +149,20 @@ class CommandLine(unittest.TestCase):
         stats = os.path.join(self.dir, "q.json")
         for ext in (".vtp", ".obj", ".ply", ".vtk"):
             out = os.path.join(self.dir, "q" + ext)
-            code, _, err = run(os.path.join(DATA, "sphere.obj"), "-o", out, "--target-quads",
-                               "600", "--stats", stats)
+            code, _, err = run(os.path.join(DATA, "sphere.obj"), "-o", out,
+                               "--target-quad-count", "600", "--stats", stats)
             self.assertEqual(code, 0, err)
             with open(stats) as f:
                 s = json.load(f)
             self.assertEqual(s["stage"], "quads")
             q = s["quads"]
             self.assertEqual(q["quad_share"], 1)
-            self.assertEqual(q["irregular_inner"], 8)
+            self.assertEqual(q["irregular_vertices"], [8, 0])
             self.assertEqual(q["non_manifold_edges"], 0)
             self.assertEqual(q["euler_characteristic"], 2)
             self.assertEqual(q["boundary_loops"], 0)
-            self.assertEqual(q["dropped_cells"], 0)
-            self.assertLess(q["hausdorff_percent"], 2.0)
+            self.assertEqual(q["dropped_cells"], [0, 0, 0])
+            self.assertLess(q["hausdorff_distance"][0], 2.0)
             reader = {".vtp": vtk.vtkXMLPolyDataReader, ".obj": vtk.vtkOBJReader,
                       ".ply": vtk.vtkPLYReader, ".vtk": vtk.vtkPolyDataReader}[ext]()
             reader.SetFileName(out)
@@ -171,14 +176,14 @@ class CommandLine(unittest.TestCase):
         # Without features the cube holds nothing; with them its edges are held.
         cube = os.path.join(DATA, "roundedcube.obj")
         held = {}
-        for flag in ([], ["--no-features", "--no-boundary-alignment"]):
+        for flag in ([], ["--no-align-to-features", "--no-align-to-boundary"]):
             stats = os.path.join(self.dir, "c.json")
             code, _, err = run(cube, "-o", os.path.join(self.dir, "c.vtp"), "--stage", "smooth",
-                               "--feature-angle", "10", "--smoothing", "0.8", "--stats", stats,
+                               "--feature-angle", "10", "--smoothing-weight", "0.8", "--stats", stats,
                                *flag)
             self.assertEqual(code, 0, err)
             with open(stats) as f:
-                held[bool(flag)] = json.load(f)["smooth"]["held_triangles"]
+                held[bool(flag)] = json.load(f)["smooth"]["constrained_frame_count"]
         self.assertGreater(held[False], 0)
         self.assertEqual(held[True], 0)
 
@@ -212,10 +217,10 @@ class CommandLine(unittest.TestCase):
         code, _, err = run(path, "-o", os.path.join(self.dir, "r.vtp"), "--stats", stats)
         self.assertEqual(code, 0, err)
         with open(stats) as f:
-            r = json.load(f)["repairs"]
+            r = json.load(f)["repair"]
         self.assertEqual(r["merged_points"], 2)
         self.assertEqual(r["triangulated_polygons"], 2)
-        self.assertEqual(r["flipped_triangles"], 1)
+        self.assertEqual(r["reoriented_triangles"], 1)
 
     def test_fandisk_from_shared_data(self):
         path = os.path.join(SHARED, "fandisk.obj")
@@ -248,14 +253,14 @@ class CommandLine(unittest.TestCase):
         writer.SetInputConnection(loop.GetOutputPort())
         writer.Write()
         stats = os.path.join(self.dir, "s.json")
-        code, _, err = run(refined, "-o", os.path.join(self.dir, "q.vtp"), "--target-quads",
-                           "3000", "--no-hausdorff", "--stats", stats)
+        code, _, err = run(refined, "-o", os.path.join(self.dir, "q.vtp"), "--target-quad-count",
+                           "3000", "--no-compute-hausdorff-distance", "--stats", stats)
         self.assertEqual(code, 0, err)
         with open(stats) as f:
             s = json.load(f)
-        self.assertEqual(s["param"]["flipped"], 0)
+        self.assertEqual(s["param"]["flipped_triangles"][2], 0)
         self.assertEqual(s["param"]["winding_errors"], 0)
-        self.assertEqual(s["quads"]["dropped_cells"], 0)
+        self.assertEqual(s["quads"]["dropped_cells"], [0, 0, 0])
         self.assertEqual(s["quads"]["euler_characteristic"], 2)
         self.assertEqual(s["quads"]["non_manifold_edges"], 0)
 
@@ -371,7 +376,7 @@ class CommandLine(unittest.TestCase):
         # The projected z axis has a large z part; the curvature frame (along the parallels of
         # the torus) has none.
         self.assertGreater(mean_abs_uz(), 0.5)
-        self.assertLess(mean_abs_uz("--no-input-frames"), 0.01)
+        self.assertLess(mean_abs_uz("--no-use-input-frames"), 0.01)
 
     def test_unknown_input_extension(self):
         self.assert_one_line_error([self.write("a.txt", "x"), "-o", "x.vtp"], 1,
@@ -384,15 +389,20 @@ class CommandLine(unittest.TestCase):
                  ([knot], r"no output file"),
                  ([knot, "-o", "x.txt"], r"cannot write .*unknown extension"),
                  ([knot, "-o", "x.vtp", "--stage", "bogus"], r"unknown stage 'bogus'"),
-                 ([knot, "-o", "x.vtp", "--smoothing", "1.5"], r"invalid value"),
-                 ([knot, "-o", "x.vtp", "--iterations", "2.5"], r"invalid value"),
-                 ([knot, "-o", "x.vtp", "--threads", "1e10"], r"invalid value"),
-                 ([knot, "-o", "x.vtp", "--branch-weight"], r"needs a value"),
-                 ([knot, "-o", "x.vtp", "--radius", "-1"], r"invalid value"),
-                 ([knot, "-o", "x.vtp", "--frobnicate"], r"unknown option"),
-                 ([knot, "-o", "x.vtp", "--rounding", "best"], r"invalid value 'best'"),
-                 ([knot, "-o", "x.vtp", "--target-quads", "0"], r"invalid value"),
-                 ([knot, "-o", "x.vtp", "--edge-length", "-1"], r"invalid value")]
+                 ([knot, "-o", "x.vtp", "--smoothing-weight", "1.5"], r"invalid value"),
+                 ([knot, "-o", "x.vtp", "--maximum-number-of-iterations", "2.5"],
+                  r"invalid value"),
+                 ([knot, "-o", "x.vtp", "--number-of-threads", "1e10"], r"invalid value"),
+                 ([knot, "-o", "x.vtp", "--branch-point-weight"], r"needs a value"),
+                 ([knot, "-o", "x.vtp", "--neighborhood-radius", "-1"], r"invalid value"),
+                 ([knot, "-o", "x.vtp", "--neighborhood-radius=nan"], r"invalid value"),
+                 ([knot, "-o", "x.vtp", "--frobnicate"], r"unknown option --frobnicate"),
+                 ([knot, "-o", "x.vtp", "--no-smoothing-weight"], r"unknown option"),
+                 ([knot, "-o", "x.vtp", "--pure-quads=1"], r"takes no value"),
+                 ([knot, "-o", "x.vtp", "--rounding-mode", "best"],
+                  r"invalid value 'best' for --rounding-mode \(none, simple, greedy\)"),
+                 ([knot, "-o", "x.vtp", "--target-quad-count", "0"], r"invalid value"),
+                 ([knot, "-o", "x.vtp", "--target-edge-length", "-1"], r"invalid value")]
         for args, pattern in cases:
             with self.subTest(args=args):
                 self.assert_one_line_error(args, 2, pattern)

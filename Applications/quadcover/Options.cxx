@@ -1,0 +1,373 @@
+#include "Options.h"
+
+#include "Pipeline.h"
+
+#include "vtkQuadCoverWriter.h"
+
+#include <cctype>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <ostream>
+#include <type_traits>
+
+namespace quadcover_app
+{
+namespace
+{
+/// SmoothingWeight -> smoothing-weight.
+std::string Kebab(const std::string& property)
+{
+  std::string flag;
+  for (std::size_t i = 0; i < property.size(); ++i)
+  {
+    const unsigned char c = property[i];
+    if (std::isupper(c) && i > 0)
+    {
+      flag += '-';
+    }
+    flag += static_cast<char>(std::tolower(c));
+  }
+  return flag;
+}
+
+Option Bind(const char* stage, const char* property, const char* meaning, Option::Kind kind,
+  std::function<double()> get, std::function<void(double)> set)
+{
+  Option o;
+  o.stage = stage;
+  o.property = property;
+  o.flag = Kebab(property);
+  o.meaning = meaning;
+  o.kind = kind;
+  o.get = std::move(get);
+  o.set = std::move(set);
+  return o;
+}
+
+Option Ranged(Option o, double low, double high)
+{
+  o.low = low;
+  o.high = high;
+  return o;
+}
+
+// Each option is bound by the property's own name, so its flag, its setter, its range and its
+// default cannot drift apart. Options of two filters (one concept both need) set both and take
+// the first one's range and default; a test checks that the two defaults agree.
+#define QC_KIND(f, Property)                                                                     \
+  (std::is_same<decltype(f->Get##Property()), bool>::value                                        \
+      ? Option::Kind::Switch                                                                     \
+      : (std::is_integral<decltype(f->Get##Property())>::value ? Option::Kind::Whole             \
+                                                               : Option::Kind::Number))
+#define QC_SET(f, Property, x) f->Set##Property(static_cast<decltype(f->Get##Property())>(x))
+#define QC_SWITCH(stage, f, Property, meaning)                                                   \
+  Bind(stage, #Property, meaning, Option::Kind::Switch,                                          \
+    [f]() { return double(f->Get##Property()); }, [f](double x) { QC_SET(f, Property, x); })
+#define QC_SWITCH2(stage, f, g, Property, meaning)                                               \
+  Bind(stage, #Property, meaning, Option::Kind::Switch,                                          \
+    [f]() { return double(f->Get##Property()); },                                                \
+    [f, g](double x) {                                                                           \
+      QC_SET(f, Property, x);                                                                    \
+      QC_SET(g, Property, x);                                                                    \
+    })
+#define QC_NUMBER(stage, f, Property, meaning)                                                   \
+  Ranged(Bind(stage, #Property, meaning, QC_KIND(f, Property),                                   \
+           [f]() { return double(f->Get##Property()); },                                         \
+           [f](double x) { QC_SET(f, Property, x); }),                                           \
+    double(f->Get##Property##MinValue()), double(f->Get##Property##MaxValue()))
+#define QC_NUMBER2(stage, f, g, Property, meaning)                                               \
+  Ranged(Bind(stage, #Property, meaning, QC_KIND(f, Property),                                   \
+           [f]() { return double(f->Get##Property()); },                                         \
+           [f, g](double x) {                                                                    \
+             QC_SET(f, Property, x);                                                             \
+             QC_SET(g, Property, x);                                                             \
+           }),                                                                                   \
+    double(f->Get##Property##MinValue()), double(f->Get##Property##MaxValue()))
+
+const Option* Find(const std::vector<Option>& options, const std::string& flag)
+{
+  for (const Option& o : options)
+  {
+    if (o.flag == flag)
+    {
+      return &o;
+    }
+  }
+  return nullptr;
+}
+
+/// Reads `text` as a value of `o`; false when it is not one.
+bool ReadValue(const Option& o, const std::string& text, double& value)
+{
+  if (o.kind == Option::Kind::Choice)
+  {
+    for (std::size_t i = 0; i < o.choices.size(); ++i)
+    {
+      if (o.choices[i] == text)
+      {
+        value = static_cast<double>(i);
+        return true;
+      }
+    }
+    return false;
+  }
+  char* end = nullptr;
+  value = std::strtod(text.c_str(), &end);
+  // the range first: converting an out-of-range double to int is undefined
+  return !text.empty() && *end == '\0' && value >= o.low && value <= o.high &&
+    (o.kind != Option::Kind::Whole || value == std::floor(value));
+}
+
+/// One "--name", "--name=value" or "--name value" argument at argv[i] (i moves past a value).
+std::string ParseOption(int argc, char* argv[], int& i, const std::vector<Option>& options)
+{
+  std::string name = std::string(argv[i]).substr(2);
+  std::string value;
+  const auto equals = name.find('=');
+  const bool inlineValue = equals != std::string::npos;
+  if (inlineValue)
+  {
+    value = name.substr(equals + 1);
+    name = name.substr(0, equals);
+  }
+  const Option* o = Find(options, name);
+  const Option* negated = name.compare(0, 3, "no-") == 0 ? Find(options, name.substr(3)) : nullptr;
+  if (!o && negated && negated->kind == Option::Kind::Switch && !inlineValue)
+  {
+    negated->set(0.0);
+    return "";
+  }
+  if (!o)
+  {
+    return "unknown option --" + name;
+  }
+  if (o->kind == Option::Kind::Switch && !inlineValue)
+  {
+    o->set(1.0);
+    return "";
+  }
+  if (!inlineValue)
+  {
+    if (i + 1 >= argc)
+    {
+      return "--" + name + " needs a value";
+    }
+    value = argv[++i];
+  }
+  double x = 0.0;
+  if (o->kind == Option::Kind::Switch)
+  {
+    return "--" + name + " takes no value (use --" + name + " or --no-" + name + ")";
+  }
+  if (!ReadValue(*o, value, x))
+  {
+    std::string allowed;
+    for (const std::string& c : o->choices)
+    {
+      allowed += (allowed.empty() ? " (" : ", ") + c;
+    }
+    return "invalid value '" + value + "' for --" + name + (allowed.empty() ? "" : allowed + ")");
+  }
+  o->set(x);
+  return "";
+}
+
+/// The checks once every argument is read.
+std::string CheckRequest(const Request& request)
+{
+  if (request.input.empty())
+  {
+    return "no input file given";
+  }
+  if (request.output.empty())
+  {
+    return "no output file given (-o OUTPUT)";
+  }
+  if (!vtkQuadCoverWriter::CanWriteFile(request.output.c_str()))
+  {
+    return "cannot write '" + request.output + "': unknown extension (use .vtp .vtk .obj .ply)";
+  }
+  if (Pipeline::StageIndex(request.stage) < 0)
+  {
+    std::string stages;
+    for (const std::string& s : Pipeline::StageNames())
+    {
+      stages += (stages.empty() ? "" : ", ") + s;
+    }
+    return "unknown stage '" + request.stage + "' (stages: " + stages + ")";
+  }
+  return "";
+}
+}
+
+std::string Option::Text(double value) const
+{
+  if (this->kind == Kind::Switch)
+  {
+    return value != 0.0 ? "on" : "off";
+  }
+  if (this->kind == Kind::Choice)
+  {
+    const int i = static_cast<int>(value);
+    return i >= 0 && i < static_cast<int>(this->choices.size()) ? this->choices[i] : "?";
+  }
+  char text[64];
+  std::snprintf(text, sizeof text, "%g", value);
+  return text;
+}
+
+std::vector<Option> StageOptions(Pipeline& p)
+{
+  vtkCurvatureFrames* curvature = p.Curvature;
+  vtkFrameSmoother* smoother = p.Smoother;
+  vtkMatchingBuilder* matching = p.Matching;
+  vtkQuadCoverSolver* solver = p.Solver;
+  vtkQuadExtractor* extractor = p.Extractor;
+  Option rounding = QC_NUMBER("param", solver, RoundingMode, "how the integers are rounded");
+  rounding.kind = Option::Kind::Choice;
+  rounding.choices = { "none", "simple", "greedy" }; // vtkQuadCoverSolver::ROUNDING_*
+  return {
+    QC_NUMBER("curvature", curvature, NeighborhoodRadius,
+      "radius of the curvature neighbourhood, in median edge lengths"),
+    QC_NUMBER("curvature", curvature, NumberOfThreads, "worker threads, 0 for all cores"),
+    QC_SWITCH("curvature", curvature, UseInputFrames,
+      "use a FrameU cell array of the input as the guidance field"),
+    QC_NUMBER("smooth", smoother, SmoothingWeight,
+      "lambda: smoothness against curvature alignment"),
+    QC_NUMBER("smooth", smoother, MaximumNumberOfIterations, "iterations at most per run"),
+    QC_NUMBER("smooth", smoother, ConvergenceTolerance,
+      "stop when an iteration lowers the energy by less than this fraction"),
+    QC_NUMBER("smooth", smoother, FeatureAngle, "edges sharper than this (degrees) are features"),
+    QC_NUMBER("smooth", smoother, MinimumFeatureLength,
+      "shortest chain of sharp edges that is a feature"),
+    QC_SWITCH("smooth", smoother, AlignToFeatures, "hold frames along sharp edges"),
+    QC_SWITCH2("smooth", smoother, solver, AlignToBoundary,
+      "quads follow the boundary: frames held along it, boundary edges on grid lines"),
+    QC_SWITCH("smooth", smoother, GlobalStart, "also start from the globally smoothest fields"),
+    QC_SWITCH("matching", matching, OptimizeBranchPoints, "merge singularities (Sect. 4.2)"),
+    QC_NUMBER("matching", matching, BranchPointWeight,
+      "cost of one singular point, in radians of matching angle"),
+    QC_SWITCH("matching", matching, LengthScaledCost,
+      "count each edge's matching angle by its length (off: once per edge)"),
+    QC_NUMBER("matching", matching, MaximumSearchSize, "points one merge search may visit"),
+    QC_SWITCH("matching", matching, FitFramesToMatchings,
+      "turn the frames to agree with changed matchings"),
+    QC_NUMBER2("matching", matching, solver, BoundaryTolerance,
+      "degrees a boundary edge may turn from its frame and still follow it"),
+    QC_NUMBER("param", solver, TargetQuadCount,
+      "about this many quads (when --target-edge-length is 0)"),
+    QC_NUMBER("param", solver, TargetEdgeLength,
+      "quad edge length in world units, 0 for --target-quad-count"),
+    QC_SWITCH("param", solver, PureQuads, "branch points on grid points, so only quads"),
+    rounding,
+    QC_NUMBER("param", solver, MaximumUntangleRounds,
+      "rounds of untangling per neighbourhood of flipped triangles"),
+    QC_SWITCH("param", solver, SplitSeams,
+      "write the surface cut open along the seams, with UV texture coordinates"),
+    QC_SWITCH("quads", extractor, RepairInvertedQuads,
+      "relax the quads around corners turned inside out"),
+    QC_NUMBER("quads", extractor, RelaxationIterations,
+      "sweeps of tangential relaxation of all quads"),
+    QC_SWITCH("quads", extractor, ComputeHausdorffDistance,
+      "measure the Hausdorff distance to the input"),
+  };
+}
+
+std::string Parse(int argc, char* argv[], const std::vector<Option>& options, Request& request)
+{
+  for (int i = 1; i < argc; ++i)
+  {
+    const std::string a = argv[i];
+    const bool takesValue = a == "-o" || a == "--output" || a == "--stage" || a == "--stats";
+    if (takesValue && i + 1 >= argc)
+    {
+      return a + " needs a value";
+    }
+    if (a == "-h" || a == "--help")
+    {
+      request.help = true;
+      return "";
+    }
+    else if (a == "-v" || a == "--verbose")
+      request.verbose = true;
+    else if (a == "-o" || a == "--output")
+      request.output = argv[++i];
+    else if (a == "--stage")
+      request.stage = argv[++i];
+    else if (a == "--stats")
+      request.stats = argv[++i];
+    else if (a.compare(0, 2, "--") == 0 && a.size() > 2)
+    {
+      const std::string problem = ParseOption(argc, argv, i, options);
+      if (!problem.empty())
+      {
+        return problem;
+      }
+    }
+    else if (!a.empty() && a[0] == '-' && a != "-")
+      return "unknown option " + a;
+    else if (request.input.empty())
+      request.input = a;
+    else
+      return "more than one input file given ('" + request.input + "', '" + a + "')";
+  }
+  return CheckRequest(request);
+}
+
+void PrintUsage(std::ostream& os, const std::vector<Option>& options)
+{
+  os << "usage: quadcover INPUT -o OUTPUT [--stage STAGE] [--stats FILE.json] [-v] [options]\n"
+        "\n"
+        "Runs the QuadCover pipeline on a surface up to STAGE and writes the result.\n"
+        "  INPUT            .obj .off .ply .stl .vtp or .vtk surface\n"
+        "  -o OUTPUT        .vtp or .vtk (every array kept), .obj or .ply (geometry only)\n"
+        "  --stage STAGE    repair|curvature|smooth|matching|param|quads (default quads)\n"
+        "  --stats FILE     write a JSON summary: sizes, seconds per stage, the options used\n"
+        "                   and every figure the stages write\n"
+        "  -v, --verbose    seconds per stage, and VTK's own messages (progress shows\n"
+        "                   whenever stderr is a terminal)\n"
+        "\n"
+        "Stage options: each is the filter property of the same name (--smoothing-weight sets\n"
+        "vtkFrameSmoother's SmoothingWeight); a switch takes --name or --no-name, a value\n"
+        "--name VALUE or --name=VALUE.\n";
+  std::string stage;
+  for (const Option& o : options)
+  {
+    if (o.stage != stage)
+    {
+      stage = o.stage;
+      os << stage << ":\n";
+    }
+    std::string range;
+    if (o.kind == Option::Kind::Number || o.kind == Option::Kind::Whole)
+    {
+      char text[96];
+      std::snprintf(text, sizeof text, ", %g..%g", o.low, o.high);
+      range = text;
+    }
+    else if (o.kind == Option::Kind::Choice)
+    {
+      for (const std::string& c : o.choices)
+      {
+        range += (range.empty() ? ", " : "|") + c;
+      }
+    }
+    const std::string flag = o.kind == Option::Kind::Switch
+      ? "--[no-]" + o.flag
+      : "--" + o.flag + (o.kind == Option::Kind::Choice ? " MODE" : " X");
+    os << "  " << flag << "\n      " << o.meaning << range << " (default " << o.Text(o.get())
+       << ")\n";
+  }
+  os << "\n"
+        "Repaired silently (stage repair, counted in --stats): polygons and strips\n"
+        "triangulated, vertex and line cells dropped, exactly coincident points merged,\n"
+        "triangles with a repeated point removed, triangles reoriented to agree with their\n"
+        "neighbours, and a point where separate fans of triangles touch split into one copy\n"
+        "per fan.\n"
+        "Refused: missing, unreadable or empty files, unknown extensions, no polygons, point\n"
+        "ids out of range, NaN or infinite coordinates, non-manifold edges, surfaces whose\n"
+        "triangles all have zero area.\n"
+        "Exit status: 0 done, 1 the input or a stage failed (one line on stderr), 2 bad usage.\n";
+}
+}

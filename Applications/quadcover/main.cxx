@@ -1,0 +1,131 @@
+// quadcover: runs the QuadCover pipeline on a surface file, up to a chosen stage.
+//
+//   quadcover INPUT -o OUTPUT [--stage NAME] [--stats FILE.json] [-v] [stage options]
+//
+// Exit status: 0 done, 1 the input or a stage failed (one line on stderr), 2 bad usage.
+#include "Options.h"
+#include "Pipeline.h"
+#include "Stats.h"
+
+#include "vtkLogger.h"
+#include "vtkNew.h"
+#include "vtkOutputWindow.h"
+#include "vtkPolyData.h"
+#include "vtkQuadCoverErrorObserver.h"
+#include "vtkQuadCoverReader.h"
+#include "vtkQuadCoverWriter.h"
+#include "vtkStringOutputWindow.h"
+
+#include <chrono>
+#include <cstdio>
+#include <fstream>
+#include <iostream>
+#include <unistd.h>
+
+namespace
+{
+using quadcover_app::Timing;
+
+int Fail(const std::string& message)
+{
+  std::cerr << "quadcover: error: " << message << "\n";
+  return 1;
+}
+
+double Since(std::chrono::steady_clock::time_point start)
+{
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+/// Keeps VTK's stray messages off the terminal. (GlobalWarningDisplayOff would also stop the
+/// ErrorEvents the observers turn into one-line errors.)
+void QuietVTK()
+{
+  vtkNew<vtkStringOutputWindow> quiet;
+  vtkOutputWindow::SetInstance(quiet);
+  vtkLogger::SetStderrVerbosity(vtkLogger::VERBOSITY_OFF); // VTK 9 logs errors here too
+}
+
+/// Runs `algorithm`'s Update (or a writer's Write) and returns its first error.
+template<typename Algorithm>
+std::string Run(Algorithm* algorithm)
+{
+  vtkNew<vtkQuadCoverErrorObserver> errors;
+  errors->Attach(algorithm);
+  algorithm->Update();
+  return errors->GetError();
+}
+}
+
+int main(int argc, char* argv[])
+{
+  quadcover_app::Pipeline pipeline;
+  const std::vector<quadcover_app::Option> options = quadcover_app::StageOptions(pipeline);
+  quadcover_app::Request request;
+  const std::string usage = quadcover_app::Parse(argc, argv, options, request);
+  if (request.help)
+  {
+    quadcover_app::PrintUsage(std::cout, options);
+    return 0;
+  }
+  if (!usage.empty())
+  {
+    std::cerr << "quadcover: " << usage << " (see quadcover --help)\n";
+    return 2;
+  }
+  if (!request.verbose)
+  {
+    QuietVTK();
+  }
+  std::vector<Timing> timings;
+  auto start = std::chrono::steady_clock::now();
+  vtkNew<vtkQuadCoverReader> reader;
+  reader->SetFileName(request.input.c_str());
+  std::string error = Run(reader.Get());
+  if (!error.empty())
+  {
+    return Fail(error);
+  }
+  timings.push_back({ "read", Since(start) });
+
+  const int last = quadcover_app::Pipeline::StageIndex(request.stage);
+  const bool progress = isatty(STDERR_FILENO) != 0; // a log file gets no \r updates
+  error = pipeline.Run(reader->GetOutput(), last, progress, timings);
+  if (!error.empty())
+  {
+    return Fail("'" + request.input + "': " + error);
+  }
+
+  start = std::chrono::steady_clock::now();
+  vtkNew<vtkQuadCoverWriter> writer;
+  writer->SetFileName(request.output.c_str());
+  writer->SetInputConnection(pipeline.Filter(last)->GetOutputPort());
+  error = Run(writer.Get());
+  if (!error.empty())
+  {
+    return Fail(error);
+  }
+  timings.push_back({ "write", Since(start) });
+
+  if (request.verbose)
+  {
+    vtkPolyData* surface = pipeline.Repair->GetOutput();
+    std::fprintf(stderr, "quadcover: %lld points, %lld triangles\n",
+      static_cast<long long>(surface->GetNumberOfPoints()),
+      static_cast<long long>(surface->GetNumberOfPolys()));
+    for (const Timing& t : timings)
+    {
+      std::fprintf(stderr, "  %-10s %8.3f s\n", t.name.c_str(), t.seconds);
+    }
+  }
+  if (!request.stats.empty())
+  {
+    std::ofstream out(request.stats);
+    out << quadcover_app::StatsJson(request, reader->GetOutput(), pipeline, last, timings, options);
+    if (!out.good())
+    {
+      return Fail("cannot write '" + request.stats + "'");
+    }
+  }
+  return 0;
+}

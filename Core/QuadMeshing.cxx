@@ -1,0 +1,118 @@
+#include "QuadMeshing.h"
+
+#include <algorithm>
+#include <stdexcept>
+
+namespace quadcover
+{
+
+QuadMeshResult buildQuadMesh(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F,
+  const MeshTopology& topo, const Eigen::MatrixXd& cornerUV, const QuadMeshOptions& options,
+  const Progress& progress)
+{
+  QuadMeshResult r;
+  r.mesh = extractQuads(V, F, topo, cornerUV, options.extraction, progress.part(0.0, 0.5));
+  if (options.repairInvertedQuads)
+  {
+    r.invertedExtracted = repairInvertedQuads(V, F, topo, r.mesh).first;
+  }
+  else
+  {
+    r.invertedExtracted = countInvertedQuads(r.mesh.V, r.mesh.Q);
+  }
+  progress.report(0.7);
+  if (options.relaxationIterations > 0)
+  {
+    QuadRelaxOptions relax;
+    relax.relaxationIterations = options.relaxationIterations;
+    relaxQuads(V, F, topo, r.mesh, relax, progress.part(0.7, 0.95));
+  }
+  r.quality = measureQuads(r.mesh.V, r.mesh.Q);
+  for (Eigen::Index i = 0; i < r.quality.scaledJacobian.size(); ++i)
+  {
+    r.invertedFinal += !(r.quality.scaledJacobian[i] > 0);
+  }
+  progress.report(1.0);
+  return r;
+}
+
+Eigen::MatrixX3d joinSplitPoints(
+  const Eigen::MatrixX3d& V, Eigen::MatrixX3i& F, const std::vector<int>& pointId)
+{
+  const int n = static_cast<int>(V.rows());
+  if (static_cast<int>(pointId.size()) != n)
+  {
+    throw std::invalid_argument("joinSplitPoints: one id per point is needed");
+  }
+  int top = -1;
+  for (const int id : pointId)
+  {
+    if (id < 0 || id >= n)
+    {
+      throw std::invalid_argument("joinSplitPoints: a point id is out of range");
+    }
+    top = std::max(top, id);
+  }
+  Eigen::MatrixX3d joined = Eigen::MatrixX3d::Zero(top + 1, 3);
+  for (int p = 0; p < n; ++p)
+  {
+    joined.row(pointId[p]) = V.row(p);
+  }
+  for (Eigen::Index f = 0; f < F.rows(); ++f)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      if (F(f, k) < 0 || F(f, k) >= n)
+      {
+        throw std::invalid_argument("joinSplitPoints: a triangle refers to a point that is not");
+      }
+      F(f, k) = pointId[F(f, k)];
+    }
+  }
+  return joined;
+}
+
+HausdorffSamples hausdorffSamples(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F,
+  const Eigen::MatrixX3d& quadV, const Eigen::MatrixX4i& Q)
+{
+  HausdorffSamples s;
+  s.quadTriangles.resize(2 * Q.rows(), 3);
+  s.quadPoints.resize(quadV.rows() + 5 * Q.rows(), 3);
+  s.quadPoints.topRows(quadV.rows()) = quadV;
+  Eigen::Index next = quadV.rows();
+  for (Eigen::Index i = 0; i < Q.rows(); ++i)
+  {
+    const auto q = Q.row(i);
+    s.quadTriangles.row(2 * i) << q[0], q[1], q[2];
+    s.quadTriangles.row(2 * i + 1) << q[0], q[2], q[3];
+    Eigen::RowVector3d centre = Eigen::RowVector3d::Zero();
+    for (int k = 0; k < 4; ++k)
+    {
+      s.quadPoints.row(next++) = 0.5 * (quadV.row(q[k]) + quadV.row(q[(k + 1) % 4]));
+      centre += 0.25 * quadV.row(q[k]);
+    }
+    s.quadPoints.row(next++) = centre;
+  }
+  // only the points triangles use: a joined or messy surface may have others
+  std::vector<char> used(V.rows(), 0);
+  for (Eigen::Index f = 0; f < F.rows(); ++f)
+  {
+    used[F(f, 0)] = used[F(f, 1)] = used[F(f, 2)] = 1;
+  }
+  s.surfacePoints.resize(std::count(used.begin(), used.end(), 1), 3);
+  for (Eigen::Index v = 0, i = 0; v < V.rows(); ++v)
+  {
+    if (used[v])
+    {
+      s.surfacePoints.row(i++) = V.row(v);
+    }
+  }
+  if (s.surfacePoints.rows() > 0)
+  {
+    s.diagonal =
+      (s.surfacePoints.colwise().maxCoeff() - s.surfacePoints.colwise().minCoeff()).norm();
+  }
+  return s;
+}
+
+}

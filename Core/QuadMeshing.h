@@ -1,0 +1,83 @@
+// QuadMeshing.h: the quad stage as vtkQuadExtractor runs it (extraction, repair, relaxation,
+// figures), the joining of a surface cut open along its seams, and the samples of the
+// Hausdorff distance between a surface and its quad mesh.
+#ifndef quadcover_QuadMeshing_h
+#define quadcover_QuadMeshing_h
+
+#include "MeshTopology.h"
+#include "Progress.h"
+#include "QuadExtraction.h"
+
+#include <Eigen/Core>
+
+#include <vector>
+
+namespace quadcover
+{
+
+/// The quad stage: what it runs after the extraction.
+struct QuadMeshOptions
+{
+  QuadExtractionOptions extraction;
+  /// Relax the quads around every quad with a corner turned inside out (repairInvertedQuads).
+  bool repairInvertedQuads = true;
+  /// Sweeps of tangential relaxation of the whole mesh afterwards (relaxQuads); 0: none.
+  int relaxationIterations = 0;
+  /// Measure the two-sided Hausdorff distance to the surface (hausdorffSamples); the filter
+  /// finds the closest points.
+  bool computeHausdorffDistance = true;
+};
+
+struct QuadMeshResult
+{
+  QuadMesh mesh;
+  QuadQuality quality;        ///< measureQuads of the final mesh
+  int invertedExtracted = 0;  ///< quads with a corner turned inside out as extracted
+  int invertedFinal = 0;      ///< and in the final mesh
+  int droppedCells() const
+  {
+    return mesh.cellsOffSurface + mesh.cellsDegenerate + mesh.cellsConflicting;
+  }
+};
+
+/**
+ * extractQuads, then repairInvertedQuads (or only countInvertedQuads), then relaxQuads with
+ * options.relaxationIterations sweeps, then measureQuads.
+ * @throws std::invalid_argument as extractQuads does
+ */
+QuadMeshResult buildQuadMesh(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F,
+  const MeshTopology& topo, const Eigen::MatrixXd& cornerUV,
+  const QuadMeshOptions& options = QuadMeshOptions(), const Progress& progress = Progress());
+
+/**
+ * Joins a surface cut open along its seams (vtkQuadCoverSolver's SplitSeams output) back
+ * together: point p of the cut surface is point pointId[p] of the whole one.
+ * @param[in]     V       #P x 3 points of the cut surface
+ * @param[in,out] F       #F x 3 triangles, renumbered into the joined points
+ * @param[in]     pointId #P, each in [0, #P)
+ * @return the joined surface's points (max(pointId) + 1 rows; an id no point has stays at 0)
+ * @throws std::invalid_argument on sizes that do not match or ids out of range
+ */
+Eigen::MatrixX3d joinSplitPoints(
+  const Eigen::MatrixX3d& V, Eigen::MatrixX3i& F, const std::vector<int>& pointId);
+
+/// What the two-sided Hausdorff distance between a surface and its quad mesh is measured on.
+struct HausdorffSamples
+{
+  /// the surface's points that its triangles use, measured against quadTriangles
+  Eigen::MatrixX3d surfacePoints;
+  /// the quads' corners, edge midpoints and centres, measured against the surface
+  Eigen::MatrixX3d quadPoints;
+  /// 2 #Q x 3: each quad (a, b, c, d) as the triangles (a, b, c) and (a, c, d)
+  Eigen::MatrixX3i quadTriangles;
+  /// of the bounding box of surfacePoints: the distances are reported as a share of it
+  double diagonal = 0.0;
+};
+
+/// @param[in] V, F the surface; @param[in] quadV, Q the quad mesh
+HausdorffSamples hausdorffSamples(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F,
+  const Eigen::MatrixX3d& quadV, const Eigen::MatrixX4i& Q);
+
+}
+
+#endif

@@ -1,0 +1,72 @@
+/**
+ * @class   vtkQuadCoverAlgorithm
+ * @brief   what every QuadCover stage shares: input checks, errors, warnings and progress
+ *
+ * The base of vtkQuadCoverSurfaceRepair, vtkCurvatureFrames, vtkFrameSmoother,
+ * vtkMatchingBuilder, vtkQuadCoverSolver and vtkQuadExtractor. RequestData checks the input
+ * (point ids in range, finite coordinates; for the five stages also polygons and strips
+ * triangulated, triangles that repeat a point dropped with a warning, and the connectivity the
+ * stage needs), then runs the stage. Any failure becomes one error, "Cannot <what the stage
+ * does>: <reason>.", through vtkErrorMacro, and RequestData returns 0. The long computations
+ * report progress (ProgressEvent) and stop soon after AbortExecute is set; the outputs are then
+ * left empty and no error is raised.
+ *
+ * Subclasses implement Execute and name their action; they throw std::exception (a one-line
+ * what(), without a final period) for anything wrong with their input.
+ * @sa vtkQuadCoverErrorObserver
+ */
+#ifndef vtkQuadCoverAlgorithm_h
+#define vtkQuadCoverAlgorithm_h
+
+#include "vtkPolyDataAlgorithm.h"
+#include "vtkQuadCoverFiltersModule.h" // for export macro
+
+#include <string> // for std::string
+
+struct vtkQuadCoverSurface;
+
+class VTKQUADCOVERFILTERS_EXPORT vtkQuadCoverAlgorithm : public vtkPolyDataAlgorithm
+{
+public:
+  vtkTypeMacro(vtkQuadCoverAlgorithm, vtkPolyDataAlgorithm);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  /// What the input must be before Execute sees it.
+  enum InputRequirement
+  {
+    /// points and cells as they are (ids in range, coordinates finite)
+    ANY_POLYDATA,
+    /// triangles only (polygons triangulated), at most two per edge, consistently oriented
+    MANIFOLD_EDGES,
+    /// and every point's triangles one fan (ordered one-rings)
+    MANIFOLD_SURFACE
+  };
+
+protected:
+  /// `requirement`: what the stage needs of its input (checked before Execute); `action`: what
+  /// it does, for its errors ("smooth frames": "Cannot smooth frames: ...").
+  vtkQuadCoverAlgorithm(InputRequirement requirement, const char* action);
+  ~vtkQuadCoverAlgorithm() override = default;
+  /// The stage's work on the checked input. Throws std::exception for a bad input.
+  virtual void Execute(vtkQuadCoverSurface& input, vtkInformationVector* outputVector) = 0;
+
+  /// The cell array the stage reads as input array `index` (SetInputArrayToProcess), checked to
+  /// have `components` components and one tuple per cell; otherwise throws "the input has no
+  /// N-component cell array NAME (HINT)".
+  vtkDataArray* RequireCellArray(int index, vtkPolyData* surface, int components,
+    const char* name, const char* hint);
+
+  /// One warning (vtkWarningMacro), a period added.
+  void Warn(const std::string& text);
+
+  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+
+private:
+  vtkQuadCoverAlgorithm(const vtkQuadCoverAlgorithm&) = delete;
+  void operator=(const vtkQuadCoverAlgorithm&) = delete;
+
+  InputRequirement Requirement;
+  const char* Action;
+};
+
+#endif

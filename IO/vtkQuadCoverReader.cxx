@@ -1,0 +1,148 @@
+#include "vtkQuadCoverReader.h"
+
+#include "vtkQuadCoverFileChecks.h"
+
+#include "vtkInformationVector.h"
+#include "vtkNew.h"
+#include "vtkOBJReader.h"
+#include "vtkOFFReader.h"
+#include "vtkObjectFactory.h"
+#include "vtkPLYReader.h"
+#include "vtkPolyData.h"
+#include "vtkPolyDataReader.h"
+#include "vtkQuadCoverErrorObserver.h"
+#include "vtkSTLReader.h"
+#include "vtkSmartPointer.h"
+#include "vtkXMLPolyDataReader.h"
+
+#include <fstream>
+#include <sys/stat.h>
+
+vtkStandardNewMacro(vtkQuadCoverReader);
+
+namespace
+{
+/// "" when `path` names a non-empty, readable file, else why not.
+std::string CheckFile(const std::string& path)
+{
+  struct stat info;
+  if (stat(path.c_str(), &info) != 0)
+  {
+    return "no such file";
+  }
+  if (S_ISDIR(info.st_mode) || !std::ifstream(path).good())
+  {
+    return "not a readable file";
+  }
+  return info.st_size == 0 ? "the file is empty" : "";
+}
+
+/// The VTK reader for the extension, after the checks its format needs; null and `error` set
+/// when a check fails.
+vtkSmartPointer<vtkAlgorithm> MakeReader(const std::string& path, std::string& error)
+{
+  namespace checks = vtkQuadCoverFileChecks;
+  const std::string ext = checks::Extension(path);
+  auto make = [&](auto reader) -> vtkSmartPointer<vtkAlgorithm> {
+    reader->SetFileName(path.c_str());
+    return reader;
+  };
+  if (ext == ".obj")
+  {
+    error = checks::CheckObjText(path);
+    return error.empty() ? make(vtkSmartPointer<vtkOBJReader>::New()) : nullptr;
+  }
+  if (ext == ".ply")
+  {
+    error = checks::CheckPlyFaces(path);
+    return error.empty() ? make(vtkSmartPointer<vtkPLYReader>::New()) : nullptr;
+  }
+  if (ext == ".stl")
+  {
+    return make(vtkSmartPointer<vtkSTLReader>::New());
+  }
+  if (ext == ".off")
+  {
+    return make(vtkSmartPointer<vtkOFFReader>::New());
+  }
+  if (ext == ".vtp")
+  {
+    return make(vtkSmartPointer<vtkXMLPolyDataReader>::New());
+  }
+  auto legacy = vtkSmartPointer<vtkPolyDataReader>::New();
+  legacy->SetFileName(path.c_str());
+  if (!legacy->IsFilePolyData())
+  {
+    error = "not a legacy VTK polydata file";
+    return nullptr;
+  }
+  return legacy;
+}
+}
+
+//------------------------------------------------------------------------------
+vtkQuadCoverReader::vtkQuadCoverReader()
+{
+  this->SetNumberOfInputPorts(0);
+}
+
+//------------------------------------------------------------------------------
+vtkQuadCoverReader::~vtkQuadCoverReader()
+{
+  this->SetFileName(nullptr);
+}
+
+//------------------------------------------------------------------------------
+bool vtkQuadCoverReader::CanReadFile(const char* fileName)
+{
+  const std::string e = vtkQuadCoverFileChecks::Extension(fileName ? fileName : "");
+  return e == ".obj" || e == ".off" || e == ".ply" || e == ".stl" || e == ".vtp" || e == ".vtk";
+}
+
+//------------------------------------------------------------------------------
+int vtkQuadCoverReader::RequestData(
+  vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector)
+{
+  const std::string path = this->FileName ? this->FileName : "";
+  std::string error;
+  if (path.empty())
+  {
+    error = "no file name given";
+  }
+  else if (!CanReadFile(path.c_str()))
+  {
+    error = "unknown extension (use .obj .off .ply .stl .vtp or .vtk)";
+  }
+  else
+  {
+    error = CheckFile(path);
+  }
+  vtkSmartPointer<vtkAlgorithm> reader = error.empty() ? MakeReader(path, error) : nullptr;
+  if (reader)
+  {
+    vtkNew<vtkQuadCoverErrorObserver> errors;
+    errors->Attach(reader);
+    reader->Update();
+    error = errors->GetError();
+  }
+  vtkPolyData* read = reader ? vtkPolyData::SafeDownCast(reader->GetOutputDataObject(0)) : nullptr;
+  if (error.empty() && (!read || read->GetNumberOfPoints() == 0))
+  {
+    error = "no points found (empty, or not a valid " + vtkQuadCoverFileChecks::Extension(path) +
+      " file)";
+  }
+  if (!error.empty())
+  {
+    vtkErrorMacro(<< "cannot read '" << path << "': " << error);
+    return 0;
+  }
+  vtkPolyData::GetData(outputVector)->ShallowCopy(read);
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+void vtkQuadCoverReader::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "FileName: " << (this->FileName ? this->FileName : "(none)") << "\n";
+}
