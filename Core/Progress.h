@@ -17,8 +17,7 @@ class Cancelled : public std::runtime_error
 public:
   Cancelled()
     : std::runtime_error("cancelled")
-  {
-  }
+  {}
 };
 
 /**
@@ -36,8 +35,7 @@ public:
   Progress() = default;
   explicit Progress(Callback callback)
     : callback_(std::make_shared<const Callback>(std::move(callback)))
-  {
-  }
+  {}
 
   /// Reports `fraction` of this object's share done.
   /// @throws Cancelled when the callback returns false

@@ -31,9 +31,9 @@ struct QuadMeshOptions
 struct QuadMeshResult
 {
   QuadMesh mesh;
-  QuadQuality quality;        ///< measureQuads of the final mesh
-  int invertedExtracted = 0;  ///< quads with a corner turned inside out as extracted
-  int invertedFinal = 0;      ///< and in the final mesh
+  QuadQuality quality;       ///< measureQuads of the final mesh
+  int invertedExtracted = 0; ///< quads with a corner turned inside out as extracted
+  int invertedFinal = 0;     ///< and in the final mesh
   int droppedCells() const
   {
     return mesh.cellsOffSurface + mesh.cellsDegenerate + mesh.cellsConflicting;

@@ -52,7 +52,8 @@ void vtkCurvatureFrames::Execute(vtkQuadCoverSurface& in, vtkInformationVector* 
     this->Warn(std::to_string(field.truncatedNeighborhoods) + " neighbourhoods were cut at " +
       std::to_string(options.maximumNeighborhood) + " triangles (very uneven triangle sizes?)");
   }
-  vtkDataArray* user = this->UseInputFrames ? this->GetInputArrayToProcess(0, in.polyData) : nullptr;
+  vtkDataArray* user =
+    this->UseInputFrames ? this->GetInputArrayToProcess(0, in.polyData) : nullptr;
   if (user && user->GetNumberOfComponents() == 3 && user->GetNumberOfTuples() == in.F.rows())
   {
     const int kept = quadcover::applyInputFrames(field, vtkQuadCoverEigen::FromArray3(user));
@@ -64,7 +65,8 @@ void vtkCurvatureFrames::Execute(vtkQuadCoverSurface& in, vtkInformationVector* 
   }
   else if (user)
   {
-    this->Warn(std::string("Input frame array ") + (user->GetName() ? user->GetName() : "(unnamed)") +
+    this->Warn(std::string("Input frame array ") +
+      (user->GetName() ? user->GetName() : "(unnamed)") +
       " is not a 3-component cell array; curvature frames are used");
   }
 

@@ -29,10 +29,11 @@
  * and a surface whose triangles all have zero area. Triangles that repeat a point id (e.g. the
  * joins of triangle strips) carry no surface and are dropped with a warning. Run
  * vtkQuadCoverSurfaceRepair first on a raw surface (it merges duplicate points, orients the
- * triangles and splits non-manifold vertices). Vertices and lines are dropped with a warning. Zero-area
- * triangles are accepted: they take their neighbourhood's normal and their edges add no bending
- * (zero frames, with a warning, where no neighbour has a normal either). Non-manifold vertices
- * (fans touching at one vertex) only give a warning: they do not disturb a per-triangle estimate.
+ * triangles and splits non-manifold vertices). Vertices and lines are dropped with a warning.
+ * Zero-area triangles are accepted: they take their neighbourhood's normal and their edges add no
+ * bending (zero frames, with a warning, where no neighbour has a normal either). Non-manifold
+ * vertices (fans touching at one vertex) only give a warning: they do not disturb a per-triangle
+ * estimate.
  *
  * @warning The estimate is cell-centred; vtkCurvatures gives per-vertex Gaussian/mean values.
  * @sa vtkFrameSmoother vtkCurvatures

@@ -130,8 +130,8 @@ void vtkMatchingBuilder::Execute(vtkQuadCoverSurface& in, vtkInformationVector* 
   const Eigen::MatrixX3d U = vtkQuadCoverEigen::FromArray3(u);
   if (!U.allFinite())
   {
-    throw std::invalid_argument(std::string(u->GetName() ? u->GetName() : names::FrameU) +
-      " has non-finite values");
+    throw std::invalid_argument(
+      std::string(u->GetName() ? u->GetName() : names::FrameU) + " has non-finite values");
   }
   this->UpdateProgress(0.1);
   const quadcover::FrameGeometry geometry = quadcover::computeFrameGeometry(in.V, in.F, in.topo);

@@ -77,8 +77,7 @@ std::string WithoutPeriod(std::string text)
 vtkQuadCoverAlgorithm::vtkQuadCoverAlgorithm(InputRequirement requirement, const char* action)
   : Requirement(requirement)
   , Action(action)
-{
-}
+{}
 
 //------------------------------------------------------------------------------
 int vtkQuadCoverAlgorithm::RequestData(

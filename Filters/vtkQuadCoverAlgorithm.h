@@ -53,8 +53,8 @@ protected:
   /// The cell array the stage reads as input array `index` (SetInputArrayToProcess), checked to
   /// have `components` components and one tuple per cell; otherwise throws "the input has no
   /// N-component cell array NAME (HINT)".
-  vtkDataArray* RequireCellArray(int index, vtkPolyData* surface, int components,
-    const char* name, const char* hint);
+  vtkDataArray* RequireCellArray(
+    int index, vtkPolyData* surface, int components, const char* name, const char* hint);
 
   /// One warning (vtkWarningMacro), a period added.
   void Warn(const std::string& text);

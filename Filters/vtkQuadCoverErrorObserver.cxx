@@ -26,8 +26,8 @@ void vtkQuadCoverErrorObserver::Execute(vtkObject*, unsigned long event, void* c
 //------------------------------------------------------------------------------
 void vtkQuadCoverErrorObserver::Attach(vtkAlgorithm* algorithm)
 {
-  for (vtkObject* o : { static_cast<vtkObject*>(algorithm),
-         static_cast<vtkObject*>(algorithm->GetExecutive()) })
+  for (vtkObject* o :
+    { static_cast<vtkObject*>(algorithm), static_cast<vtkObject*>(algorithm->GetExecutive()) })
   {
     o->AddObserver(vtkCommand::ErrorEvent, this);
     o->AddObserver(vtkCommand::WarningEvent, this);

@@ -62,8 +62,8 @@ Eigen::MatrixX3i ReadMatching(vtkDataArray* m, const quadcover::MeshTopology& to
 }
 
 /// The surface cut open along the seams: a point per sector, UV its texture coordinates.
-void WriteSplitSurface(vtkPolyData* output, const vtkQuadCoverSurface& in,
-  const quadcover::Parameterization& map)
+void WriteSplitSurface(
+  vtkPolyData* output, const vtkQuadCoverSurface& in, const quadcover::Parameterization& map)
 {
   const vtkIdType ns = static_cast<vtkIdType>(map.sectorPoint.size());
   const vtkIdType nf = in.NumberOfTriangles();

@@ -98,8 +98,7 @@ vtkIdType SplitBowties(vtkPolyData* surface)
   const quadcover::MeshTopology topo = quadcover::buildTopology(F, static_cast<int>(nv));
   if (!topo.nonManifoldEdges.empty())
   {
-    throw std::invalid_argument("the surface has " +
-      std::to_string(topo.nonManifoldEdges.size()) +
+    throw std::invalid_argument("the surface has " + std::to_string(topo.nonManifoldEdges.size()) +
       " non-manifold edges (more than two triangles on one edge); QuadCover needs a manifold "
       "surface");
   }
@@ -125,8 +124,7 @@ vtkIdType SplitBowties(vtkPolyData* surface)
 //------------------------------------------------------------------------------
 vtkQuadCoverSurfaceRepair::vtkQuadCoverSurfaceRepair()
   : vtkQuadCoverAlgorithm(ANY_POLYDATA, "repair the surface")
-{
-}
+{}
 
 //------------------------------------------------------------------------------
 void vtkQuadCoverSurfaceRepair::Execute(vtkQuadCoverSurface& in, vtkInformationVector* outputVector)

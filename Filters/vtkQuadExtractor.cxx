@@ -69,8 +69,8 @@ void JoinSplitSurface(vtkQuadCoverSurface& in)
   in.topo = quadcover::buildTopology(in.F, static_cast<int>(in.V.rows()));
   if (!in.topo.isManifold() || !in.topo.isOriented())
   {
-    throw std::invalid_argument(std::string("the surface joined through ") +
-      names::SurfacePointId + " has " + in.topo.describeDefects());
+    throw std::invalid_argument(std::string("the surface joined through ") + names::SurfacePointId +
+      " has " + in.topo.describeDefects());
   }
 }
 
@@ -106,8 +106,7 @@ void AddFigures(vtkFieldData* fd, const quadcover::QuadMeshResult& r)
   using vtkQuadCoverEigen::AddField;
   const quadcover::QuadQuality& m = r.quality;
   const quadcover::QuadMesh& quads = r.mesh;
-  AddField<vtkDoubleArray>(
-    fd, names::QuadShare, { m.faces > 0 ? double(m.quads) / m.faces : 0.0 });
+  AddField<vtkDoubleArray>(fd, names::QuadShare, { m.faces > 0 ? double(m.quads) / m.faces : 0.0 });
   AddField<vtkIntArray>(
     fd, names::IrregularVertices, { double(m.irregularInner), double(m.irregularBoundary) });
   AddField<vtkDoubleArray>(fd, names::EdgeLengthRSD, { m.edgeLengthRSD });

@@ -24,8 +24,7 @@ class OffLines
 public:
   explicit OffLines(std::istream& in)
     : In(in)
-  {
-  }
+  {}
 
   /// The next line that holds something; false at the end of the file.
   bool Next(std::istringstream& words)
@@ -106,8 +105,8 @@ void ReadVertices(OffLines& lines, long long nv, vtkPoints* points)
     std::istringstream words;
     if (!lines.Next(words))
     {
-      lines.Fail("the file ends after " + std::to_string(i) + " of " + std::to_string(nv) +
-        " vertices");
+      lines.Fail(
+        "the file ends after " + std::to_string(i) + " of " + std::to_string(nv) + " vertices");
     }
     double x[3];
     if (!(words >> x[0] >> x[1] >> x[2]))
@@ -131,8 +130,8 @@ void ReadFaces(OffLines& lines, long long nv, long long nf, vtkPolyData* out)
     std::istringstream words;
     if (!lines.Next(words))
     {
-      lines.Fail("the file ends after " + std::to_string(i) + " of " + std::to_string(nf) +
-        " faces");
+      lines.Fail(
+        "the file ends after " + std::to_string(i) + " of " + std::to_string(nf) + " faces");
     }
     long long n = 0;
     if (!(words >> n) || n < 1 || n > nv)

@@ -115,8 +115,7 @@ public:
     : In(in)
     , Ascii(format == "ascii")
     , Swap(format == "binary_big_endian")
-  {
-  }
+  {}
 
   bool Read(const std::string& t, double& value)
   {

@@ -54,35 +54,40 @@ Option Ranged(Option o, double low, double high)
 
 // Each option is bound by the property's own name, so its flag, its setter, its range and its
 // default cannot drift apart. Options of two filters (one concept both need) set both and take
-// the first one's range and default; a test checks that the two defaults agree.
-#define QC_KIND(f, Property)                                                                     \
-  (std::is_same<decltype(f->Get##Property()), bool>::value                                        \
-      ? Option::Kind::Switch                                                                     \
-      : (std::is_integral<decltype(f->Get##Property())>::value ? Option::Kind::Whole             \
+// the first one's range; their value is NaN while the two filters disagree.
+#define QC_KIND(f, Property)                                                                       \
+  (std::is_same<decltype(f->Get##Property()), bool>::value                                         \
+      ? Option::Kind::Switch                                                                       \
+      : (std::is_integral<decltype(f->Get##Property())>::value ? Option::Kind::Whole               \
                                                                : Option::Kind::Number))
 #define QC_SET(f, Property, x) f->Set##Property(static_cast<decltype(f->Get##Property())>(x))
-#define QC_SWITCH(stage, f, Property, meaning)                                                   \
-  Bind(stage, #Property, meaning, Option::Kind::Switch,                                          \
-    [f]() { return double(f->Get##Property()); }, [f](double x) { QC_SET(f, Property, x); })
-#define QC_SWITCH2(stage, f, g, Property, meaning)                                               \
-  Bind(stage, #Property, meaning, Option::Kind::Switch,                                          \
-    [f]() { return double(f->Get##Property()); },                                                \
-    [f, g](double x) {                                                                           \
-      QC_SET(f, Property, x);                                                                    \
-      QC_SET(g, Property, x);                                                                    \
+#define QC_SWITCH(stage, f, Property, meaning)                                                     \
+  Bind(                                                                                            \
+    stage, #Property, meaning, Option::Kind::Switch, [f]() { return double(f->Get##Property()); }, \
+    [f](double x) { QC_SET(f, Property, x); })
+#define QC_BOTH(f, g, Property)                                                                    \
+  [f, g]() {                                                                                       \
+    return f->Get##Property() == g->Get##Property() ? double(f->Get##Property())                   \
+                                                    : std::nan("the two filters disagree");        \
+  }
+#define QC_SWITCH2(stage, f, g, Property, meaning)                                                 \
+  Bind(                                                                                            \
+    stage, #Property, meaning, Option::Kind::Switch, QC_BOTH(f, g, Property), [f, g](double x) {   \
+      QC_SET(f, Property, x);                                                                      \
+      QC_SET(g, Property, x);                                                                      \
     })
-#define QC_NUMBER(stage, f, Property, meaning)                                                   \
-  Ranged(Bind(stage, #Property, meaning, QC_KIND(f, Property),                                   \
-           [f]() { return double(f->Get##Property()); },                                         \
-           [f](double x) { QC_SET(f, Property, x); }),                                           \
+#define QC_NUMBER(stage, f, Property, meaning)                                                     \
+  Ranged(                                                                                          \
+    Bind(                                                                                          \
+      stage, #Property, meaning, QC_KIND(f, Property),                                             \
+      [f]() { return double(f->Get##Property()); }, [f](double x) { QC_SET(f, Property, x); }),    \
     double(f->Get##Property##MinValue()), double(f->Get##Property##MaxValue()))
-#define QC_NUMBER2(stage, f, g, Property, meaning)                                               \
-  Ranged(Bind(stage, #Property, meaning, QC_KIND(f, Property),                                   \
-           [f]() { return double(f->Get##Property()); },                                         \
-           [f, g](double x) {                                                                    \
-             QC_SET(f, Property, x);                                                             \
-             QC_SET(g, Property, x);                                                             \
-           }),                                                                                   \
+#define QC_NUMBER2(stage, f, g, Property, meaning)                                                 \
+  Ranged(Bind(stage, #Property, meaning, QC_KIND(f, Property), QC_BOTH(f, g, Property),            \
+           [f, g](double x) {                                                                      \
+             QC_SET(f, Property, x);                                                               \
+             QC_SET(g, Property, x);                                                               \
+           }),                                                                                     \
     double(f->Get##Property##MinValue()), double(f->Get##Property##MaxValue()))
 
 const Option* Find(const std::vector<Option>& options, const std::string& flag)
@@ -203,6 +208,10 @@ std::string CheckRequest(const Request& request)
 
 std::string Option::Text(double value) const
 {
+  if (std::isnan(value))
+  {
+    return "(the filters disagree)";
+  }
   if (this->kind == Kind::Switch)
   {
     return value != 0.0 ? "on" : "off";
@@ -233,14 +242,14 @@ std::vector<Option> StageOptions(Pipeline& p)
     QC_NUMBER("curvature", curvature, NumberOfThreads, "worker threads, 0 for all cores"),
     QC_SWITCH("curvature", curvature, UseInputFrames,
       "use a FrameU cell array of the input as the guidance field"),
-    QC_NUMBER("smooth", smoother, SmoothingWeight,
-      "lambda: smoothness against curvature alignment"),
+    QC_NUMBER(
+      "smooth", smoother, SmoothingWeight, "lambda: smoothness against curvature alignment"),
     QC_NUMBER("smooth", smoother, MaximumNumberOfIterations, "iterations at most per run"),
     QC_NUMBER("smooth", smoother, ConvergenceTolerance,
       "stop when an iteration lowers the energy by less than this fraction"),
     QC_NUMBER("smooth", smoother, FeatureAngle, "edges sharper than this (degrees) are features"),
-    QC_NUMBER("smooth", smoother, MinimumFeatureLength,
-      "shortest chain of sharp edges that is a feature"),
+    QC_NUMBER(
+      "smooth", smoother, MinimumFeatureLength, "shortest chain of sharp edges that is a feature"),
     QC_SWITCH("smooth", smoother, AlignToFeatures, "hold frames along sharp edges"),
     QC_SWITCH2("smooth", smoother, solver, AlignToBoundary,
       "quads follow the boundary: frames held along it, boundary edges on grid lines"),
@@ -255,8 +264,8 @@ std::vector<Option> StageOptions(Pipeline& p)
       "turn the frames to agree with changed matchings"),
     QC_NUMBER2("matching", matching, solver, BoundaryTolerance,
       "degrees a boundary edge may turn from its frame and still follow it"),
-    QC_NUMBER("param", solver, TargetQuadCount,
-      "about this many quads (when --target-edge-length is 0)"),
+    QC_NUMBER(
+      "param", solver, TargetQuadCount, "about this many quads (when --target-edge-length is 0)"),
     QC_NUMBER("param", solver, TargetEdgeLength,
       "quad edge length in world units, 0 for --target-quad-count"),
     QC_SWITCH("param", solver, PureQuads, "branch points on grid points, so only quads"),
@@ -265,12 +274,12 @@ std::vector<Option> StageOptions(Pipeline& p)
       "rounds of untangling per neighbourhood of flipped triangles"),
     QC_SWITCH("param", solver, SplitSeams,
       "write the surface cut open along the seams, with UV texture coordinates"),
-    QC_SWITCH("quads", extractor, RepairInvertedQuads,
-      "relax the quads around corners turned inside out"),
-    QC_NUMBER("quads", extractor, RelaxationIterations,
-      "sweeps of tangential relaxation of all quads"),
-    QC_SWITCH("quads", extractor, ComputeHausdorffDistance,
-      "measure the Hausdorff distance to the input"),
+    QC_SWITCH(
+      "quads", extractor, RepairInvertedQuads, "relax the quads around corners turned inside out"),
+    QC_NUMBER(
+      "quads", extractor, RelaxationIterations, "sweeps of tangential relaxation of all quads"),
+    QC_SWITCH(
+      "quads", extractor, ComputeHausdorffDistance, "measure the Hausdorff distance to the input"),
   };
 }
 

@@ -99,7 +99,8 @@ std::string AddedFields(vtkPolyData* output, vtkPolyData* input)
   for (int i = 0; i < fd->GetNumberOfArrays(); ++i)
   {
     vtkDataArray* a = fd->GetArray(i);
-    if (!a || !a->GetName() || (input && input->GetFieldData()->GetAbstractArray(a->GetName()) == a))
+    if (!a || !a->GetName() ||
+      (input && input->GetFieldData()->GetAbstractArray(a->GetName()) == a))
     {
       continue;
     }
@@ -115,8 +116,8 @@ std::string StatsJson(const Request& request, vtkPolyData* input, const Pipeline
   std::ostringstream js;
   vtkPolyData* surface = vtkPolyData::SafeDownCast(pipeline.Repair->GetOutputDataObject(0));
   js << "{\n  \"input\": {\"file\": " << JsonString(request.input)
-     << ", \"points\": " << input->GetNumberOfPoints() << ", \"cells\": " << input->GetNumberOfCells()
-     << "},\n";
+     << ", \"points\": " << input->GetNumberOfPoints()
+     << ", \"cells\": " << input->GetNumberOfCells() << "},\n";
   js << "  \"surface\": {\"points\": " << surface->GetNumberOfPoints()
      << ", \"triangles\": " << surface->GetNumberOfPolys() << "},\n";
   js << "  \"stage\": " << JsonString(Pipeline::StageNames()[lastStage]) << ",\n";
@@ -129,9 +130,11 @@ std::string StatsJson(const Request& request, vtkPolyData* input, const Pipeline
   for (std::size_t i = 0; i < options.size(); ++i)
   {
     const Option& o = options[i];
-    const std::string value = o.kind == Option::Kind::Switch ? (o.get() != 0.0 ? "true" : "false")
-      : o.kind == Option::Kind::Choice                        ? JsonString(o.Text(o.get()))
-                                                              : JsonNumber(o.get());
+    const double x = o.get();
+    const std::string value = std::isnan(x) ? "null"
+      : o.kind == Option::Kind::Switch      ? (x != 0.0 ? "true" : "false")
+      : o.kind == Option::Kind::Choice      ? JsonString(o.Text(x))
+                                            : JsonNumber(x);
     js << (i ? ", " : "") << JsonString(Snake(o.property)) << ": " << value;
   }
   js << "}";

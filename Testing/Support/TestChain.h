@@ -34,8 +34,8 @@ inline Chain runChain(
   const CurvatureField c = computeCurvatureField(r.s.V, r.s.F, r.topo);
   const SmootherResult smooth =
     smoothFrames(r.s.V, r.s.F, r.topo, r.geometry, c.frameU, c.frameV, c.weight);
-  const MatchingResult m = buildMatchings(r.s.V, r.s.F, r.topo, r.geometry, smooth.frameU,
-    smooth.frameV, c.weight, smooth.constrained);
+  const MatchingResult m = buildMatchings(
+    r.s.V, r.s.F, r.topo, r.geometry, smooth.frameU, smooth.frameV, c.weight, smooth.constrained);
   r.frameU = m.frameU;
   r.field = m.topology;
   // a fixed edge length (no correction by the map's area) unless the options give one
