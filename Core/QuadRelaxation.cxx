@@ -276,21 +276,16 @@ QuadRelaxReport relaxQuads(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F,
     for (int j = offsets[v]; j < offsets[v + 1]; ++j)
     {
       const int i = quadsOf[j];
-      const Eigen::Vector3d own =
-        (Eigen::Vector3d(mesh.V.row(mesh.Q(i, 2)) - mesh.V.row(mesh.Q(i, 0))))
-          .cross(Eigen::Vector3d(mesh.V.row(mesh.Q(i, 3)) - mesh.V.row(mesh.Q(i, 1))))
-          .normalized();
+      const Eigen::Vector3d own = quadNormal(mesh.V, mesh.Q, i);
       for (int k = 0; k < 4; ++k)
       {
         const int c = mesh.Q(i, k);
         const Eigen::Vector3d next = mesh.V.row(mesh.Q(i, (k + 1) % 4)) - mesh.V.row(c);
         const Eigen::Vector3d prev = mesh.V.row(mesh.Q(i, (k + 3) % 4)) - mesh.V.row(c);
-        const double ln = next.norm(), lp = prev.norm();
         const Eigen::Vector3d n = normal.row(mesh.vertexTriangle[c]);
         for (const Eigen::Vector3d& reference : { n, own })
         {
-          double sj = ln > 0 && lp > 0 ? next.cross(prev).dot(reference) / (ln * lp) : -1.0;
-          sj = std::isfinite(sj) ? sj : -1.0;
+          const double sj = cornerScaledJacobian(next, prev, reference, -1.0);
           r.inverted += sj <= 0;
           r.worst = std::min(r.worst, sj);
         }
@@ -356,18 +351,7 @@ std::pair<int, int> repairInvertedQuads(const Eigen::MatrixX3d& V, const Eigen::
   const MeshTopology& topo, QuadMesh& mesh, int rings, int iterations, int rounds)
 {
   const int nV = static_cast<int>(mesh.V.rows());
-  auto inverted = [&]() {
-    std::vector<int> bad;
-    for (int i = 0; i < static_cast<int>(mesh.Q.rows()); ++i)
-    {
-      if (!(quadScaledJacobian(mesh.V, mesh.Q, i) > 0))
-      {
-        bad.push_back(i);
-      }
-    }
-    return bad;
-  };
-  std::vector<int> bad = inverted();
+  std::vector<int> bad = invertedQuads(mesh.V, mesh.Q);
   const int before = static_cast<int>(bad.size());
   for (int round = 0; round < rounds && !bad.empty(); ++round)
   {
@@ -399,7 +383,7 @@ std::pair<int, int> repairInvertedQuads(const Eigen::MatrixX3d& V, const Eigen::
     const Eigen::MatrixX3d keptV = mesh.V;
     const std::vector<int> keptTriangle = mesh.vertexTriangle, keptPoint = mesh.vertexPoint;
     relaxQuads(V, F, topo, mesh, options);
-    const std::vector<int> now = inverted();
+    const std::vector<int> now = invertedQuads(mesh.V, mesh.Q);
     if (now.size() > bad.size())
     {
       // the guard counts corners against two normals, measureQuads quads against one: rare
