@@ -51,17 +51,14 @@ Eigen::Vector3d closestOnTriangle(const Eigen::Vector3d& p, const Eigen::Vector3
   }
   return best;
 }
-}
 
-QuadRelaxReport relaxQuads(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F,
-  const MeshTopology& topo, QuadMesh& mesh, const QuadRelaxOptions& options,
-  const Progress& progress)
+/// The sizes and the step; checked before anything else.
+void checkSizes(const Eigen::MatrixX3i& F, const MeshTopology& topo, const QuadMesh& mesh,
+  const QuadRelaxOptions& options)
 {
-  progress.report(0.0);
-  const int nF = static_cast<int>(F.rows());
   const int nV = static_cast<int>(mesh.V.rows());
-  const int nQ = static_cast<int>(mesh.Q.rows());
-  if (topo.numFaces != nF || static_cast<int>(mesh.vertexTriangle.size()) != nV ||
+  if (topo.numFaces != static_cast<int>(F.rows()) ||
+    static_cast<int>(mesh.vertexTriangle.size()) != nV ||
     static_cast<int>(mesh.vertexPoint.size()) != nV ||
     (!options.movable.empty() && static_cast<int>(options.movable.size()) != nV))
   {
@@ -71,12 +68,13 @@ QuadRelaxReport relaxQuads(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F,
   {
     throw std::invalid_argument("relaxQuads: the step must be in (0, 1]");
   }
-  QuadRelaxReport report;
-  if (options.relaxationIterations <= 0 || nQ == 0)
-  {
-    return report;
-  }
-  for (int i = 0; i < nQ; ++i)
+}
+
+/// The quads' vertices and the vertices' triangles; checked only when there is work to do.
+void checkReferences(const Eigen::MatrixX3i& F, const QuadMesh& mesh)
+{
+  const int nV = static_cast<int>(mesh.V.rows());
+  for (int i = 0; i < static_cast<int>(mesh.Q.rows()); ++i)
   {
     for (int k = 0; k < 4; ++k)
     {
@@ -88,42 +86,105 @@ QuadRelaxReport relaxQuads(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F,
   }
   for (const int t : mesh.vertexTriangle)
   {
-    if (t < 0 || t >= nF)
+    if (t < 0 || t >= static_cast<int>(F.rows()))
     {
       throw std::invalid_argument("relaxQuads: a vertex lies in no input triangle");
     }
   }
+}
 
-  // input normals, and the edges no vertex crosses (boundary, crease, non-manifold)
-  Eigen::MatrixX3d normal(nF, 3);
-  for (int f = 0; f < nF; ++f)
+/// The corners of a vertex's quads: how many are not positive, and the worst.
+struct Corners
+{
+  int inverted = 0;
+  double worst = 1.0;
+};
+
+/// What the sweeps of relaxQuads share: the input's normals, the input edges no vertex crosses,
+/// the vertices that stay, and the quads around each vertex.
+class Relaxation
+{
+public:
+  Relaxation(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F, const MeshTopology& topo,
+    QuadMesh& mesh, const QuadRelaxOptions& options)
+    : V(V)
+    , F(F)
+    , topo(topo)
+    , mesh(mesh)
+    , options(options)
   {
-    const Eigen::Vector3d a = V.row(F(f, 0)), b = V.row(F(f, 1)), c = V.row(F(f, 2));
-    const Eigen::Vector3d n = (b - a).cross(c - a);
-    normal.row(f) = n.norm() > 0 ? Eigen::Vector3d(n.normalized()) : Eigen::Vector3d::Zero();
+    computeNormals();
+    findCreases();
+    fixVertices();
+    collectVertexQuads();
+    measureMeanEdge();
   }
-  const double creaseCos = std::cos(options.featureAngle * 3.14159265358979323846 / 180.0);
-  std::vector<char> blocked(topo.numEdges(), 1);
-  std::vector<char> pointOnCrease(V.rows(), 0);
-  for (int e = 0; e < topo.numEdges(); ++e)
+
+  int fixedVertices() const
   {
-    if (topo.edgeFaceCount[e] == 2)
+    int count = 0;
+    for (const char f : fixed)
     {
-      const Eigen::Vector3d n0 = normal.row(topo.edgeFaces(e, 0));
-      const Eigen::Vector3d n1 = normal.row(topo.edgeFaces(e, 1));
-      blocked[e] = n0.dot(n1) < creaseCos;
+      count += f;
     }
-    if (blocked[e])
+    return count;
+  }
+
+  /// One sweep over the vertices, in order (each move sees the ones before it).
+  void sweep(QuadRelaxReport& report)
+  {
+    const int nV = static_cast<int>(mesh.V.rows());
+    for (int v = 0; v < nV; ++v)
     {
-      pointOnCrease[topo.edges(e, 0)] = pointOnCrease[topo.edges(e, 1)] = 1;
+      if (!fixed[v] && offsets[v] != offsets[v + 1] &&
+        (options.movable.empty() || options.movable[v]))
+      {
+        relaxVertex(v, report);
+      }
     }
   }
 
-  // fixed vertices: on the quad mesh's boundary, or on an input crease or boundary
-  std::vector<char> fixed(nV, 0);
+private:
+  void computeNormals()
   {
+    const int nF = static_cast<int>(F.rows());
+    normal.resize(nF, 3);
+    for (int f = 0; f < nF; ++f)
+    {
+      const Eigen::Vector3d a = V.row(F(f, 0)), b = V.row(F(f, 1)), c = V.row(F(f, 2));
+      const Eigen::Vector3d n = (b - a).cross(c - a);
+      normal.row(f) = n.norm() > 0 ? Eigen::Vector3d(n.normalized()) : Eigen::Vector3d::Zero();
+    }
+  }
+
+  /// The edges no vertex crosses (boundary, crease, non-manifold) and the points on them.
+  void findCreases()
+  {
+    const double creaseCos = std::cos(options.featureAngle * 3.14159265358979323846 / 180.0);
+    blocked.assign(topo.numEdges(), 1);
+    pointOnCrease.assign(V.rows(), 0);
+    for (int e = 0; e < topo.numEdges(); ++e)
+    {
+      if (topo.edgeFaceCount[e] == 2)
+      {
+        const Eigen::Vector3d n0 = normal.row(topo.edgeFaces(e, 0));
+        const Eigen::Vector3d n1 = normal.row(topo.edgeFaces(e, 1));
+        blocked[e] = n0.dot(n1) < creaseCos;
+      }
+      if (blocked[e])
+      {
+        pointOnCrease[topo.edges(e, 0)] = pointOnCrease[topo.edges(e, 1)] = 1;
+      }
+    }
+  }
+
+  /// Fixed vertices: on the quad mesh's boundary, or on an input crease or boundary.
+  void fixVertices()
+  {
+    const int nV = static_cast<int>(mesh.V.rows());
+    fixed.assign(nV, 0);
     std::map<std::pair<int, int>, int> edgeCount;
-    for (int i = 0; i < nQ; ++i)
+    for (int i = 0; i < static_cast<int>(mesh.Q.rows()); ++i)
     {
       for (int k = 0; k < 4; ++k)
       {
@@ -138,15 +199,20 @@ QuadRelaxReport relaxQuads(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F,
         fixed[edge.first] = fixed[edge.second] = 1;
       }
     }
+    for (int v = 0; v < nV; ++v)
+    {
+      fixed[v] |= onCrease(v);
+    }
   }
-  for (int v = 0; v < nV; ++v)
+
+  /// Is quad vertex v on a blocked input edge: its point on one, or on an edge of its triangle
+  /// (relative distance to the edge's line)?
+  char onCrease(int v) const
   {
     if (mesh.vertexPoint[v] >= 0)
     {
-      fixed[v] |= pointOnCrease[mesh.vertexPoint[v]];
-      continue;
+      return pointOnCrease[mesh.vertexPoint[v]];
     }
-    // on an edge of its triangle? (relative distance to the edge's line)
     const int f = mesh.vertexTriangle[v];
     const Eigen::Vector3d p = mesh.V.row(v);
     for (int k = 0; k < 3; ++k)
@@ -156,29 +222,30 @@ QuadRelaxReport relaxQuads(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F,
       if (blocked[topo.faceEdges(f, k)] && length > 0 &&
         (p - a).cross(b - a).norm() <= 1e-6 * length * length)
       {
-        fixed[v] = 1;
+        return 1;
       }
     }
-  }
-  for (int v = 0; v < nV; ++v)
-  {
-    report.fixedVertices += fixed[v];
+    return 0;
   }
 
-  // the quads of each vertex (CSR)
-  std::vector<int> offsets(nV + 1, 0), quadsOf(4 * static_cast<std::size_t>(nQ));
-  for (int i = 0; i < nQ; ++i)
+  /// The quads of each vertex (CSR: offsets, quadsOf).
+  void collectVertexQuads()
   {
-    for (int k = 0; k < 4; ++k)
+    const int nV = static_cast<int>(mesh.V.rows());
+    const int nQ = static_cast<int>(mesh.Q.rows());
+    offsets.assign(nV + 1, 0);
+    quadsOf.resize(4 * static_cast<std::size_t>(nQ));
+    for (int i = 0; i < nQ; ++i)
     {
-      ++offsets[mesh.Q(i, k) + 1];
+      for (int k = 0; k < 4; ++k)
+      {
+        ++offsets[mesh.Q(i, k) + 1];
+      }
     }
-  }
-  for (int v = 0; v < nV; ++v)
-  {
-    offsets[v + 1] += offsets[v];
-  }
-  {
+    for (int v = 0; v < nV; ++v)
+    {
+      offsets[v + 1] += offsets[v];
+    }
     std::vector<int> fill(offsets.begin(), offsets.end() - 1);
     for (int i = 0; i < nQ; ++i)
     {
@@ -188,23 +255,87 @@ QuadRelaxReport relaxQuads(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F,
       }
     }
   }
-  double meanEdge = 0.0;
-  for (int i = 0; i < nQ; ++i)
-  {
-    for (int k = 0; k < 4; ++k)
-    {
-      meanEdge += (mesh.V.row(mesh.Q(i, k)) - mesh.V.row(mesh.Q(i, (k + 1) % 4))).norm();
-    }
-  }
-  meanEdge /= 4.0 * nQ;
 
-  auto closestIn = [&](int f, const Eigen::Vector3d& p) {
+  void measureMeanEdge()
+  {
+    const int nQ = static_cast<int>(mesh.Q.rows());
+    meanEdge = 0.0;
+    for (int i = 0; i < nQ; ++i)
+    {
+      for (int k = 0; k < 4; ++k)
+      {
+        meanEdge += (mesh.V.row(mesh.Q(i, k)) - mesh.V.row(mesh.Q(i, (k + 1) % 4))).norm();
+      }
+    }
+    meanEdge /= 4.0 * nQ;
+  }
+
+  /// The area-weighted mean of the centres of v's quads; false when their area is 0.
+  bool centreOfQuads(int v, Eigen::Vector3d& centre) const
+  {
+    Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+    double weight = 0.0;
+    for (int j = offsets[v]; j < offsets[v + 1]; ++j)
+    {
+      const int i = quadsOf[j];
+      const Eigen::Vector3d p0 = mesh.V.row(mesh.Q(i, 0)), p1 = mesh.V.row(mesh.Q(i, 1));
+      const Eigen::Vector3d p2 = mesh.V.row(mesh.Q(i, 2)), p3 = mesh.V.row(mesh.Q(i, 3));
+      const double area = 0.5 * (p2 - p0).cross(p3 - p1).norm();
+      sum += area * 0.25 * (p0 + p1 + p2 + p3);
+      weight += area;
+    }
+    if (!(weight > 0))
+    {
+      return false;
+    }
+    centre = sum / weight;
+    return true;
+  }
+
+  /// Moves v part of the way to the centre of its quads, in the plane of its triangle and back
+  /// onto the surface, unless that folds a corner of its quads.
+  void relaxVertex(int v, QuadRelaxReport& report)
+  {
+    Eigen::Vector3d centre;
+    if (!centreOfQuads(v, centre))
+    {
+      return;
+    }
+    const Eigen::Vector3d old = mesh.V.row(v);
+    const int oldTriangle = mesh.vertexTriangle[v];
+    const Eigen::Vector3d n = normal.row(oldTriangle);
+    Eigen::Vector3d move = options.step * (centre - old);
+    move -= move.dot(n) * n;
+    const Corners before = cornersOf(v);
+    int f = oldTriangle;
+    const Eigen::Vector3d moved = project(f, old + move);
+    mesh.V.row(v) = moved;
+    mesh.vertexTriangle[v] = f;
+    const Corners after = cornersOf(v);
+    // no corner turns inside out, and none already inside out gets worse
+    if (after.inverted > before.inverted || (after.worst <= 0 && after.worst < before.worst))
+    {
+      mesh.V.row(v) = old;
+      mesh.vertexTriangle[v] = oldTriangle;
+      ++report.rejectedMoves;
+      return;
+    }
+    if ((moved - old).squaredNorm() > 0)
+    {
+      mesh.vertexPoint[v] = -1;
+    }
+    report.maxMove = std::max(report.maxMove, (moved - old).norm() / meanEdge);
+  }
+
+  Eigen::Vector3d closestIn(int f, const Eigen::Vector3d& p) const
+  {
     return closestOnTriangle(p, V.row(F(f, 0)), V.row(F(f, 1)), V.row(F(f, 2)));
-  };
-  // Candidate triangles next to f: across its free edges, and around its corners up to a
-  // blocked edge.
-  std::vector<int> candidates;
-  auto gatherCandidates = [&](int f) {
+  }
+
+  /// Candidate triangles next to f: across its free edges, and around its corners up to a
+  /// blocked edge.
+  void gatherCandidates(int f)
+  {
     candidates.clear();
     for (int k = 0; k < 3; ++k)
     {
@@ -236,8 +367,12 @@ QuadRelaxReport relaxQuads(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F,
         }
       }
     }
-  };
-  auto project = [&](int& f, const Eigen::Vector3d& p) {
+  }
+
+  /// The closest point to p on the surface, walking from triangle f (updated to the triangle it
+  /// lies in) to whichever candidate is closer until none is.
+  Eigen::Vector3d project(int& f, const Eigen::Vector3d& p)
+  {
     Eigen::Vector3d best = closestIn(f, p);
     double distance = (best - p).squaredNorm();
     for (int step = 0; step < 64; ++step)
@@ -262,16 +397,12 @@ QuadRelaxReport relaxQuads(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F,
       f = next;
     }
     return best;
-  };
-  // The corners of v's quads: how many are not positive, and the worst, each measured against
-  // the input's normal at the corner and against the quad's own normal (its diagonals' cross
-  // product, as measureQuads does).
-  struct Corners
+  }
+
+  /// The corners of v's quads, each measured against the input's normal at the corner and
+  /// against the quad's own normal (its diagonals' cross product, as measureQuads does).
+  Corners cornersOf(int v) const
   {
-    int inverted = 0;
-    double worst = 1.0;
-  };
-  auto cornersOf = [&](int v) {
     Corners r;
     for (int j = offsets[v]; j < offsets[v + 1]; ++j)
     {
@@ -292,57 +423,70 @@ QuadRelaxReport relaxQuads(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F,
       }
     }
     return r;
-  };
+  }
 
+  const Eigen::MatrixX3d& V;
+  const Eigen::MatrixX3i& F;
+  const MeshTopology& topo;
+  QuadMesh& mesh;
+  const QuadRelaxOptions& options;
+  Eigen::MatrixX3d normal;         ///< #F x 3: the input's unit normals (0 where degenerate)
+  std::vector<char> blocked;       ///< per input edge: boundary, crease or non-manifold
+  std::vector<char> pointOnCrease; ///< per input point: on a blocked edge
+  std::vector<char> fixed;         ///< per quad vertex: stays where it is
+  std::vector<int> offsets;        ///< #V + 1: where each vertex's quads start in quadsOf
+  std::vector<int> quadsOf;        ///< the quads of each vertex, one after the other
+  double meanEdge = 0.0;           ///< of the quad mesh, the unit of QuadRelaxReport::maxMove
+  std::vector<int> candidates;     ///< gatherCandidates' result (its memory reused)
+};
+
+/// The quads' vertices and those within `rings` quad rings of them.
+std::vector<char> verticesNear(const QuadMesh& mesh, const std::vector<int>& quads, int rings)
+{
+  std::vector<char> near(mesh.V.rows(), 0);
+  for (const int i : quads)
+  {
+    for (int k = 0; k < 4; ++k)
+    {
+      near[mesh.Q(i, k)] = 1;
+    }
+  }
+  // grow by quad rings: every vertex of a quad with a vertex already in
+  for (int ring = 0; ring < rings; ++ring)
+  {
+    std::vector<char> grown = near;
+    for (int i = 0; i < mesh.Q.rows(); ++i)
+    {
+      const bool touches =
+        near[mesh.Q(i, 0)] || near[mesh.Q(i, 1)] || near[mesh.Q(i, 2)] || near[mesh.Q(i, 3)];
+      for (int k = 0; k < 4 && touches; ++k)
+      {
+        grown[mesh.Q(i, k)] = 1;
+      }
+    }
+    near.swap(grown);
+  }
+  return near;
+}
+}
+
+QuadRelaxReport relaxQuads(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F,
+  const MeshTopology& topo, QuadMesh& mesh, const QuadRelaxOptions& options,
+  const Progress& progress)
+{
+  progress.report(0.0);
+  checkSizes(F, topo, mesh, options);
+  QuadRelaxReport report;
+  if (options.relaxationIterations <= 0 || mesh.Q.rows() == 0)
+  {
+    return report;
+  }
+  checkReferences(F, mesh);
+  Relaxation relaxation(V, F, topo, mesh, options);
+  report.fixedVertices = relaxation.fixedVertices();
   for (int iteration = 0; iteration < options.relaxationIterations; ++iteration)
   {
-    for (int v = 0; v < nV; ++v)
-    {
-      if (fixed[v] || offsets[v] == offsets[v + 1] ||
-        (!options.movable.empty() && !options.movable[v]))
-      {
-        continue;
-      }
-      Eigen::Vector3d target = Eigen::Vector3d::Zero();
-      double weight = 0.0;
-      for (int j = offsets[v]; j < offsets[v + 1]; ++j)
-      {
-        const int i = quadsOf[j];
-        const Eigen::Vector3d p0 = mesh.V.row(mesh.Q(i, 0)), p1 = mesh.V.row(mesh.Q(i, 1));
-        const Eigen::Vector3d p2 = mesh.V.row(mesh.Q(i, 2)), p3 = mesh.V.row(mesh.Q(i, 3));
-        const double area = 0.5 * (p2 - p0).cross(p3 - p1).norm();
-        target += area * 0.25 * (p0 + p1 + p2 + p3);
-        weight += area;
-      }
-      if (!(weight > 0))
-      {
-        continue;
-      }
-      const Eigen::Vector3d old = mesh.V.row(v);
-      const int oldTriangle = mesh.vertexTriangle[v];
-      const Eigen::Vector3d n = normal.row(oldTriangle);
-      Eigen::Vector3d move = options.step * (target / weight - old);
-      move -= move.dot(n) * n;
-      const Corners before = cornersOf(v);
-      int f = oldTriangle;
-      const Eigen::Vector3d moved = project(f, old + move);
-      mesh.V.row(v) = moved;
-      mesh.vertexTriangle[v] = f;
-      const Corners after = cornersOf(v);
-      // no corner turns inside out, and none already inside out gets worse
-      if (after.inverted > before.inverted || (after.worst <= 0 && after.worst < before.worst))
-      {
-        mesh.V.row(v) = old;
-        mesh.vertexTriangle[v] = oldTriangle;
-        ++report.rejectedMoves;
-        continue;
-      }
-      if ((moved - old).squaredNorm() > 0)
-      {
-        mesh.vertexPoint[v] = -1;
-      }
-      report.maxMove = std::max(report.maxMove, (moved - old).norm() / meanEdge);
-    }
+    relaxation.sweep(report);
   }
   return report;
 }
@@ -350,36 +494,13 @@ QuadRelaxReport relaxQuads(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F,
 std::pair<int, int> repairInvertedQuads(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F,
   const MeshTopology& topo, QuadMesh& mesh, int rings, int iterations, int rounds)
 {
-  const int nV = static_cast<int>(mesh.V.rows());
   std::vector<int> bad = invertedQuads(mesh.V, mesh.Q);
   const int before = static_cast<int>(bad.size());
   for (int round = 0; round < rounds && !bad.empty(); ++round)
   {
     QuadRelaxOptions options;
     options.relaxationIterations = iterations;
-    options.movable.assign(nV, 0);
-    for (const int i : bad)
-    {
-      for (int k = 0; k < 4; ++k)
-      {
-        options.movable[mesh.Q(i, k)] = 1;
-      }
-    }
-    // grow by quad rings: every vertex of a quad with a movable vertex
-    for (int ring = 0; ring < rings; ++ring)
-    {
-      std::vector<char> grown = options.movable;
-      for (int i = 0; i < mesh.Q.rows(); ++i)
-      {
-        const bool touches = options.movable[mesh.Q(i, 0)] || options.movable[mesh.Q(i, 1)] ||
-          options.movable[mesh.Q(i, 2)] || options.movable[mesh.Q(i, 3)];
-        for (int k = 0; k < 4 && touches; ++k)
-        {
-          grown[mesh.Q(i, k)] = 1;
-        }
-      }
-      options.movable.swap(grown);
-    }
+    options.movable = verticesNear(mesh, bad, rings);
     const Eigen::MatrixX3d keptV = mesh.V;
     const std::vector<int> keptTriangle = mesh.vertexTriangle, keptPoint = mesh.vertexPoint;
     relaxQuads(V, F, topo, mesh, options);
@@ -392,9 +513,9 @@ std::pair<int, int> repairInvertedQuads(const Eigen::MatrixX3d& V, const Eigen::
       mesh.vertexPoint = keptPoint;
       break;
     }
-    const bool progress = now.size() < bad.size();
+    const bool repaired = now.size() < bad.size();
     bad = now;
-    if (!progress)
+    if (!repaired)
     {
       break;
     }
