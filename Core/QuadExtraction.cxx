@@ -11,6 +11,7 @@
 #include <map>
 #include <stdexcept>
 #include <tuple>
+#include <vector>
 
 namespace quadcover
 {
@@ -41,6 +42,8 @@ struct Location
   Eigen::Vector3d bary;
 };
 
+/// Cuts the cells out of the map: the transitions read off it, the walks to the corners, the
+/// corners' identities, and the quads and vertices found so far.
 class Extractor
 {
 public:
@@ -66,43 +69,67 @@ public:
     {
       for (int k = 0; k < 3; ++k)
       {
-        const int g = topo.faceNeighbors(f, k);
-        if (g < 0)
+        if (topo.faceNeighbors(f, k) >= 0)
         {
-          continue;
+          readTransition(f, k);
         }
-        const Complex fa = z(f, k);
-        const Complex fb = z(f, (k + 1) % 3);
-        const Complex ga = z(g, MeshTopology::cornerOf(F, g, F(f, k)));
-        const Complex gb = z(g, MeshTopology::cornerOf(F, g, F(f, (k + 1) % 3)));
-        int best = 0;
-        double bestError = 1e300;
-        for (int r = 0; r < 4; ++r)
-        {
-          const double error = std::abs((gb - ga) - turn(fb - fa, r));
-          if (error < bestError)
-          {
-            best = r;
-            bestError = error;
-          }
-        }
-        Complex t = ga - turn(fa, best);
-        const Complex rounded(std::round(t.real()), std::round(t.imag()));
-        if (std::abs(t - rounded) < 1e-6)
-        {
-          t = rounded;
-        }
-        else if (f < g)
-        {
-          ++out.nonIntegerTransitions;
-        }
-        rotation(f, k) = best;
-        translation[3 * f + k] = t;
       }
     }
   }
 
+  /// Every cell whose centre a triangle holds, in the order of the triangles, then the overlaps
+  /// removed and the vertices no quad uses dropped.
+  void run()
+  {
+    const int nF = static_cast<int>(F.rows());
+    for (int f = 0; f < nF; ++f)
+    {
+      if (!flipped[f])
+      {
+        cutCellsOf(f);
+      }
+    }
+    out.cellsConflicting += removeOverlappingQuads(quads, out.quadTriangle);
+    keepUsedVertices();
+  }
+
+private:
   Complex z(int f, int k) const { return { uv(f, 2 * k), uv(f, 2 * k + 1) }; }
+
+  /// The transition across inner edge k of f to its neighbour g: the quarter turn that best maps
+  /// the edge's image in f onto its image in g, and the translation, snapped to the integers
+  /// when it is within 1e-6 of them (counted when it is not).
+  void readTransition(int f, int k)
+  {
+    const int g = topo.faceNeighbors(f, k);
+    const Complex fa = z(f, k);
+    const Complex fb = z(f, (k + 1) % 3);
+    const Complex ga = z(g, MeshTopology::cornerOf(F, g, F(f, k)));
+    const Complex gb = z(g, MeshTopology::cornerOf(F, g, F(f, (k + 1) % 3)));
+    int best = 0;
+    double bestError = 1e300;
+    for (int r = 0; r < 4; ++r)
+    {
+      const double error = std::abs((gb - ga) - turn(fb - fa, r));
+      if (error < bestError)
+      {
+        best = r;
+        bestError = error;
+      }
+    }
+    Complex t = ga - turn(fa, best);
+    const Complex rounded(std::round(t.real()), std::round(t.imag()));
+    if (std::abs(t - rounded) < 1e-6)
+    {
+      t = rounded;
+    }
+    else if (f < g)
+    {
+      ++out.nonIntegerTransitions;
+    }
+    rotation(f, k) = best;
+    translation[3 * f + k] = t;
+  }
 
   Eigen::Vector3d barycentric(int f, Complex q) const
   {
@@ -269,83 +296,90 @@ public:
   /// bit across seams).
   bool holds(int f, Complex c) const { return barycentric(f, c).minCoeff() >= -options.tolerance; }
 
-  void run()
+  /// The cells whose centres triangle f holds, each cut out as a quad.
+  void cutCellsOf(int f)
   {
-    const int nF = static_cast<int>(F.rows());
-    std::map<std::tuple<int, int, long long, long long>, int> vertexOf;
-    std::vector<Eigen::Vector3d> positions;
-    std::vector<std::array<int, 4>> quads;
-    const Complex offsets[4] = { { -0.5, -0.5 }, { 0.5, -0.5 }, { 0.5, 0.5 }, { -0.5, 0.5 } };
-    for (int f = 0; f < nF; ++f)
+    double lo[2] = { 1e300, 1e300 };
+    double hi[2] = { -1e300, -1e300 };
+    for (int k = 0; k < 3; ++k)
     {
-      if (flipped[f])
+      lo[0] = std::min(lo[0], uv(f, 2 * k));
+      hi[0] = std::max(hi[0], uv(f, 2 * k));
+      lo[1] = std::min(lo[1], uv(f, 2 * k + 1));
+      hi[1] = std::max(hi[1], uv(f, 2 * k + 1));
+    }
+    for (long long a = std::llround(std::floor(lo[0] - 0.5)); a + 0.5 <= hi[0] + 1e-9; ++a)
+    {
+      for (long long b = std::llround(std::floor(lo[1] - 0.5)); b + 0.5 <= hi[1] + 1e-9; ++b)
       {
-        continue;
-      }
-      double lo[2] = { 1e300, 1e300 };
-      double hi[2] = { -1e300, -1e300 };
-      for (int k = 0; k < 3; ++k)
-      {
-        lo[0] = std::min(lo[0], uv(f, 2 * k));
-        hi[0] = std::max(hi[0], uv(f, 2 * k));
-        lo[1] = std::min(lo[1], uv(f, 2 * k + 1));
-        hi[1] = std::max(hi[1], uv(f, 2 * k + 1));
-      }
-      for (long long a = std::llround(std::floor(lo[0] - 0.5)); a + 0.5 <= hi[0] + 1e-9; ++a)
-      {
-        for (long long b = std::llround(std::floor(lo[1] - 0.5)); b + 0.5 <= hi[1] + 1e-9; ++b)
+        const Complex c(a + 0.5, b + 0.5);
+        if (c.real() < lo[0] - 1e-9 || c.imag() < lo[1] - 1e-9 || !holds(f, c))
         {
-          const Complex c(a + 0.5, b + 0.5);
-          if (c.real() < lo[0] - 1e-9 || c.imag() < lo[1] - 1e-9 || !holds(f, c))
-          {
-            continue;
-          }
-          std::array<int, 4> quad;
-          bool found = true;
-          for (int i = 0; i < 4 && found; ++i)
-          {
-            Location at;
-            found = walkLine(f, c, c + offsets[i], at);
-            if (!found)
-            {
-              ++out.walkFallbacks;
-              found = walk(f, c + offsets[i], at);
-            }
-            if (!found)
-            {
-              break;
-            }
-            auto [it, added] = vertexOf.emplace(at.key, static_cast<int>(positions.size()));
-            if (added)
-            {
-              const Eigen::Vector3d p = at.bary[0] * V.row(F(at.triangle, 0)).transpose() +
-                at.bary[1] * V.row(F(at.triangle, 1)).transpose() +
-                at.bary[2] * V.row(F(at.triangle, 2)).transpose();
-              positions.push_back(p);
-              out.vertexTriangle.push_back(at.triangle);
-              out.vertexPoint.push_back(std::get<0>(at.key) == 0 ? std::get<1>(at.key) : -1);
-            }
-            quad[i] = it->second;
-          }
-          if (!found)
-          {
-            ++out.cellsOffSurface;
-            continue;
-          }
-          std::array<int, 4> sorted = quad;
-          std::sort(sorted.begin(), sorted.end());
-          if (std::adjacent_find(sorted.begin(), sorted.end()) != sorted.end())
-          {
-            ++out.cellsDegenerate;
-            continue;
-          }
-          quads.push_back(quad);
-          out.quadTriangle.push_back(f);
+          continue;
         }
+        cutCell(f, c);
       }
     }
-    removeConflicts(quads);
-    // keep the vertices quads use, in order
+  }
+
+  /// The quad of the cell with centre c (in triangle f's chart): its four corners reached and
+  /// identified, or the reason it gives none counted.
+  void cutCell(int f, Complex c)
+  {
+    const Complex offsets[4] = { { -0.5, -0.5 }, { 0.5, -0.5 }, { 0.5, 0.5 }, { -0.5, 0.5 } };
+    std::array<int, 4> quad;
+    for (int i = 0; i < 4; ++i)
+    {
+      Location at;
+      if (!reach(f, c, c + offsets[i], at))
+      {
+        ++out.cellsOffSurface;
+        return;
+      }
+      quad[i] = vertexAt(at);
+    }
+    std::array<int, 4> sorted = quad;
+    std::sort(sorted.begin(), sorted.end());
+    if (std::adjacent_find(sorted.begin(), sorted.end()) != sorted.end())
+    {
+      ++out.cellsDegenerate;
+      return;
+    }
+    quads.push_back(quad);
+    out.quadTriangle.push_back(f);
+  }
+
+  /// Finds the triangle holding corner q of the cell with centre c: along the straight segment,
+  /// or else (counted) by stepping towards it.
+  bool reach(int f, Complex c, Complex q, Location& at)
+  {
+    if (walkLine(f, c, q, at))
+    {
+      return true;
+    }
+    ++out.walkFallbacks;
+    return walk(f, q, at);
+  }
+
+  /// The vertex at a location: the one its identity already has, or a new one.
+  int vertexAt(const Location& at)
+  {
+    auto [it, added] = vertexOf.emplace(at.key, static_cast<int>(positions.size()));
+    if (added)
+    {
+      const Eigen::Vector3d p = at.bary[0] * V.row(F(at.triangle, 0)).transpose() +
+        at.bary[1] * V.row(F(at.triangle, 1)).transpose() +
+        at.bary[2] * V.row(F(at.triangle, 2)).transpose();
+      positions.push_back(p);
+      out.vertexTriangle.push_back(at.triangle);
+      out.vertexPoint.push_back(std::get<0>(at.key) == 0 ? std::get<1>(at.key) : -1);
+    }
+    return it->second;
+  }
+
+  /// Fills out.V and out.Q with the vertices the quads use, in the order they are first used.
+  void keepUsedVertices()
+  {
     std::vector<int> newId(positions.size(), -1);
     int used = 0;
     for (const auto& q : quads)
@@ -381,21 +415,20 @@ public:
     }
   }
 
-  void removeConflicts(std::vector<std::array<int, 4>>& quads)
-  {
-    out.cellsConflicting += removeOverlappingQuads(quads, out.quadTriangle);
-  }
-
-private:
   const Eigen::MatrixX3d& V;
   const Eigen::MatrixX3i& F;
   const MeshTopology& topo;
   const Eigen::MatrixXd& uv;
   const QuadExtractionOptions& options;
   QuadMesh& out;
-  std::vector<char> flipped;
-  Eigen::MatrixX3i rotation;
-  std::vector<Complex> translation;
+  std::vector<char> flipped;        ///< per triangle: its (u, v) image not counterclockwise
+  Eigen::MatrixX3i rotation;        ///< #F x 3: the quarter turns r of the transitions
+  std::vector<Complex> translation; ///< 3 #F: the translations t of the transitions
+  /// the vertex of each corner identity, and the vertices' positions (out.vertexTriangle and
+  /// out.vertexPoint hold the rest until keepUsedVertices)
+  std::map<std::tuple<int, int, long long, long long>, int> vertexOf;
+  std::vector<Eigen::Vector3d> positions;
+  std::vector<std::array<int, 4>> quads; ///< found so far, with out.quadTriangle
 };
 }
 
