@@ -1,4 +1,6 @@
 // QuadOverlaps.cxx: removeOverlappingQuads, the clean-up of the quads a folded map overlaps.
+#include "QuadOverlaps.h"
+
 #include "QuadExtraction.h"
 
 #include <algorithm>
@@ -13,14 +15,29 @@ namespace quadcover
 
 int removeOverlappingQuads(std::vector<std::array<int, 4>>& quads, std::vector<int>& owner)
 {
+  return removeOverlappingQuads(quads, owner, Progress());
+}
+
+int removeOverlappingQuads(
+  std::vector<std::array<int, 4>>& quads, std::vector<int>& owner, const Progress& progress)
+{
   if (owner.size() != quads.size())
   {
     throw std::invalid_argument("removeOverlappingQuads: one owner per quad expected");
   }
+  // three passes over the quads (each a sixteenth at a time): repeats, edges, the manifold rest
+  const std::size_t stride = std::max<std::size_t>(1, quads.size() / 16);
+  auto tick = [&](int pass, std::size_t i) {
+    if (i % stride == 0)
+    {
+      progress.report((pass + static_cast<double>(i) / quads.size()) / 3.0);
+    }
+  };
   std::map<std::array<int, 4>, int> seen;
   std::vector<char> keep(quads.size(), 1);
   for (std::size_t i = 0; i < quads.size(); ++i)
   {
+    tick(0, i);
     std::array<int, 4> key = quads[i];
     std::rotate(key.begin(), std::min_element(key.begin(), key.end()), key.end());
     if (!seen.emplace(key, static_cast<int>(i)).second)
@@ -32,6 +49,7 @@ int removeOverlappingQuads(std::vector<std::array<int, 4>>& quads, std::vector<i
   std::map<std::pair<int, int>, int> undirected;
   for (std::size_t i = 0; i < quads.size(); ++i)
   {
+    tick(1, i);
     for (int k = 0; k < 4 && keep[i]; ++k)
     {
       const int a = quads[i][k], b = quads[i][(k + 1) % 4];
@@ -44,6 +62,7 @@ int removeOverlappingQuads(std::vector<std::array<int, 4>>& quads, std::vector<i
   std::vector<int> keptOwner;
   for (std::size_t i = 0; i < quads.size(); ++i)
   {
+    tick(2, i);
     for (int k = 0; k < 4 && keep[i]; ++k)
     {
       const int a = quads[i][k], b = quads[i][(k + 1) % 4];
@@ -61,6 +80,7 @@ int removeOverlappingQuads(std::vector<std::array<int, 4>>& quads, std::vector<i
   }
   quads.swap(kept);
   owner.swap(keptOwner);
+  progress.report(1.0);
   return removed;
 }
 

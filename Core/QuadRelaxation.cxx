@@ -131,11 +131,16 @@ public:
   }
 
   /// One sweep over the vertices, in order (each move sees the ones before it).
-  void sweep(QuadRelaxReport& report)
+  void sweep(QuadRelaxReport& report, const Progress& progress)
   {
     const int nV = static_cast<int>(mesh.V.rows());
+    const int chunk = std::max(1024, nV / 16);
     for (int v = 0; v < nV; ++v)
     {
+      if (v % chunk == 0)
+      {
+        progress.report(static_cast<double>(v) / nV);
+      }
       if (!fixed[v] && offsets[v] != offsets[v + 1] &&
         (options.movable.empty() || options.movable[v]))
       {
@@ -484,16 +489,21 @@ QuadRelaxReport relaxQuads(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F,
   checkReferences(F, mesh);
   Relaxation relaxation(V, F, topo, mesh, options);
   report.fixedVertices = relaxation.fixedVertices();
+  // the setup counts as a sweep (it takes about half as long as one)
+  const double share = 1.0 / (options.relaxationIterations + 1);
   for (int iteration = 0; iteration < options.relaxationIterations; ++iteration)
   {
-    relaxation.sweep(report);
+    relaxation.sweep(report, progress.part((iteration + 1) * share, (iteration + 2) * share));
   }
+  progress.report(1.0);
   return report;
 }
 
 std::pair<int, int> repairInvertedQuads(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F,
-  const MeshTopology& topo, QuadMesh& mesh, int rings, int iterations, int rounds)
+  const MeshTopology& topo, QuadMesh& mesh, int rings, int iterations, int rounds,
+  const Progress& progress)
 {
+  progress.report(0.0);
   std::vector<int> bad = invertedQuads(mesh.V, mesh.Q);
   const int before = static_cast<int>(bad.size());
   for (int round = 0; round < rounds && !bad.empty(); ++round)
@@ -503,7 +513,8 @@ std::pair<int, int> repairInvertedQuads(const Eigen::MatrixX3d& V, const Eigen::
     options.movable = verticesNear(mesh, bad, rings);
     const Eigen::MatrixX3d keptV = mesh.V;
     const std::vector<int> keptTriangle = mesh.vertexTriangle, keptPoint = mesh.vertexPoint;
-    relaxQuads(V, F, topo, mesh, options);
+    relaxQuads(V, F, topo, mesh, options,
+      progress.part(static_cast<double>(round) / rounds, static_cast<double>(round + 1) / rounds));
     const std::vector<int> now = invertedQuads(mesh.V, mesh.Q);
     if (now.size() > bad.size())
     {
@@ -520,6 +531,7 @@ std::pair<int, int> repairInvertedQuads(const Eigen::MatrixX3d& V, const Eigen::
       break;
     }
   }
+  progress.report(1.0);
   return { before, static_cast<int>(bad.size()) };
 }
 

@@ -46,6 +46,7 @@ struct QuadRelaxReport
  * region to another, so the distortion of a map far from the field's metric mostly stays. Updates
  * mesh.V and mesh.vertexTriangle (vertexPoint becomes -1 where a vertex leaves its input point).
  * @throws std::invalid_argument on sizes that do not match or step outside (0, 1]
+ * @throws Cancelled when progress's callback says stop (mesh is then partly relaxed)
  */
 QuadRelaxReport relaxQuads(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F,
   const MeshTopology& topo, QuadMesh& mesh, const QuadRelaxOptions& options,
@@ -58,9 +59,11 @@ QuadRelaxReport relaxQuads(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F,
  * none is left or a round repairs nothing (at most `rounds`; a round that leaves more is undone).
  * Far from them nothing moves.
  * @return the inverted quads before and after
+ * @throws Cancelled when progress's callback says stop (mesh is then partly repaired)
  */
 std::pair<int, int> repairInvertedQuads(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F,
-  const MeshTopology& topo, QuadMesh& mesh, int rings = 2, int iterations = 10, int rounds = 3);
+  const MeshTopology& topo, QuadMesh& mesh, int rings = 2, int iterations = 10, int rounds = 3,
+  const Progress& progress = Progress());
 
 }
 
