@@ -10,8 +10,9 @@
 
 namespace quadcover
 {
-/// Thrown by Progress::report when the callback asks the computation to stop. Whatever the
-/// computation was filling is then incomplete; its inputs are untouched.
+/// Thrown by Progress::report when the callback asks the computation to stop. What the
+/// computation was filling, or changing in place (relaxQuads' mesh), is then incomplete; its
+/// read-only inputs are untouched.
 class Cancelled : public std::runtime_error
 {
 public:

@@ -14,7 +14,8 @@ QuadMeshResult buildQuadMesh(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& 
   r.mesh = extractQuads(V, F, topo, cornerUV, options.extraction, progress.part(0.0, 0.5));
   if (options.repairInvertedQuads)
   {
-    r.invertedExtracted = repairInvertedQuads(V, F, topo, r.mesh).first;
+    r.invertedExtracted =
+      repairInvertedQuads(V, F, topo, r.mesh, 2, 10, 3, progress.part(0.5, 0.7)).first;
   }
   else
   {

@@ -55,6 +55,72 @@ void expectClosedQuadMesh(const Chain& c, const QuadMesh& q, const std::string& 
     name.c_str(), m.faces, m.vertices, m.irregularInner, 100 * m.edgeLengthRSD, 100 * m.angleRSD,
     m.minScaledJacobian, m.meanScaledJacobian);
 }
+
+/// Pushes three vertices of a quad mesh on the unit sphere far along it, past their neighbours,
+/// so that their quads fold over; returns them.
+std::vector<int> foldThreeVertices(const Chain& c, QuadMesh& q)
+{
+  const double edge = std::sqrt(4 * 3.14159265358979 / q.Q.rows());
+  std::vector<int> pushed;
+  for (int v = 0; v < q.V.rows() && pushed.size() < 3; v += 97)
+  {
+    const Eigen::Vector3d p = q.V.row(v);
+    Eigen::Vector3d d = Eigen::Vector3d::UnitZ().cross(p);
+    if (d.norm() < 0.3)
+    {
+      continue;
+    }
+    q.V.row(v) = (p + 1.6 * edge * d.normalized()).normalized() * p.norm();
+    // and the triangle it now lies over (the nearest centroid)
+    double nearest = 1e300;
+    for (int f = 0; f < c.s.F.rows(); ++f)
+    {
+      const Eigen::Vector3d centre =
+        (c.s.V.row(c.s.F(f, 0)) + c.s.V.row(c.s.F(f, 1)) + c.s.V.row(c.s.F(f, 2))) / 3.0;
+      const double d2 = (centre - Eigen::Vector3d(q.V.row(v))).squaredNorm();
+      if (d2 < nearest)
+      {
+        nearest = d2;
+        q.vertexTriangle[v] = f;
+      }
+    }
+    q.vertexPoint[v] = -1;
+    pushed.push_back(v);
+  }
+  return pushed;
+}
+
+/// Records the fractions a computation reports, and asks it to stop after `stopAfter` reports
+/// (never when 0).
+struct ProgressRecorder
+{
+  std::vector<double> fractions;
+  std::size_t stopAfter = 0;
+
+  Progress progress()
+  {
+    return Progress([this](double fraction) {
+      fractions.push_back(fraction);
+      return stopAfter == 0 || fractions.size() < stopAfter;
+    });
+  }
+};
+
+/// At least `atLeast` fractions, in [0, 1], never going back, the last one 1.
+void expectSteadyProgress(const std::vector<double>& fractions, std::size_t atLeast)
+{
+  ASSERT_GE(fractions.size(), atLeast);
+  for (std::size_t i = 0; i < fractions.size(); ++i)
+  {
+    EXPECT_GE(fractions[i], 0.0) << i;
+    EXPECT_LE(fractions[i], 1.0) << i;
+    if (i > 0)
+    {
+      EXPECT_GE(fractions[i], fractions[i - 1]) << i;
+    }
+  }
+  EXPECT_EQ(fractions.back(), 1.0);
+}
 }
 
 TEST(QuadExtraction, ClosedSurfacesGiveClosedManifoldQuadMeshes)
@@ -320,34 +386,8 @@ TEST(QuadRelaxation, RepairsInvertedQuadsAndLeavesTheRestAlone)
   const Chain c = runChain(testSurface("sphere"), 800);
   QuadMesh q = extractQuads(c.s.V, c.s.F, c.topo, c.map.cornerUV);
   ASSERT_EQ(repairInvertedQuads(c.s.V, c.s.F, c.topo, q).first, 0) << "a clean sphere";
-  // push three vertices far along the sphere, past their neighbours: their quads fold over
   const double edge = std::sqrt(4 * 3.14159265358979 / q.Q.rows());
-  std::vector<int> pushed;
-  for (int v = 0; v < q.V.rows() && pushed.size() < 3; v += 97)
-  {
-    const Eigen::Vector3d p = q.V.row(v);
-    Eigen::Vector3d d = Eigen::Vector3d::UnitZ().cross(p);
-    if (d.norm() < 0.3)
-    {
-      continue;
-    }
-    q.V.row(v) = (p + 1.6 * edge * d.normalized()).normalized() * p.norm();
-    // and the triangle it now lies over (the nearest centroid)
-    double nearest = 1e300;
-    for (int f = 0; f < c.s.F.rows(); ++f)
-    {
-      const Eigen::Vector3d centre =
-        (c.s.V.row(c.s.F(f, 0)) + c.s.V.row(c.s.F(f, 1)) + c.s.V.row(c.s.F(f, 2))) / 3.0;
-      const double d2 = (centre - Eigen::Vector3d(q.V.row(v))).squaredNorm();
-      if (d2 < nearest)
-      {
-        nearest = d2;
-        q.vertexTriangle[v] = f;
-      }
-    }
-    q.vertexPoint[v] = -1;
-    pushed.push_back(v);
-  }
+  const std::vector<int> pushed = foldThreeVertices(c, q);
   const Eigen::MatrixX3d start = q.V;
   const auto [before, after] = repairInvertedQuads(c.s.V, c.s.F, c.topo, q);
   std::printf("inverted quads: %d -> %d\n", before, after);
@@ -423,4 +463,65 @@ TEST(QuadExtraction, OverlappingQuadsAreRemovedAndRepeatsMerged)
 
   std::vector<int> wrongSize = { 1 };
   EXPECT_THROW(removeOverlappingQuads(fan, wrongSize), std::invalid_argument);
+}
+
+TEST(QuadExtraction, ReportsProgressAndStopsWhenAsked)
+{
+  const Chain c = runChain(testSurface("sphere"), 800);
+  const QuadMesh plain = extractQuads(c.s.V, c.s.F, c.topo, c.map.cornerUV);
+  ProgressRecorder recorder;
+  const QuadMesh q = extractQuads(
+    c.s.V, c.s.F, c.topo, c.map.cornerUV, QuadExtractionOptions(), recorder.progress());
+  expectSteadyProgress(recorder.fractions, 20);
+  EXPECT_TRUE(q.V == plain.V && q.Q == plain.Q) << "reporting changes nothing";
+
+  ProgressRecorder stopping;
+  stopping.stopAfter = 3;
+  EXPECT_THROW(extractQuads(c.s.V, c.s.F, c.topo, c.map.cornerUV, QuadExtractionOptions(),
+                 stopping.progress()),
+    Cancelled);
+  EXPECT_EQ(stopping.fractions.size(), 3u) << "no report after the one that said stop";
+}
+
+TEST(QuadRelaxation, ReportsProgressAndStopsWhenAsked)
+{
+  const Chain c = runChain(testSurface("sphere"), 800);
+  const QuadMesh extracted = extractQuads(c.s.V, c.s.F, c.topo, c.map.cornerUV);
+  QuadRelaxOptions options;
+  options.relaxationIterations = 10;
+  QuadMesh plain = extracted;
+  relaxQuads(c.s.V, c.s.F, c.topo, plain, options);
+  QuadMesh q = extracted;
+  ProgressRecorder recorder;
+  relaxQuads(c.s.V, c.s.F, c.topo, q, options, recorder.progress());
+  expectSteadyProgress(recorder.fractions, options.relaxationIterations);
+  EXPECT_TRUE(q.V == plain.V) << "reporting changes nothing";
+
+  ProgressRecorder stopping;
+  stopping.stopAfter = 3;
+  q = extracted;
+  EXPECT_THROW(relaxQuads(c.s.V, c.s.F, c.topo, q, options, stopping.progress()), Cancelled);
+  EXPECT_EQ(stopping.fractions.size(), 3u);
+}
+
+TEST(QuadRelaxation, RepairReportsProgressAndStopsWhenAsked)
+{
+  const Chain c = runChain(testSurface("sphere"), 800);
+  QuadMesh folded = extractQuads(c.s.V, c.s.F, c.topo, c.map.cornerUV);
+  foldThreeVertices(c, folded);
+  QuadMesh plain = folded;
+  const auto inverted = repairInvertedQuads(c.s.V, c.s.F, c.topo, plain);
+  ASSERT_GT(inverted.first, 0);
+  QuadMesh q = folded;
+  ProgressRecorder recorder;
+  EXPECT_EQ(repairInvertedQuads(c.s.V, c.s.F, c.topo, q, 2, 10, 3, recorder.progress()), inverted);
+  expectSteadyProgress(recorder.fractions, 10);
+  EXPECT_TRUE(q.V == plain.V) << "reporting changes nothing";
+
+  ProgressRecorder stopping;
+  stopping.stopAfter = 3;
+  q = folded;
+  EXPECT_THROW(
+    repairInvertedQuads(c.s.V, c.s.F, c.topo, q, 2, 10, 3, stopping.progress()), Cancelled);
+  EXPECT_EQ(stopping.fractions.size(), 3u);
 }

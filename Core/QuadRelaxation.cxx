@@ -1,0 +1,538 @@
+// QuadRelaxation.cxx: relaxQuads (tangential relaxation on the input surface) and
+// repairInvertedQuads.
+#include "QuadRelaxation.h"
+
+#include "ScaledJacobian.h"
+
+#include <Eigen/Geometry>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <stdexcept>
+#include <utility>
+#include <vector>
+
+namespace quadcover
+{
+namespace
+{
+/// The point of triangle (a, b, c) closest to p.
+Eigen::Vector3d closestOnTriangle(const Eigen::Vector3d& p, const Eigen::Vector3d& a,
+  const Eigen::Vector3d& b, const Eigen::Vector3d& c)
+{
+  const Eigen::Vector3d ab = b - a, ac = c - a;
+  const Eigen::Vector3d n = ab.cross(ac);
+  const double nn = n.squaredNorm();
+  if (nn > 0)
+  {
+    // barycentric coordinates of p's projection onto the plane
+    const Eigen::Vector3d ap = p - a;
+    const double beta = ap.cross(ac).dot(n) / nn;
+    const double gamma = ab.cross(ap).dot(n) / nn;
+    if (beta >= 0 && gamma >= 0 && beta + gamma <= 1)
+    {
+      return a + beta * ab + gamma * ac;
+    }
+  }
+  auto onSegment = [&](const Eigen::Vector3d& s, const Eigen::Vector3d& t) -> Eigen::Vector3d {
+    const Eigen::Vector3d d = t - s;
+    const double dd = d.squaredNorm();
+    const double x = dd > 0 ? std::clamp((p - s).dot(d) / dd, 0.0, 1.0) : 0.0;
+    return s + x * d;
+  };
+  Eigen::Vector3d best = onSegment(a, b);
+  for (const Eigen::Vector3d& q : { onSegment(b, c), onSegment(c, a) })
+  {
+    if ((q - p).squaredNorm() < (best - p).squaredNorm())
+    {
+      best = q;
+    }
+  }
+  return best;
+}
+
+/// The sizes and the step; checked before anything else.
+void checkSizes(const Eigen::MatrixX3i& F, const MeshTopology& topo, const QuadMesh& mesh,
+  const QuadRelaxOptions& options)
+{
+  const int nV = static_cast<int>(mesh.V.rows());
+  if (topo.numFaces != static_cast<int>(F.rows()) ||
+    static_cast<int>(mesh.vertexTriangle.size()) != nV ||
+    static_cast<int>(mesh.vertexPoint.size()) != nV ||
+    (!options.movable.empty() && static_cast<int>(options.movable.size()) != nV))
+  {
+    throw std::invalid_argument("relaxQuads: sizes do not match");
+  }
+  if (!(options.step > 0 && options.step <= 1))
+  {
+    throw std::invalid_argument("relaxQuads: the step must be in (0, 1]");
+  }
+}
+
+/// The quads' vertices and the vertices' triangles; checked only when there is work to do.
+void checkReferences(const Eigen::MatrixX3i& F, const QuadMesh& mesh)
+{
+  const int nV = static_cast<int>(mesh.V.rows());
+  for (int i = 0; i < static_cast<int>(mesh.Q.rows()); ++i)
+  {
+    for (int k = 0; k < 4; ++k)
+    {
+      if (mesh.Q(i, k) < 0 || mesh.Q(i, k) >= nV)
+      {
+        throw std::invalid_argument("relaxQuads: a quad refers to a vertex that does not exist");
+      }
+    }
+  }
+  for (const int t : mesh.vertexTriangle)
+  {
+    if (t < 0 || t >= static_cast<int>(F.rows()))
+    {
+      throw std::invalid_argument("relaxQuads: a vertex lies in no input triangle");
+    }
+  }
+}
+
+/// The corners of a vertex's quads: how many are not positive, and the worst.
+struct Corners
+{
+  int inverted = 0;
+  double worst = 1.0;
+};
+
+/// What the sweeps of relaxQuads share: the input's normals, the input edges no vertex crosses,
+/// the vertices that stay, and the quads around each vertex.
+class Relaxation
+{
+public:
+  Relaxation(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F, const MeshTopology& topo,
+    QuadMesh& mesh, const QuadRelaxOptions& options)
+    : V(V)
+    , F(F)
+    , topo(topo)
+    , mesh(mesh)
+    , options(options)
+  {
+    computeNormals();
+    findCreases();
+    fixVertices();
+    collectVertexQuads();
+    measureMeanEdge();
+  }
+
+  int fixedVertices() const
+  {
+    int count = 0;
+    for (const char f : fixed)
+    {
+      count += f;
+    }
+    return count;
+  }
+
+  /// One sweep over the vertices, in order (each move sees the ones before it).
+  void sweep(QuadRelaxReport& report, const Progress& progress)
+  {
+    const int nV = static_cast<int>(mesh.V.rows());
+    const int chunk = std::max(1024, nV / 16);
+    for (int v = 0; v < nV; ++v)
+    {
+      if (v % chunk == 0)
+      {
+        progress.report(static_cast<double>(v) / nV);
+      }
+      if (!fixed[v] && offsets[v] != offsets[v + 1] &&
+        (options.movable.empty() || options.movable[v]))
+      {
+        relaxVertex(v, report);
+      }
+    }
+  }
+
+private:
+  void computeNormals()
+  {
+    const int nF = static_cast<int>(F.rows());
+    normal.resize(nF, 3);
+    for (int f = 0; f < nF; ++f)
+    {
+      const Eigen::Vector3d a = V.row(F(f, 0)), b = V.row(F(f, 1)), c = V.row(F(f, 2));
+      const Eigen::Vector3d n = (b - a).cross(c - a);
+      normal.row(f) = n.norm() > 0 ? Eigen::Vector3d(n.normalized()) : Eigen::Vector3d::Zero();
+    }
+  }
+
+  /// The edges no vertex crosses (boundary, crease, non-manifold) and the points on them.
+  void findCreases()
+  {
+    const double creaseCos = std::cos(options.featureAngle * 3.14159265358979323846 / 180.0);
+    blocked.assign(topo.numEdges(), 1);
+    pointOnCrease.assign(V.rows(), 0);
+    for (int e = 0; e < topo.numEdges(); ++e)
+    {
+      if (topo.edgeFaceCount[e] == 2)
+      {
+        const Eigen::Vector3d n0 = normal.row(topo.edgeFaces(e, 0));
+        const Eigen::Vector3d n1 = normal.row(topo.edgeFaces(e, 1));
+        blocked[e] = n0.dot(n1) < creaseCos;
+      }
+      if (blocked[e])
+      {
+        pointOnCrease[topo.edges(e, 0)] = pointOnCrease[topo.edges(e, 1)] = 1;
+      }
+    }
+  }
+
+  /// Fixed vertices: on the quad mesh's boundary, or on an input crease or boundary.
+  void fixVertices()
+  {
+    const int nV = static_cast<int>(mesh.V.rows());
+    fixed.assign(nV, 0);
+    std::map<std::pair<int, int>, int> edgeCount;
+    for (int i = 0; i < static_cast<int>(mesh.Q.rows()); ++i)
+    {
+      for (int k = 0; k < 4; ++k)
+      {
+        const int a = mesh.Q(i, k), b = mesh.Q(i, (k + 1) % 4);
+        ++edgeCount[{ std::min(a, b), std::max(a, b) }];
+      }
+    }
+    for (const auto& [edge, count] : edgeCount)
+    {
+      if (count != 2)
+      {
+        fixed[edge.first] = fixed[edge.second] = 1;
+      }
+    }
+    for (int v = 0; v < nV; ++v)
+    {
+      fixed[v] |= onCrease(v);
+    }
+  }
+
+  /// Is quad vertex v on a blocked input edge: its point on one, or on an edge of its triangle
+  /// (relative distance to the edge's line)?
+  char onCrease(int v) const
+  {
+    if (mesh.vertexPoint[v] >= 0)
+    {
+      return pointOnCrease[mesh.vertexPoint[v]];
+    }
+    const int f = mesh.vertexTriangle[v];
+    const Eigen::Vector3d p = mesh.V.row(v);
+    for (int k = 0; k < 3; ++k)
+    {
+      const Eigen::Vector3d a = V.row(F(f, k)), b = V.row(F(f, (k + 1) % 3));
+      const double length = (b - a).norm();
+      if (blocked[topo.faceEdges(f, k)] && length > 0 &&
+        (p - a).cross(b - a).norm() <= 1e-6 * length * length)
+      {
+        return 1;
+      }
+    }
+    return 0;
+  }
+
+  /// The quads of each vertex (CSR: offsets, quadsOf).
+  void collectVertexQuads()
+  {
+    const int nV = static_cast<int>(mesh.V.rows());
+    const int nQ = static_cast<int>(mesh.Q.rows());
+    offsets.assign(nV + 1, 0);
+    quadsOf.resize(4 * static_cast<std::size_t>(nQ));
+    for (int i = 0; i < nQ; ++i)
+    {
+      for (int k = 0; k < 4; ++k)
+      {
+        ++offsets[mesh.Q(i, k) + 1];
+      }
+    }
+    for (int v = 0; v < nV; ++v)
+    {
+      offsets[v + 1] += offsets[v];
+    }
+    std::vector<int> fill(offsets.begin(), offsets.end() - 1);
+    for (int i = 0; i < nQ; ++i)
+    {
+      for (int k = 0; k < 4; ++k)
+      {
+        quadsOf[fill[mesh.Q(i, k)]++] = i;
+      }
+    }
+  }
+
+  void measureMeanEdge()
+  {
+    const int nQ = static_cast<int>(mesh.Q.rows());
+    meanEdge = 0.0;
+    for (int i = 0; i < nQ; ++i)
+    {
+      for (int k = 0; k < 4; ++k)
+      {
+        meanEdge += (mesh.V.row(mesh.Q(i, k)) - mesh.V.row(mesh.Q(i, (k + 1) % 4))).norm();
+      }
+    }
+    meanEdge /= 4.0 * nQ;
+  }
+
+  /// The area-weighted mean of the centres of v's quads; false when their area is 0.
+  bool centreOfQuads(int v, Eigen::Vector3d& centre) const
+  {
+    Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+    double weight = 0.0;
+    for (int j = offsets[v]; j < offsets[v + 1]; ++j)
+    {
+      const int i = quadsOf[j];
+      const Eigen::Vector3d p0 = mesh.V.row(mesh.Q(i, 0)), p1 = mesh.V.row(mesh.Q(i, 1));
+      const Eigen::Vector3d p2 = mesh.V.row(mesh.Q(i, 2)), p3 = mesh.V.row(mesh.Q(i, 3));
+      const double area = 0.5 * (p2 - p0).cross(p3 - p1).norm();
+      sum += area * 0.25 * (p0 + p1 + p2 + p3);
+      weight += area;
+    }
+    if (!(weight > 0))
+    {
+      return false;
+    }
+    centre = sum / weight;
+    return true;
+  }
+
+  /// Moves v part of the way to the centre of its quads, in the plane of its triangle and back
+  /// onto the surface, unless that folds a corner of its quads.
+  void relaxVertex(int v, QuadRelaxReport& report)
+  {
+    Eigen::Vector3d centre;
+    if (!centreOfQuads(v, centre))
+    {
+      return;
+    }
+    const Eigen::Vector3d old = mesh.V.row(v);
+    const int oldTriangle = mesh.vertexTriangle[v];
+    const Eigen::Vector3d n = normal.row(oldTriangle);
+    Eigen::Vector3d move = options.step * (centre - old);
+    move -= move.dot(n) * n;
+    const Corners before = cornersOf(v);
+    int f = oldTriangle;
+    const Eigen::Vector3d moved = project(f, old + move);
+    mesh.V.row(v) = moved;
+    mesh.vertexTriangle[v] = f;
+    const Corners after = cornersOf(v);
+    // no corner turns inside out, and none already inside out gets worse
+    if (after.inverted > before.inverted || (after.worst <= 0 && after.worst < before.worst))
+    {
+      mesh.V.row(v) = old;
+      mesh.vertexTriangle[v] = oldTriangle;
+      ++report.rejectedMoves;
+      return;
+    }
+    if ((moved - old).squaredNorm() > 0)
+    {
+      mesh.vertexPoint[v] = -1;
+    }
+    report.maxMove = std::max(report.maxMove, (moved - old).norm() / meanEdge);
+  }
+
+  Eigen::Vector3d closestIn(int f, const Eigen::Vector3d& p) const
+  {
+    return closestOnTriangle(p, V.row(F(f, 0)), V.row(F(f, 1)), V.row(F(f, 2)));
+  }
+
+  /// Candidate triangles next to f: across its free edges, and around its corners up to a
+  /// blocked edge.
+  void gatherCandidates(int f)
+  {
+    candidates.clear();
+    for (int k = 0; k < 3; ++k)
+    {
+      const int corner = F(f, k);
+      for (const int side : { k, (k + 2) % 3 }) // the two edges of f at this corner
+      {
+        int g = f, edgeIndex = side;
+        for (int guard = 0; guard < 64; ++guard)
+        {
+          if (blocked[topo.faceEdges(g, edgeIndex)])
+          {
+            break;
+          }
+          const int h = topo.faceNeighbors(g, edgeIndex);
+          if (h < 0 || h == f)
+          {
+            break;
+          }
+          candidates.push_back(h);
+          // continue around the corner: h's other edge at `corner`
+          const int c = MeshTopology::cornerOf(F, h, corner);
+          if (c < 0)
+          {
+            break;
+          }
+          const int shared = topo.faceEdges(g, edgeIndex);
+          edgeIndex = topo.faceEdges(h, c) == shared ? (c + 2) % 3 : c;
+          g = h;
+        }
+      }
+    }
+  }
+
+  /// The closest point to p on the surface, walking from triangle f (updated to the triangle it
+  /// lies in) to whichever candidate is closer until none is.
+  Eigen::Vector3d project(int& f, const Eigen::Vector3d& p)
+  {
+    Eigen::Vector3d best = closestIn(f, p);
+    double distance = (best - p).squaredNorm();
+    for (int step = 0; step < 64; ++step)
+    {
+      gatherCandidates(f);
+      int next = -1;
+      for (const int g : candidates)
+      {
+        const Eigen::Vector3d q = closestIn(g, p);
+        const double d = (q - p).squaredNorm();
+        if (d < distance * (1.0 - 1e-12) - 1e-300)
+        {
+          distance = d;
+          best = q;
+          next = g;
+        }
+      }
+      if (next < 0)
+      {
+        break;
+      }
+      f = next;
+    }
+    return best;
+  }
+
+  /// The corners of v's quads, each measured against the input's normal at the corner and
+  /// against the quad's own normal (its diagonals' cross product, as measureQuads does).
+  Corners cornersOf(int v) const
+  {
+    Corners r;
+    for (int j = offsets[v]; j < offsets[v + 1]; ++j)
+    {
+      const int i = quadsOf[j];
+      const Eigen::Vector3d own = quadNormal(mesh.V, mesh.Q, i);
+      for (int k = 0; k < 4; ++k)
+      {
+        const int c = mesh.Q(i, k);
+        const Eigen::Vector3d next = mesh.V.row(mesh.Q(i, (k + 1) % 4)) - mesh.V.row(c);
+        const Eigen::Vector3d prev = mesh.V.row(mesh.Q(i, (k + 3) % 4)) - mesh.V.row(c);
+        const Eigen::Vector3d n = normal.row(mesh.vertexTriangle[c]);
+        for (const Eigen::Vector3d& reference : { n, own })
+        {
+          const double sj = cornerScaledJacobian(next, prev, reference, -1.0);
+          r.inverted += sj <= 0;
+          r.worst = std::min(r.worst, sj);
+        }
+      }
+    }
+    return r;
+  }
+
+  const Eigen::MatrixX3d& V;
+  const Eigen::MatrixX3i& F;
+  const MeshTopology& topo;
+  QuadMesh& mesh;
+  const QuadRelaxOptions& options;
+  Eigen::MatrixX3d normal;         ///< #F x 3: the input's unit normals (0 where degenerate)
+  std::vector<char> blocked;       ///< per input edge: boundary, crease or non-manifold
+  std::vector<char> pointOnCrease; ///< per input point: on a blocked edge
+  std::vector<char> fixed;         ///< per quad vertex: stays where it is
+  std::vector<int> offsets;        ///< #V + 1: where each vertex's quads start in quadsOf
+  std::vector<int> quadsOf;        ///< the quads of each vertex, one after the other
+  double meanEdge = 0.0;           ///< of the quad mesh, the unit of QuadRelaxReport::maxMove
+  std::vector<int> candidates;     ///< gatherCandidates' result (its memory reused)
+};
+
+/// The quads' vertices and those within `rings` quad rings of them.
+std::vector<char> verticesNear(const QuadMesh& mesh, const std::vector<int>& quads, int rings)
+{
+  std::vector<char> near(mesh.V.rows(), 0);
+  for (const int i : quads)
+  {
+    for (int k = 0; k < 4; ++k)
+    {
+      near[mesh.Q(i, k)] = 1;
+    }
+  }
+  // grow by quad rings: every vertex of a quad with a vertex already in
+  for (int ring = 0; ring < rings; ++ring)
+  {
+    std::vector<char> grown = near;
+    for (int i = 0; i < mesh.Q.rows(); ++i)
+    {
+      const bool touches =
+        near[mesh.Q(i, 0)] || near[mesh.Q(i, 1)] || near[mesh.Q(i, 2)] || near[mesh.Q(i, 3)];
+      for (int k = 0; k < 4 && touches; ++k)
+      {
+        grown[mesh.Q(i, k)] = 1;
+      }
+    }
+    near.swap(grown);
+  }
+  return near;
+}
+}
+
+QuadRelaxReport relaxQuads(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F,
+  const MeshTopology& topo, QuadMesh& mesh, const QuadRelaxOptions& options,
+  const Progress& progress)
+{
+  progress.report(0.0);
+  checkSizes(F, topo, mesh, options);
+  QuadRelaxReport report;
+  if (options.relaxationIterations <= 0 || mesh.Q.rows() == 0)
+  {
+    return report;
+  }
+  checkReferences(F, mesh);
+  Relaxation relaxation(V, F, topo, mesh, options);
+  report.fixedVertices = relaxation.fixedVertices();
+  // the setup counts as a sweep (it takes about half as long as one)
+  const double share = 1.0 / (options.relaxationIterations + 1);
+  for (int iteration = 0; iteration < options.relaxationIterations; ++iteration)
+  {
+    relaxation.sweep(report, progress.part((iteration + 1) * share, (iteration + 2) * share));
+  }
+  progress.report(1.0);
+  return report;
+}
+
+std::pair<int, int> repairInvertedQuads(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F,
+  const MeshTopology& topo, QuadMesh& mesh, int rings, int iterations, int rounds,
+  const Progress& progress)
+{
+  progress.report(0.0);
+  std::vector<int> bad = invertedQuads(mesh.V, mesh.Q);
+  const int before = static_cast<int>(bad.size());
+  for (int round = 0; round < rounds && !bad.empty(); ++round)
+  {
+    QuadRelaxOptions options;
+    options.relaxationIterations = iterations;
+    options.movable = verticesNear(mesh, bad, rings);
+    const Eigen::MatrixX3d keptV = mesh.V;
+    const std::vector<int> keptTriangle = mesh.vertexTriangle, keptPoint = mesh.vertexPoint;
+    relaxQuads(V, F, topo, mesh, options,
+      progress.part(static_cast<double>(round) / rounds, static_cast<double>(round + 1) / rounds));
+    const std::vector<int> now = invertedQuads(mesh.V, mesh.Q);
+    if (now.size() > bad.size())
+    {
+      // the guard counts corners against two normals, measureQuads quads against one: rare
+      mesh.V = keptV;
+      mesh.vertexTriangle = keptTriangle;
+      mesh.vertexPoint = keptPoint;
+      break;
+    }
+    const bool repaired = now.size() < bad.size();
+    bad = now;
+    if (!repaired)
+    {
+      break;
+    }
+  }
+  progress.report(1.0);
+  return { before, static_cast<int>(bad.size()) };
+}
+
+}
