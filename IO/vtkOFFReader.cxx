@@ -8,6 +8,7 @@
 #include "vtkPolyData.h"
 
 #include <cmath>
+#include <cstdlib>
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
@@ -88,8 +89,9 @@ void ReadHeader(OffLines& lines, long long fileSize, long long& nv, long long& n
   {
     lines.Fail("the vertex and face counts are missing or not numbers");
   }
-  // every vertex takes at least 6 bytes ("0 0 0\n"), every face at least 2 ("0\n")
-  if (nv < 0 || nf < 0 || nv > fileSize / 6 || nf > fileSize / 2)
+  // every vertex takes at least 6 bytes ("0 0 0\n"), every face at least 4 ("1 0\n"), the
+  // file's last line perhaps without its newline
+  if (nv < 0 || nf < 0 || nv > (fileSize + 1) / 6 || nf > (fileSize + 1) / 4)
   {
     lines.Fail("the counts " + std::to_string(nv) + " vertices and " + std::to_string(nf) +
       " faces are negative or larger than the file could hold");
@@ -109,9 +111,15 @@ void ReadVertices(OffLines& lines, long long nv, vtkPoints* points)
         "the file ends after " + std::to_string(i) + " of " + std::to_string(nv) + " vertices");
     }
     double x[3];
-    if (!(words >> x[0] >> x[1] >> x[2]))
+    for (double& c : x)
     {
-      lines.Fail("a vertex needs three coordinates");
+      // strtod, unlike operator>>, reads nan and inf: they are refused below, not misread
+      std::string token;
+      char* end = nullptr;
+      if (!(words >> token) || (c = std::strtod(token.c_str(), &end), *end != '\0'))
+      {
+        lines.Fail("a vertex needs three coordinates");
+      }
     }
     if (!std::isfinite(x[0]) || !std::isfinite(x[1]) || !std::isfinite(x[2]))
     {

@@ -14,13 +14,15 @@
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
 #include "vtkQuadCoverArrayNames.h"
-#include "vtkQuadCoverErrorObserver.h"
 #include "vtkQuadCoverEigen.h"
+#include "vtkQuadCoverErrorObserver.h"
 #include "vtkUnsignedCharArray.h"
 
 #include "CutGraph.h"
+#include "FrameField.h"
 #include "MeshTopology.h"
 #include "Surfaces.h"
+#include "TestSurfaces.h"
 
 #include <gtest/gtest.h>
 
@@ -207,6 +209,46 @@ TEST(vtkFrameStages, ArraysOfTheChain)
       }
     }
   }
+}
+
+TEST(vtkMatchingBuilder, BoundaryToleranceReachesTheTwistCheck)
+{
+  // On the tube whose cheaper merge would leave its boundary circles on different frame
+  // families (TestSurfaces.h), the twist check undoes that merge when the frames along the
+  // circles count as following them (within BoundaryTolerance degrees), and the pair stays; at 0
+  // degrees none does, and the cheaper merge stays. So for one of the two sides the matchings
+  // differ.
+  const quadcover::Surface tube = quadcover::twistTube();
+  const quadcover::MeshTopology topo =
+    quadcover::buildTopology(tube.F, static_cast<int>(tube.V.rows()));
+  const Eigen::MatrixX3d normal = quadcover::computeFaceBases(tube.V, tube.F, topo).normal;
+  int differ = 0;
+  for (const double offset : { 0.3, -0.3 })
+  {
+    vtkSmartPointer<vtkPolyData> pd = vtkQuadCoverEigen::ToPolyData(tube.V, tube.F);
+    pd->GetCellData()->AddArray(
+      vtkQuadCoverEigen::ToArray(quadcover::twistTubeFrames(tube, normal, offset), names::FrameU));
+    Eigen::MatrixXd matching[2];
+    for (int run = 0; run < 2; ++run)
+    {
+      vtkNew<vtkMatchingBuilder> m;
+      m->SetInputData(pd);
+      m->SetBranchPointWeight(100.0); // merge if at all possible
+      m->SetBoundaryTolerance(run == 0 ? 10.0 : 0.0);
+      vtkNew<vtkQuadCoverErrorObserver> errors;
+      errors->Attach(m);
+      m->Update();
+      ASSERT_EQ(errors->GetError(), "");
+      if (run == 1)
+      {
+        EXPECT_EQ(Field(m->GetOutput(), names::SingularityCount), 0) << "nothing stops the merge";
+      }
+      matching[run] =
+        vtkQuadCoverEigen::FromArray(m->GetOutput()->GetCellData()->GetArray(names::Matching));
+    }
+    differ += matching[0] != matching[1];
+  }
+  EXPECT_EQ(differ, 1);
 }
 
 // ---- Poincare-Hopf through the whole chain on every surface ----

@@ -187,6 +187,86 @@ class CommandLine(unittest.TestCase):
         self.assertGreater(held[False], 0)
         self.assertEqual(held[True], 0)
 
+    def test_boundary_options_reach_both_filters(self):
+        # --no-align-to-boundary: the smoother holds no frame along the cylinder's circles and
+        # the solver puts no boundary edge on a grid line; --boundary-tolerance reaches the
+        # matching stage and the solver alike (the options read null while two filters differ).
+        cylinder = os.path.join(DATA, "cylinder.obj")
+        figures = {}
+        for flags in ([], ["--no-align-to-boundary"]):
+            stats = os.path.join(self.dir, "b.json")
+            code, _, err = run(cylinder, "-o", os.path.join(self.dir, "b.vtp"), "--stage", "param",
+                               "--target-quad-count", "500", "--boundary-tolerance", "5",
+                               "--stats", stats, *flags)
+            self.assertEqual(code, 0, err)
+            with open(stats) as f:
+                s = json.load(f)
+            self.assertEqual(s["options"]["boundary_tolerance"], 5)
+            self.assertIs(s["options"]["align_to_boundary"], not flags)
+            figures[bool(flags)] = (s["smooth"]["constrained_frame_count"],
+                                    s["param"]["aligned_boundary_edges"])
+        self.assertGreater(min(figures[False]), 0)
+        self.assertEqual(figures[True], (0, 0))
+
+    def test_repair_stage_and_off_input(self):
+        # Data/sphere.obj as OFF, with a comment and its points repeated per triangle (as some
+        # exporters write them): the repair stage merges them back.
+        reader = vtk.vtkOBJReader()
+        reader.SetFileName(os.path.join(DATA, "sphere.obj"))
+        reader.Update()
+        pd = reader.GetOutput()
+        lines = ["OFF # a sphere", "%d %d 0" % (3 * pd.GetNumberOfCells(), pd.GetNumberOfCells())]
+        for c in range(pd.GetNumberOfCells()):
+            cell = pd.GetCell(c)
+            for k in range(3):
+                lines.append("%.17g %.17g %.17g" % pd.GetPoint(cell.GetPointId(k)))
+        lines += ["3 %d %d %d" % (3 * c, 3 * c + 1, 3 * c + 2) for c in range(pd.GetNumberOfCells())]
+        path = self.write("sphere.off", "\n".join(lines) + "\n")
+        stats = os.path.join(self.dir, "r.json")
+        out = os.path.join(self.dir, "r.vtp")
+        code, _, err = run(path, "-o", out, "--stage", "repair", "--stats", stats)
+        self.assertEqual(code, 0, err)
+        with open(stats) as f:
+            s = json.load(f)
+        self.assertEqual(s["stage"], "repair")
+        self.assertEqual(s["input"]["points"], 3 * 5120)
+        self.assertEqual(s["repair"]["merged_points"], 3 * 5120 - 2562)
+        self.assertEqual(s["surface"], {"points": 2562, "triangles": 5120})
+        self.assertNotIn("curvature", s)
+        code, _, err = run(path, "-o", os.path.join(self.dir, "q.obj"), "--target-quad-count", "600",
+                           "--stats", stats)
+        self.assertEqual(code, 0, err)
+        with open(stats) as f:
+            q = json.load(f)["quads"]
+        self.assertEqual((q["euler_characteristic"], q["irregular_vertices"]), (2, [8, 0]))
+
+    def test_bad_off_files(self):
+        # A generated corpus of broken OFF files: each gets one line that names what is wrong.
+        tri = "0 0 0\n1 0 0\n0 1 0\n"
+        cases = {
+            "header": ("OFX\n3 1 0\n" + tri + "3 0 1 2\n", r"not an OFF file"),
+            "4d": ("4OFF\n3 1 0\n" + tri + "3 0 1 2\n", r"not three-dimensional"),
+            "binary": ("OFF BINARY\n", r"binary OFF"),
+            "no-counts": ("OFF\n", r"ends before the vertex and face counts"),
+            "bad-counts": ("OFF\nthree 1 0\n", r"counts are missing"),
+            "negative": ("OFF\n-3 1 0\n" + tri, r"negative or larger"),
+            "huge": ("OFF\n1000000000 1 0\n" + tri, r"negative or larger"),
+            "short-vertex": ("OFF\n3 1 0\n0 0\n1 0 0\n0 1 0\n3 0 1 2\n",
+                             r"line 3: a vertex needs three coordinates"),
+            "nan": ("OFF\n3 1 0\n0 0 0\nnan 0 0\n0 1 0\n3 0 1 2\n", r"line 4: a non-finite"),
+            "truncated-vertices": ("OFF\n3 1 0\n0 0 0\n# " + 40 * "x" + "\n",
+                                   r"ends after 1 of 3 vertices"),
+            "truncated-faces": ("OFF\n3 2 0\n" + tri + "3 0 1 2\n", r"ends after 1 of 2 faces"),
+            "index": ("OFF\n3 1 0\n" + tri + "3 0 1 3\n", r"line 6: .*vertex 3, but the file"),
+            "short-face": ("OFF\n3 1 0\n" + tri + "3 0 1\n", r"fewer than its 3 points"),
+            "zero-face": ("OFF\n3 1 0\n" + tri + "0\n", r"number of points"),
+        }
+        for name, (text, pattern) in cases.items():
+            with self.subTest(name=name):
+                self.assert_one_line_error([self.write(name + ".off", text), "-o",
+                                            os.path.join(self.dir, "x.vtp")], 1,
+                                           r"^quadcover: error: cannot read .*" + pattern)
+
     def test_every_input_format_and_legacy_output(self):
         # Convert Data/sphere.obj to .ply, .stl, .vtp, .vtk with VTK and read each back.
         reader = vtk.vtkOBJReader()

@@ -4,6 +4,10 @@
 
 #include "Surfaces.h"
 
+#include <Eigen/Geometry>
+
+#include <cmath>
+#include <complex>
 #include <stdexcept>
 #include <string>
 
@@ -25,6 +29,47 @@ inline Surface testSurface(const std::string& name)
   if (name == "roundedcube")
     return makeRoundedCube(0.3, 20);
   throw std::invalid_argument("unknown test surface " + name);
+}
+
+/// The tube the twist check is tested on: makeCylinder(1, 8, 96, 160) (r = 1, z from -4 to 4).
+inline Surface twistTube()
+{
+  return makeCylinder(1.0, 8.0, 96, 160);
+}
+
+/**
+ * Frames on twistTube() that follow both boundary circles, with a +1/4 and a -1/4 point on
+ * opposite sides at mid-height (angles 0 and pi + offset): theta = (arg(zeta - zeta_a) -
+ * arg(zeta - zeta_b)) / 4 in zeta = exp(i (s + i z)), the tube's conformal image, plus a slow
+ * turn along the tube that brings both ends back onto the circles. Merging the pair along one
+ * side leaves a field that follows the circles at both ends; along the other side, one that
+ * turns a quarter between them, and then no grid has both circles on grid lines.
+ * @param[in] normal #F x 3 unit triangle normals
+ * @return #F x 3 unit tangent frames
+ */
+inline Eigen::MatrixX3d twistTubeFrames(
+  const Surface& tube, const Eigen::MatrixX3d& normal, double offset)
+{
+  constexpr double Pi = 3.14159265358979323846;
+  const double angleA = 0.0, angleB = Pi + offset;
+  const std::complex<double> zetaA = std::polar(1.0, angleA), zetaB = std::polar(1.0, angleB);
+  Eigen::MatrixX3d U(tube.F.rows(), 3);
+  for (int f = 0; f < tube.F.rows(); ++f)
+  {
+    const Eigen::Vector3d c =
+      (tube.V.row(tube.F(f, 0)) + tube.V.row(tube.F(f, 1)) + tube.V.row(tube.F(f, 2))) / 3.0;
+    const double angle = std::atan2(c.y(), c.x());
+    const std::complex<double> zeta = std::polar(std::exp(-c.z()), angle);
+    const double ramp = 0.5 + 0.5 * std::tanh(c.z());
+    const double theta =
+      0.25 * (std::arg(zeta - zetaA) - std::arg(zeta - zetaB)) + 0.25 * (angleB - angleA) * ramp;
+    const Eigen::Vector3d around(-std::sin(angle), std::cos(angle), 0.0);
+    const Eigen::Vector3d axis(0.0, 0.0, 1.0);
+    const Eigen::Vector3d n = normal.row(f);
+    const Eigen::Vector3d u = std::cos(theta) * around + std::sin(theta) * axis;
+    U.row(f) = (u - u.dot(n) * n).normalized();
+  }
+  return U;
 }
 }
 

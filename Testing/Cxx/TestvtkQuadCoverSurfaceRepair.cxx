@@ -1,0 +1,211 @@
+// vtkQuadCoverSurfaceRepair: every repair it counts, on surfaces made to need it; what it keeps
+// (the input's point and cell data); what it refuses, as one error.
+#include "vtkCellArray.h"
+#include "vtkCellData.h"
+#include "vtkCurvatureFrames.h"
+#include "vtkDoubleArray.h"
+#include "vtkFieldData.h"
+#include "vtkNew.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkQuadCoverArrayNames.h"
+#include "vtkQuadCoverEigen.h"
+#include "vtkQuadCoverErrorObserver.h"
+#include "vtkQuadCoverSurfaceRepair.h"
+
+#include "MeshTopology.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <initializer_list>
+#include <limits>
+#include <vector>
+
+namespace names = vtkQuadCoverArrayNames;
+
+namespace
+{
+/// A polydata from points and cells (each cell a list of point ids, put with `kind`).
+vtkSmartPointer<vtkPolyData> Make(const std::vector<std::vector<double>>& points,
+  const std::vector<std::vector<vtkIdType>>& cells, const char* kind = "polys")
+{
+  vtkNew<vtkPoints> p;
+  for (const auto& x : points)
+  {
+    p->InsertNextPoint(x[0], x[1], x[2]);
+  }
+  vtkNew<vtkCellArray> c;
+  for (const auto& ids : cells)
+  {
+    c->InsertNextCell(static_cast<vtkIdType>(ids.size()), ids.data());
+  }
+  auto pd = vtkSmartPointer<vtkPolyData>::New();
+  pd->SetPoints(p);
+  if (std::string(kind) == "strips")
+    pd->SetStrips(c);
+  else if (std::string(kind) == "lines")
+    pd->SetLines(c);
+  else
+    pd->SetPolys(c);
+  return pd;
+}
+
+struct Repaired
+{
+  vtkSmartPointer<vtkPolyData> output;
+  std::string error;
+  double Count(const char* name) const
+  {
+    vtkDataArray* a = this->output->GetFieldData()->GetArray(name);
+    return a ? a->GetTuple1(0) : std::nan("");
+  }
+};
+
+Repaired Repair(vtkPolyData* input)
+{
+  vtkNew<vtkQuadCoverSurfaceRepair> repair;
+  vtkNew<vtkQuadCoverErrorObserver> errors;
+  errors->Attach(repair);
+  repair->SetInputData(input);
+  repair->Update();
+  return { repair->GetOutput(), errors->GetError() };
+}
+
+quadcover::MeshTopology Topology(vtkPolyData* pd)
+{
+  return quadcover::buildTopology(
+    vtkQuadCoverEigen::Triangles(pd), static_cast<int>(pd->GetNumberOfPoints()));
+}
+}
+
+TEST(vtkQuadCoverSurfaceRepair, MergesTriangulatesAndOrientsKeepingTheData)
+{
+  // Two unit squares side by side whose shared edge repeats its points (as OBJ files repeat a
+  // point per texture coordinate), and a triangle on top facing the other way.
+  vtkSmartPointer<vtkPolyData> in =
+    Make({ { 0, 0, 0 }, { 1, 0, 0 }, { 1, 1, 0 }, { 0, 1, 0 }, { 1, 0, 0 }, { 2, 0, 0 },
+           { 2, 1, 0 }, { 1, 1, 0 }, { 0, 2, 0 } },
+      { { 0, 1, 2, 3 }, { 4, 5, 6, 7 }, { 2, 3, 8 } });
+  vtkNew<vtkDoubleArray> label;
+  label->SetName("Label");
+  for (double v : { 10.0, 20.0, 30.0 })
+  {
+    label->InsertNextValue(v);
+  }
+  in->GetCellData()->AddArray(label);
+  const Repaired r = Repair(in);
+  ASSERT_EQ(r.error, "");
+  EXPECT_EQ(r.Count(names::MergedPoints), 2);
+  EXPECT_EQ(r.Count(names::TriangulatedPolygons), 2);
+  EXPECT_EQ(r.Count(names::ReorientedTriangles), 1);
+  EXPECT_EQ(r.Count(names::SplitVertices), 0);
+  EXPECT_EQ(r.Count(names::RemovedCells), 0);
+  EXPECT_EQ(r.output->GetNumberOfPoints(), 7);
+  ASSERT_EQ(r.output->GetNumberOfPolys(), 5);
+  const quadcover::MeshTopology topo = Topology(r.output);
+  EXPECT_TRUE(topo.isManifold());
+  EXPECT_TRUE(topo.isOriented());
+  EXPECT_EQ(topo.eulerCharacteristic(), 1); // a disk
+  // the cell data followed the triangles: two of each square's label, one of the triangle's
+  vtkDataArray* kept = r.output->GetCellData()->GetArray("Label");
+  ASSERT_NE(kept, nullptr);
+  double sum = 0.0;
+  for (vtkIdType c = 0; c < kept->GetNumberOfTuples(); ++c)
+  {
+    sum += kept->GetTuple1(c);
+  }
+  EXPECT_EQ(sum, 2 * 10 + 2 * 20 + 30);
+  EXPECT_EQ(r.output->GetCellData()->GetArray("Normals"), nullptr) << "no by-product";
+  // the five stages take it as it is
+  vtkNew<vtkCurvatureFrames> curvature;
+  vtkNew<vtkQuadCoverErrorObserver> errors;
+  errors->Attach(curvature);
+  curvature->SetInputData(r.output);
+  curvature->Update();
+  EXPECT_EQ(errors->GetError(), "");
+}
+
+TEST(vtkQuadCoverSurfaceRepair, SplitsBowtiesWithTheirPointData)
+{
+  vtkSmartPointer<vtkPolyData> in =
+    Make({ { 0, 0, 0 }, { 1, 0, 0 }, { 0, 1, 0 }, { -1, 0, 0 }, { 0, -1, 0 } },
+      { { 0, 1, 2 }, { 0, 3, 4 } });
+  vtkNew<vtkDoubleArray> height;
+  height->SetName("Height");
+  for (double v : { 7.0, 1.0, 2.0, 3.0, 4.0 })
+  {
+    height->InsertNextValue(v);
+  }
+  in->GetPointData()->AddArray(height);
+  const Repaired r = Repair(in);
+  ASSERT_EQ(r.error, "");
+  EXPECT_EQ(r.Count(names::SplitVertices), 1);
+  ASSERT_EQ(r.output->GetNumberOfPoints(), 6);
+  EXPECT_TRUE(Topology(r.output).nonManifoldVertices.empty());
+  vtkDataArray* h = r.output->GetPointData()->GetArray("Height");
+  ASSERT_NE(h, nullptr);
+  int copiesOfTheCentre = 0;
+  for (vtkIdType p = 0; p < r.output->GetNumberOfPoints(); ++p)
+  {
+    double x[3];
+    r.output->GetPoint(p, x);
+    if (x[0] == 0 && x[1] == 0)
+    {
+      ++copiesOfTheCentre;
+      EXPECT_EQ(h->GetTuple1(p), 7.0);
+    }
+  }
+  EXPECT_EQ(copiesOfTheCentre, 2);
+}
+
+TEST(vtkQuadCoverSurfaceRepair, StripJoinsVerticesAndLinesAreRemoved)
+{
+  // A strip of four points, a repeated point (two degenerate joins), then four more.
+  vtkSmartPointer<vtkPolyData> in = Make({ { 0, 0, 0 }, { 1, 0, 0 }, { 0, 1, 0 }, { 1, 1, 0 },
+                                           { 3, 0, 0 }, { 4, 0, 0 }, { 3, 1, 0 }, { 4, 1, 0 } },
+    { { 0, 1, 2, 3, 3, 4, 4, 5, 6, 7 } }, "strips");
+  vtkNew<vtkCellArray> lines;
+  const vtkIdType line[2] = { 0, 1 };
+  lines->InsertNextCell(2, line);
+  in->SetLines(lines);
+  vtkNew<vtkCellArray> verts;
+  const vtkIdType vert = 5;
+  verts->InsertNextCell(1, &vert);
+  in->SetVerts(verts);
+  const Repaired r = Repair(in);
+  ASSERT_EQ(r.error, "");
+  EXPECT_EQ(r.output->GetNumberOfPolys(), 4);
+  EXPECT_EQ(r.output->GetNumberOfLines() + r.output->GetNumberOfVerts(), 0);
+  EXPECT_EQ(r.Count(names::TriangulatedPolygons), 1);
+  EXPECT_EQ(r.Count(names::RemovedCells), 2 + 4); // the line, the vertex, four strip joins
+}
+
+TEST(vtkQuadCoverSurfaceRepair, RefusesWhatItCannotRepair)
+{
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  struct Case
+  {
+    vtkSmartPointer<vtkPolyData> input;
+    const char* reason;
+  };
+  const std::vector<Case> cases = {
+    { vtkSmartPointer<vtkPolyData>::New(), "no points" },
+    { Make({ { 0, 0, 0 }, { 1, 0, 0 } }, { { 0, 1 } }, "lines"), "no polygons" },
+    { Make({ { 0, 0, 0 }, { 1, 0, 0 }, { 0, 1, 0 } }, { { 0, 1, 7 } }), "refers to point 7" },
+    { Make({ { 0, 0, 0 }, { 1, 0, 0 }, { nan, 1, 0 } }, { { 0, 1, 2 } }), "non-finite" },
+    { Make({ { 0, 0, 0 }, { 1, 0, 0 }, { 0, 0, 0 } }, { { 0, 1, 2 } }), "three distinct points" },
+    { Make({ { 0, 0, 0 }, { 1, 0, 0 }, { 0, 1, 0 }, { 0, 0, 1 }, { 0, 0, -1 } },
+        { { 0, 1, 2 }, { 1, 0, 3 }, { 0, 1, 4 } }),
+      "1 non-manifold edges" },
+  };
+  for (const Case& c : cases)
+  {
+    const Repaired r = Repair(c.input);
+    EXPECT_EQ(r.error.rfind("Cannot repair the surface: ", 0), 0u) << r.error;
+    EXPECT_NE(r.error.find(c.reason), std::string::npos) << r.error;
+    EXPECT_EQ(r.error.find('\n'), std::string::npos) << r.error;
+    EXPECT_EQ(r.output->GetNumberOfPoints(), 0) << c.reason;
+  }
+}
