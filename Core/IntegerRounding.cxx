@@ -36,7 +36,8 @@ Eigen::MatrixXd solveSpd(const SparseMatrix& A, const Eigen::MatrixXd& B, const 
 }
 
 /// factor.S: the integer block of H^-1, column block by column block.
-void integerBlockOfInverse(const SeamlessSystem& sys, HessianFactor& factor)
+void integerBlockOfInverse(
+  const SeamlessSystem& sys, HessianFactor& factor, const Progress& progress)
 {
   const int n = sys.numColumns();
   const int numInteger = sys.numInteger;
@@ -44,6 +45,7 @@ void integerBlockOfInverse(const SeamlessSystem& sys, HessianFactor& factor)
   constexpr int Block = 64; // right-hand sides per solve (bounded memory)
   for (int c = 0; c < numInteger; c += Block)
   {
+    progress.report(static_cast<double>(c) / numInteger);
     const int k = std::min(Block, numInteger - c);
     Eigen::MatrixXd E = Eigen::MatrixXd::Zero(n, k);
     for (int j = 0; j < k; ++j)
@@ -204,8 +206,8 @@ void condition(Eigen::MatrixXd& S, Eigen::VectorXd& xi, int j, double value)
 }
 }
 
-Eigen::VectorXd solveContinuous(
-  const SeamlessSystem& sys, bool greedy, HessianFactor& factor, Parameterization& out)
+Eigen::VectorXd solveContinuous(const SeamlessSystem& sys, bool greedy, HessianFactor& factor,
+  Parameterization& out, const Progress& progress)
 {
   const auto start = std::chrono::steady_clock::now();
   const int n = sys.numColumns();
@@ -217,13 +219,15 @@ Eigen::VectorXd solveContinuous(
     {
       throw std::runtime_error("the Poisson system could not be factored");
     }
+    progress.report(greedy ? 0.4 : 0.9);
     x = factor.solver.solve(Eigen::VectorXd(sys.P.transpose() * (sys.D.transpose() * sys.rhs)));
     if (greedy)
     {
-      integerBlockOfInverse(sys, factor);
+      integerBlockOfInverse(sys, factor, progress.part(0.45, 1.0));
     }
   }
   out.solveSeconds.push_back(seconds(start));
+  progress.report(1.0);
   return x;
 }
 
@@ -257,7 +261,8 @@ void correctEdgeLength(
 // the others exactly (x -= S_j (x_j - c_j) / S_jj, S -= S_j S_j^T / S_jj with S the integer
 // block of H^-1), which is the re-solve with the same factorization.
 Eigen::VectorXd roundIntegers(const Inputs& in, const Field& field, const SeamlessSystem& sys,
-  const Eigen::VectorXd& x, const HessianFactor& factor, bool greedy, Parameterization& out)
+  const Eigen::VectorXd& x, const HessianFactor& factor, bool greedy, Parameterization& out,
+  const Progress& progress)
 {
   const int numInteger = sys.numInteger;
   Eigen::VectorXd xi = x.tail(numInteger);
@@ -267,6 +272,7 @@ Eigen::VectorXd roundIntegers(const Inputs& in, const Field& field, const Seamle
   Eigen::VectorXd values = xi.array().round().matrix();
   for (int step = 0; step < numInteger; ++step)
   {
+    reportEvery(progress, step, numInteger);
     // Simple: in order, each from the continuous minimizer
     const int best = greedy ? closestToInteger(xi, fixed, step) : step;
     // the nearest integer, or the next nearest when the nearest collapses a pair
@@ -283,6 +289,7 @@ Eigen::VectorXd roundIntegers(const Inputs& in, const Field& field, const Seamle
       condition(S, xi, best, value);
     }
   }
+  progress.report(1.0);
   return values;
 }
 

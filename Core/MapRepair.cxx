@@ -42,8 +42,8 @@ Eigen::VectorXd areaRoots(const Eigen::VectorXd& faceArea)
 class MapRepair
 {
 public:
-  MapRepair(
-    const Inputs& in, const Field& field, const SeamlessSystem& sys, const Parameterization& out)
+  MapRepair(const Inputs& in, const Field& field, const SeamlessSystem& sys,
+    const Parameterization& out, const Progress& progress)
     : in_(in)
     , field_(field)
     , sys_(sys)
@@ -51,6 +51,7 @@ public:
     , Dr_(sys.D)
     , sqrtArea_(areaRoots(sys.faceArea))
     , untangler_{ Dr_, sys.D, sqrtArea_, out.edgeLength, sys.numReal }
+    , progress_(progress)
   {}
 
   /// Three attempts: the fans wound the wrong way are laid out again (cones first, then in
@@ -131,13 +132,13 @@ private:
   /// any are left, the frozen unknowns held; xs (symbols) and x (columns) move together.
   /// Returns the number of neighbourhoods untangled.
   int untangleRings(int maxRings, Eigen::VectorXd& xs, Eigen::VectorXd& x,
-    std::vector<int>& flipped, const std::vector<char>& frozen) const
+    std::vector<int>& flipped, const std::vector<char>& frozen)
   {
     int regions = 0;
     for (int rings = 2; rings <= maxRings && !flipped.empty(); rings *= 2)
     {
-      untangler_.run(
-        in_.topo, in_.F, flipped, rings, in_.options.maximumUntangleRounds, xs, frozen);
+      untangler_.run(in_.topo, in_.F, flipped, rings, in_.options.maximumUntangleRounds, xs, frozen,
+        halving(progress_, runs_++));
       ++regions;
       x.head(sys_.numReal) = xs.head(sys_.numReal);
       flipped = flippedIn(x);
@@ -243,6 +244,10 @@ private:
   const Eigen::VectorXd sqrtArea_;
   const Untangler untangler_; // in symbols: only the real ones move, and they are the real columns
   Snapshot firstHeld_;
+  /// How many untangling runs there will be is not known beforehand: run k of the repair gets
+  /// the part halving(progress_, k).
+  const Progress progress_;
+  int runs_ = 0;
 };
 }
 
@@ -274,14 +279,14 @@ std::vector<int> wrongWindings(
 }
 
 void repairMap(const Inputs& in, const Field& field, const SeamlessSystem& sys, Eigen::VectorXd& x,
-  Defects& defects, Parameterization& out)
+  Defects& defects, Parameterization& out, const Progress& progress)
 {
   if (defects.count() == 0 || in.options.maximumUntangleRounds <= 0)
   {
     return;
   }
   const auto started = std::chrono::steady_clock::now();
-  MapRepair repair(in, field, sys, out);
+  MapRepair repair(in, field, sys, out, progress);
   // kept in case the repair leaves more flipped triangles and wrong fans than it found
   const Eigen::VectorXd before = x;
   const Defects found = defects;
@@ -304,6 +309,7 @@ void repairMap(const Inputs& in, const Field& field, const SeamlessSystem& sys, 
     defects = found;
   }
   out.untangleSeconds = seconds(started);
+  progress.report(1.0);
 }
 }
 }

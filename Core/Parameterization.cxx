@@ -144,19 +144,22 @@ Parameterization computeParameterization(const Eigen::MatrixX3d& V, const Eigen:
   // ---- the surface cut open through the singular points, the frames combed off the cut ----
   const Field field = evaluateField(in);
   cutThroughSingularities(in, field, out);
+  progress.report(0.03);
   combFrames(in, out);
   cutIntoSectors(in, out);
+  progress.report(0.04);
 
   // ---- the seamless system: unknowns, constraints eliminated, the energy ----
-  Eliminator elim = constrainUnknowns(in, field, out);
+  Eliminator elim = constrainUnknowns(in, field, out, progress.part(0.04, 0.07));
   SeamlessSystem sys = numberUnknowns(elim, out);
-  assembleEnergy(in, field, out, sys);
+  progress.report(0.08);
+  assembleEnergy(in, field, out, sys, progress.part(0.08, 0.22));
 
   // ---- the continuous minimizer, and the edge length corrected by the map's area ----
   const bool round = options.roundingMode != RoundingMode::None && sys.numInteger > 0;
   const bool greedy = round && options.roundingMode == RoundingMode::Greedy;
   HessianFactor factor;
-  Eigen::VectorXd x = solveContinuous(sys, greedy, factor, out);
+  Eigen::VectorXd x = solveContinuous(sys, greedy, factor, out, progress.part(0.22, 0.5));
   correctEdgeLength(in, sys, x, out);
   out.energyContinuous = sys.energy(x);
   out.flippedContinuous = static_cast<int>(flippedFaces(sys.uv(x), out.cornerSector).size());
@@ -164,9 +167,11 @@ Parameterization computeParameterization(const Eigen::MatrixX3d& V, const Eigen:
   // ---- the integer unknowns rounded, the real ones solved again with them fixed ----
   if (round)
   {
-    const Eigen::VectorXd integers = roundIntegers(in, field, sys, x, factor, greedy, out);
+    const Eigen::VectorXd integers =
+      roundIntegers(in, field, sys, x, factor, greedy, out, progress.part(0.5, 0.57));
     solveWithIntegersFixed(sys, factor, integers, greedy, x, out);
   }
+  progress.report(0.6);
   out.energyRounded = sys.energy(x);
   Defects defects;
   defects.flipped = flippedFaces(sys.uv(x), out.cornerSector);
@@ -174,7 +179,7 @@ Parameterization computeParameterization(const Eigen::MatrixX3d& V, const Eigen:
 
   // ---- flipped triangles untangled, fans wound the wrong way laid out again ----
   defects.wrong = wrongWindings(in, field, out, sys.uv(x));
-  repairMap(in, field, sys, x, defects, out);
+  repairMap(in, field, sys, x, defects, out, progress.part(0.6, 0.98));
   out.wrongWindings = static_cast<int>(defects.wrong.size());
   out.flipped = static_cast<int>(defects.flipped.size());
   out.energyFinal = sys.energy(x);
@@ -183,6 +188,7 @@ Parameterization computeParameterization(const Eigen::MatrixX3d& V, const Eigen:
   storeMap(in, sys, x, out);
   measureSeams(in, out);
   countBranchPointsOnGrid(field, out);
+  progress.report(1.0);
   return out;
 }
 

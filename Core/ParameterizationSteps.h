@@ -7,6 +7,7 @@
 #include "Matchings.h"
 #include "MeshTopology.h"
 #include "Parameterization.h"
+#include "Progress.h"
 #include "SparseSolver.h"
 
 #include <Eigen/Core>
@@ -14,6 +15,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstddef>
 #include <vector>
 
@@ -28,6 +30,22 @@ using SparseMatrix = Eigen::SparseMatrix<double>;
 inline double seconds(std::chrono::steady_clock::time_point since)
 {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - since).count();
+}
+
+/// Reports i / n done about every 1% of a loop over n items (cheap on every iteration).
+inline void reportEvery(const Progress& progress, int i, int n)
+{
+  if (i % std::max(1, n / 100) == 0)
+  {
+    progress.report(static_cast<double>(i) / n);
+  }
+}
+
+/// The part of `progress` for step i = 0, 1, ... of a sequence that may stop at any step: half
+/// of what is left.
+inline Progress halving(const Progress& progress, int i)
+{
+  return progress.part(1.0 - std::ldexp(1.0, -i), 1.0 - std::ldexp(1.0, -i - 1));
 }
 
 /// What computeParameterization was given.
@@ -125,7 +143,8 @@ struct SeamlessSystem
 /// constraints among them, eliminated: the cut's transition functions, boundary edges on grid
 /// lines, one pinned point per component. Sets out.alignedBoundaryEdges, constraints and
 /// nonUnitPivots.
-Eliminator constrainUnknowns(const Inputs& in, const Field& field, Parameterization& out);
+Eliminator constrainUnknowns(
+  const Inputs& in, const Field& field, Parameterization& out, const Progress& progress);
 
 /// The columns and symbols of the unknowns left (numReal, numInteger, sectorExpr,
 /// symbolColumns, P); sets out.unknowns and integerUnknowns.
@@ -133,8 +152,8 @@ SeamlessSystem numberUnknowns(Eliminator& elim, Parameterization& out);
 
 /// The energy sum_f A_f |grad phi - K_f|^2 with K_f the combed frame / edgeLength: sys.D, H,
 /// rhs, faceArea, energyNorm.
-void assembleEnergy(
-  const Inputs& in, const Field& field, const Parameterization& out, SeamlessSystem& sys);
+void assembleEnergy(const Inputs& in, const Field& field, const Parameterization& out,
+  SeamlessSystem& sys, const Progress& progress);
 
 /// Twice the signed (u, v) area of face f.
 inline double twiceUVArea(const Eigen::MatrixX2d& uv, const std::vector<int>& cornerSector, int f)
@@ -159,8 +178,8 @@ struct HessianFactor
 
 /// The continuous minimizer (#columns), with H factored into `factor` (and S for greedy).
 /// @throws std::runtime_error when the factorization fails
-Eigen::VectorXd solveContinuous(
-  const SeamlessSystem& sys, bool greedy, HessianFactor& factor, Parameterization& out);
+Eigen::VectorXd solveContinuous(const SeamlessSystem& sys, bool greedy, HessianFactor& factor,
+  Parameterization& out, const Progress& progress);
 
 /// For ParameterizationOptions::targetQuadCount: scales the continuous minimizer (and the
 /// right-hand side, energy scale and out.edgeLength) so that the map covers about that many
@@ -171,7 +190,8 @@ void correctEdgeLength(
 /// The integer unknowns' values (numInteger), rounded from the continuous minimizer x, greedy
 /// (with exact conditioning through factor.S) or simple; sets out.separatedBranchPoints.
 Eigen::VectorXd roundIntegers(const Inputs& in, const Field& field, const SeamlessSystem& sys,
-  const Eigen::VectorXd& x, const HessianFactor& factor, bool greedy, Parameterization& out);
+  const Eigen::VectorXd& x, const HessianFactor& factor, bool greedy, Parameterization& out,
+  const Progress& progress);
 
 /// The minimizer x (#columns) with the integer unknowns fixed to `integers`.
 void solveWithIntegersFixed(const SeamlessSystem& sys, const HessianFactor& factor,
@@ -196,7 +216,7 @@ std::vector<int> wrongWindings(
 /// attempts and a held run), keeping x as it was when the repair leaves more defects than it
 /// found; updates `defects` and out.untangleRegions, untangleSeconds.
 void repairMap(const Inputs& in, const Field& field, const SeamlessSystem& sys, Eigen::VectorXd& x,
-  Defects& defects, Parameterization& out);
+  Defects& defects, Parameterization& out, const Progress& progress);
 }
 }
 

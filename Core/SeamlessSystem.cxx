@@ -15,7 +15,8 @@ namespace
 {
 /// z_B - i^r z_A - t_e = 0 at both ends of every cut edge (f = side A, g = side B), with a new
 /// integer translation t_e per cut edge.
-void constrainTransitions(const Inputs& in, const Parameterization& out, Eliminator& elim)
+void constrainTransitions(
+  const Inputs& in, const Parameterization& out, Eliminator& elim, const Progress& progress)
 {
   const MeshTopology& topo = in.topo;
   const int nV = in.numVertices();
@@ -33,6 +34,7 @@ void constrainTransitions(const Inputs& in, const Parameterization& out, Elimina
   }
   for (int p = 0; p < nV; ++p)
   {
+    reportEvery(progress, p, nV);
     for (const int e : cutAt[p])
     {
       const int c0 = topo.edgeCorners(e, 0);
@@ -292,7 +294,8 @@ private:
 };
 }
 
-Eliminator constrainUnknowns(const Inputs& in, const Field& field, Parameterization& out)
+Eliminator constrainUnknowns(
+  const Inputs& in, const Field& field, Parameterization& out, const Progress& progress)
 {
   Eliminator elim;
   const int nS = static_cast<int>(out.sectorPoint.size());
@@ -302,11 +305,12 @@ Eliminator constrainUnknowns(const Inputs& in, const Field& field, Parameterizat
     elim.add(integer); // u = 2s
     elim.add(integer); // v = 2s + 1
   }
-  constrainTransitions(in, out, elim);
+  constrainTransitions(in, out, elim, progress.part(0.0, 0.9));
   const std::vector<char> onLine = alignToBoundary(in, field, out, elim);
   pinComponents(in, field, onLine, out, elim);
   out.constraints = elim.Constraints;
   out.nonUnitPivots = elim.NonUnitPivots;
+  progress.report(1.0);
   return elim;
 }
 
@@ -362,16 +366,20 @@ SeamlessSystem numberUnknowns(Eliminator& elim, Parameterization& out)
   return sys;
 }
 
-void assembleEnergy(
-  const Inputs& in, const Field& field, const Parameterization& out, SeamlessSystem& sys)
+void assembleEnergy(const Inputs& in, const Field& field, const Parameterization& out,
+  SeamlessSystem& sys, const Progress& progress)
 {
   EnergyAssembly assembly(in, field, out, sys);
   const int nF = in.numFaces();
+  const Progress rows = progress.part(0.0, 0.4);
   for (int f = 0; f < nF; ++f)
   {
+    reportEvery(rows, f, nF);
     assembly.addFace(f);
   }
+  progress.report(0.4);
   assembly.finish();
+  progress.report(1.0);
 }
 
 Eigen::MatrixX2d SeamlessSystem::uv(const Eigen::VectorXd& columns) const

@@ -66,6 +66,8 @@ public:
   {}
 
   int size() const { return static_cast<int>(columns_.size()); }
+  /// How often evaluate was called: the measure of the work done.
+  int evaluations() const { return evaluations_; }
 
   /// The free unknowns of a full map.
   Eigen::VectorXd restrictTo(const Eigen::VectorXd& full) const
@@ -90,6 +92,7 @@ public:
   /// The energy at y, and its gradient g.
   double evaluate(const Eigen::VectorXd& y, double eps, Eigen::VectorXd& g)
   {
+    ++evaluations_;
     scatter(y, full_);
     for (const int c : columns_)
     {
@@ -118,6 +121,7 @@ private:
   const std::vector<int> faces_;
   Eigen::VectorXd full_;
   Eigen::VectorXd gradFull_;
+  int evaluations_ = 0;
 };
 
 /// The L-BFGS direction for gradient g from the pairs (S, Y) (the two-loop recursion).
@@ -145,7 +149,7 @@ Eigen::VectorXd lbfgsDirection(const std::vector<Eigen::VectorXd>& S,
 
 /// Minimizes the energy (with eps fixed) from y: L-BFGS, 8 pairs, Armijo backtracking, at most
 /// 200 iterations. Returns the energy at the new y.
-double minimize(LocalEnergy& energy, Eigen::VectorXd& y, double eps)
+double minimize(LocalEnergy& energy, Eigen::VectorXd& y, double eps, const Progress& progress)
 {
   constexpr int Iterations = 200;
   std::vector<Eigen::VectorXd> S, Y;
@@ -153,6 +157,9 @@ double minimize(LocalEnergy& energy, Eigen::VectorXd& y, double eps)
   double e = energy.evaluate(y, eps, g);
   for (int it = 0; it < Iterations; ++it)
   {
+    // how many rounds and iterations it takes is not known beforehand: a fraction that
+    // approaches 1 with the evaluations done
+    progress.report(energy.evaluations() / (energy.evaluations() + 100.0));
     Eigen::VectorXd d = lbfgsDirection(S, Y, g);
     double slope = g.dot(d);
     if (!(slope < 0))
@@ -302,7 +309,7 @@ std::vector<int> Untangler::facesUsing(const std::vector<int>& columns) const
 
 void Untangler::run(const MeshTopology& topo, const Eigen::MatrixX3i& F,
   const std::vector<int>& flipped, int rings, int maxRounds, Eigen::VectorXd& x,
-  const std::vector<char>& frozen) const
+  const std::vector<char>& frozen, const Progress& progress) const
 {
   // free unknowns: the real ones the region's rows use; energy: every face they touch
   std::vector<int> columns = freeColumns(regionAround(topo, F, flipped, rings), frozen);
@@ -315,7 +322,7 @@ void Untangler::run(const MeshTopology& topo, const Eigen::MatrixX3i& F,
   {
     const double lowest = energy.minDet(y);
     const double eps = lowest < 0 ? std::sqrt(1e-8 + 0.04 * lowest * lowest) : 1e-8;
-    const double e = minimize(energy, y, eps);
+    const double e = minimize(energy, y, eps, progress);
     const double after = energy.minDet(y);
     if (after > 0 && previous - e <= 1e-3 * std::abs(e))
     {

@@ -4,6 +4,7 @@
 #define quadcover_Untangler_h
 
 #include "MeshTopology.h"
+#include "Progress.h"
 
 #include <Eigen/Core>
 #include <Eigen/Sparse>
@@ -42,9 +43,11 @@ struct Untangler
     Eigen::VectorXd* gradient) const;
 
   /// Untangles around `flipped` (faces), moving real unknowns not `frozen` (empty: none is);
-  /// callers recount the flips.
+  /// callers recount the flips. Reports once per L-BFGS iteration
+  /// (approaching 1, as the number of iterations is not known beforehand).
   void run(const MeshTopology& topo, const Eigen::MatrixX3i& F, const std::vector<int>& flipped,
-    int rings, int maxRounds, Eigen::VectorXd& x, const std::vector<char>& frozen) const;
+    int rings, int maxRounds, Eigen::VectorXd& x, const std::vector<char>& frozen,
+    const Progress& progress) const;
 
 private:
   /// The real unknowns (not frozen) that the rows of the faces in the region use, in order.
