@@ -120,6 +120,8 @@ struct Parameterization
  * @param[in] geometry computeFrameGeometry(V, F, topo)
  * @param[in] frameU   #F x 3 tangent frame directions (four-fold symmetric)
  * @param[in] matching #F x 3 in the convention of FrameTopology (vtkMatchingBuilder's Matching)
+ * @param[in] progress told after each step, and as the rounding and the untangling go on
+ * @throws Cancelled when progress's callback asks to stop
  * @throws std::invalid_argument on sizes that do not match, a non-manifold or misoriented
  *         surface, matchings that are not inverse across an edge, a negative target edge
  *         length, or a target edge length of 0 without a positive target quad count

@@ -75,6 +75,24 @@ double indexDeviation(const Chain& r)
   return worst;
 }
 
+/// The frames of c, whirled twice around the pole of a sphere (the matchings stay those of the
+/// smooth field): no map without a singularity there can follow, and the least-squares map folds.
+Eigen::MatrixX3d twistedFrames(const Chain& c)
+{
+  const Eigen::VectorXd phi = vectorAngles(c.geometry.bases, c.frameU);
+  Eigen::VectorXd twisted = phi;
+  const Eigen::Vector3d centre(0.0, 0.0, 1.0);
+  for (int f = 0; f < c.s.F.rows(); ++f)
+  {
+    const Eigen::Vector3d p = c.s.V.row(c.s.F(f, 0));
+    if ((p - centre).norm() < 0.25)
+    {
+      twisted[f] += 2.0 * std::atan2(p.y(), p.x());
+    }
+  }
+  return angleVectors(c.geometry.bases, twisted);
+}
+
 /// windings: also require every point's index kept (not for fields whose frames disagree with
 /// their matchings on purpose)
 void expectIntegerGridMap(const Chain& r, const std::string& name, bool windings = true)
@@ -348,18 +366,7 @@ TEST(Parameterization, TwistedFramesFoldTheMapAndUntanglingUnfoldsIt)
   // and the least-squares map folds. Untangling must leave
   // no flipped triangle, keep the seams and the branch points where they were.
   Chain c = runChain(testSurface("sphere"), 1000);
-  const Eigen::VectorXd phi = vectorAngles(c.geometry.bases, c.frameU);
-  Eigen::VectorXd twisted = phi;
-  const Eigen::Vector3d centre(0.0, 0.0, 1.0);
-  for (int f = 0; f < c.s.F.rows(); ++f)
-  {
-    const Eigen::Vector3d p = c.s.V.row(c.s.F(f, 0));
-    if ((p - centre).norm() < 0.25)
-    {
-      twisted[f] += 2.0 * std::atan2(p.y(), p.x());
-    }
-  }
-  const Eigen::MatrixX3d U = angleVectors(c.geometry.bases, twisted);
+  const Eigen::MatrixX3d U = twistedFrames(c);
   ParameterizationOptions options;
   options.targetEdgeLength = c.map.edgeLength;
   options.maximumUntangleRounds = 0;
@@ -450,7 +457,8 @@ TEST(Parameterization, BranchPointsOfOneTriangleNeverShareAGridPoint)
   ASSERT_EQ(c.field.layerShift[a], 0);
   ASSERT_EQ(c.field.layerShift[path[0]], 1);
   ParameterizationOptions options;
-  options.targetEdgeLength = c.map.edgeLength * 2.0; // about 50 quads: one grid cell spans several edges
+  options.targetEdgeLength =
+    c.map.edgeLength * 2.0; // about 50 quads: one grid cell spans several edges
   c.map = computeParameterization(c.s.V, c.s.F, c.topo, c.geometry, c.frameU, M, options);
   EXPECT_GT(c.map.separatedBranchPoints, 0) << "the two should have met at one grid point";
   EXPECT_EQ(seamViolations(c), 0);
@@ -601,4 +609,76 @@ TEST(Parameterization, NoMergeTwistsATubeBetweenItsBoundaryLoops)
     EXPECT_EQ(checks::seamViolations(tube.F, topo, map.cornerUV), 0);
   }
   EXPECT_GT(avoided, 0) << "one of the two sides twists";
+}
+
+TEST(Parameterization, ReportsItsProgressWithoutChangingTheMap)
+{
+  const Chain c = runChain(testSurface("roundedcube"), 1000);
+  ParameterizationOptions options;
+  options.targetEdgeLength = c.map.edgeLength; // as runChain computed c.map
+  std::vector<double> fractions;
+  const Progress recording([&](double fraction) {
+    fractions.push_back(fraction);
+    return true;
+  });
+  const Parameterization map = computeParameterization(
+    c.s.V, c.s.F, c.topo, c.geometry, c.frameU, c.field.matching, options, recording);
+  ASSERT_GT(fractions.size(), 10u);
+  EXPECT_EQ(fractions.front(), 0.0);
+  EXPECT_EQ(fractions.back(), 1.0);
+  for (std::size_t i = 0; i < fractions.size(); ++i)
+  {
+    EXPECT_GE(fractions[i], 0.0);
+    EXPECT_LE(fractions[i], 1.0);
+    if (i > 0)
+    {
+      EXPECT_GE(fractions[i], fractions[i - 1]) << "report " << i;
+    }
+  }
+  EXPECT_TRUE(map.cornerUV == c.map.cornerUV) << "the map with reports is the map without";
+  EXPECT_EQ(map.edgeLength, c.map.edgeLength);
+  EXPECT_EQ(map.energyFinal, c.map.energyFinal);
+}
+
+TEST(Parameterization, StopsWhenCancelled)
+{
+  const Chain c = runChain(testSurface("roundedcube"), 1000);
+  int calls = 0;
+  const Progress cancelling([&](double) { return ++calls < 4; });
+  EXPECT_THROW(computeParameterization(c.s.V, c.s.F, c.topo, c.geometry, c.frameU, c.field.matching,
+                 ParameterizationOptions(), cancelling),
+    Cancelled);
+  EXPECT_EQ(calls, 4) << "stopped at the first report that said so";
+}
+
+TEST(Parameterization, ReportsAndStopsWhileUntangling)
+{
+  // The twisted sphere folds, so most of the work is the untangling (from 0.6 of the way on):
+  // it reports as it goes, and a request to stop there is heeded.
+  const Chain c = runChain(testSurface("sphere"), 1000);
+  const Eigen::MatrixX3d U = twistedFrames(c);
+  ParameterizationOptions options;
+  options.targetEdgeLength = c.map.edgeLength;
+  std::vector<double> fractions;
+  const Progress recording([&](double fraction) {
+    fractions.push_back(fraction);
+    return true;
+  });
+  const Parameterization map = computeParameterization(
+    c.s.V, c.s.F, c.topo, c.geometry, U, c.field.matching, options, recording);
+  ASSERT_GT(map.untangleRegions, 0);
+  const auto untangling =
+    std::count_if(fractions.begin(), fractions.end(), [](double f) { return f > 0.6 && f < 0.98; });
+  EXPECT_GT(untangling, 10);
+  EXPECT_TRUE(std::is_sorted(fractions.begin(), fractions.end()));
+  double last = 0.0;
+  const Progress cancelling([&](double fraction) {
+    last = fraction;
+    return fraction <= 0.65;
+  });
+  EXPECT_THROW(computeParameterization(
+                 c.s.V, c.s.F, c.topo, c.geometry, U, c.field.matching, options, cancelling),
+    Cancelled);
+  EXPECT_GT(last, 0.65);
+  EXPECT_LT(last, 0.98) << "stopped inside the untangling";
 }

@@ -1,0 +1,315 @@
+// MapRepair.cxx: the integer-grid map's flipped triangles untangled and its fans wound the wrong
+// way laid out again (the winding check, three untangling attempts and a held run).
+#include "ParameterizationSteps.h"
+
+#include "Untangler.h"
+
+#include <Eigen/Geometry>
+#include <Eigen/LU>
+
+#include <cmath>
+#include <utility>
+
+namespace quadcover
+{
+namespace param
+{
+namespace
+{
+/// The angle of the surface at corner k of face f.
+double cornerAngle(const Inputs& in, int f, int k)
+{
+  const Eigen::Vector3d a = in.V.row(in.F(f, (k + 1) % 3)) - in.V.row(in.F(f, k));
+  const Eigen::Vector3d b = in.V.row(in.F(f, (k + 2) % 3)) - in.V.row(in.F(f, k));
+  return std::atan2(a.cross(b).norm(), a.dot(b));
+}
+
+Eigen::VectorXd areaRoots(const Eigen::VectorXd& faceArea)
+{
+  Eigen::VectorXd sqrtArea = Eigen::VectorXd::Zero(faceArea.size());
+  for (Eigen::Index f = 0; f < faceArea.size(); ++f)
+  {
+    sqrtArea[f] = std::sqrt(std::max(0.0, faceArea[f]));
+  }
+  return sqrtArea;
+}
+
+/**
+ * The repair of one map. A least-squares map puts the extra quarter turn of a negative cone into
+ * one triangle, which flips; untangled the wrong way, the fan closes up into 90 degrees (index
+ * +3/4) next to a point wound twice. Such fans are laid out again before they are untangled.
+ */
+class MapRepair
+{
+public:
+  MapRepair(const Inputs& in, const Field& field, const SeamlessSystem& sys,
+    const Parameterization& out, const Progress& progress)
+    : in_(in)
+    , field_(field)
+    , sys_(sys)
+    , out_(out)
+    , Dr_(sys.D)
+    , sqrtArea_(areaRoots(sys.faceArea))
+    , untangler_{ Dr_, sys.D, sqrtArea_, out.edgeLength, sys.numReal }
+    , progress_(progress)
+  {}
+
+  /// Three attempts: the fans wound the wrong way are laid out again (cones first, then in
+  /// later attempts every point listed) and held while their surroundings untangle; then
+  /// everything untangles, those fans free again. Adds the neighbourhoods untangled to regions.
+  void attempts(Eigen::VectorXd& x, Defects& defects, int& regions)
+  {
+    Eigen::VectorXd xs = sys_.P * x;
+    for (int attempt = 0; attempt < 3 && defects.count() > 0; ++attempt)
+    {
+      // cones first: a point wound twice is usually the neighbour of a cone closed up into
+      // 90 degrees, and comes right with it
+      std::stable_sort(defects.wrong.begin(), defects.wrong.end(),
+        [&](int a, int b) { return isCone(a) > isCone(b); });
+      std::vector<char> frozen(xs.size(), 0);
+      for (const int p : defects.wrong)
+      {
+        if (isCone(p) || attempt > 0)
+        {
+          layOut(p, xs, frozen);
+        }
+      }
+      x.head(sys_.numReal) = xs.head(sys_.numReal);
+      // the new fans held first, so that their winding stays, then everything
+      if (!defects.wrong.empty())
+      {
+        defects.flipped = flippedIn(x);
+        untangleRings(8, xs, x, defects.flipped, frozen);
+      }
+      if (attempt == 0)
+      {
+        firstHeld_ = { xs, x, defects.flipped, frozen };
+      }
+      regions += untangleRings(16, xs, x, defects.flipped, {});
+      defects.wrong = wrongIn(x);
+    }
+  }
+
+  /// Freed, a fan laid out again can close up once more as its surroundings untangle (on fine
+  /// meshes a cone's fan is small against a grid cell); held, it cannot, though its
+  /// surroundings may then keep folds. This runs the first attempt again with its fans held
+  /// throughout; the run with fewer defects wins.
+  void heldRun(Eigen::VectorXd& x, Defects& defects, int& regions)
+  {
+    Snapshot& held = firstHeld_;
+    const int heldRegions = untangleRings(16, held.xs, held.xr, held.flipped, held.frozen);
+    std::vector<int> heldWrong = wrongIn(held.xr);
+    if (held.flipped.size() + heldWrong.size() < defects.count())
+    {
+      x = held.xr;
+      defects.flipped = held.flipped;
+      defects.wrong = std::move(heldWrong);
+      regions = heldRegions;
+    }
+  }
+
+private:
+  /// The state after the first attempt has laid out and held its fans, before everything
+  /// untangles: where the held run starts from.
+  struct Snapshot
+  {
+    Eigen::VectorXd xs, xr; // symbols, columns
+    std::vector<int> flipped;
+    std::vector<char> frozen;
+  };
+
+  bool isCone(int p) const { return field_.topology.layerShift[p] != 0; }
+  std::vector<int> flippedIn(const Eigen::VectorXd& x) const
+  {
+    return flippedFaces(sys_.uv(x), out_.cornerSector);
+  }
+  std::vector<int> wrongIn(const Eigen::VectorXd& x) const
+  {
+    return wrongWindings(in_, field_, out_, sys_.uv(x));
+  }
+
+  /// Untangles neighbourhoods of 2, 4, ... maxRings rings around the flipped triangles while
+  /// any are left, the frozen unknowns held; xs (symbols) and x (columns) move together.
+  /// Returns the number of neighbourhoods untangled.
+  int untangleRings(int maxRings, Eigen::VectorXd& xs, Eigen::VectorXd& x,
+    std::vector<int>& flipped, const std::vector<char>& frozen)
+  {
+    int regions = 0;
+    for (int rings = 2; rings <= maxRings && !flipped.empty(); rings *= 2)
+    {
+      untangler_.run(in_.topo, in_.F, flipped, rings, in_.options.maximumUntangleRounds, xs, frozen,
+        halving(progress_, runs_++));
+      ++regions;
+      x.head(sys_.numReal) = xs.head(sys_.numReal);
+      flipped = flippedIn(x);
+    }
+    return regions;
+  }
+
+  /// Lays the fan of p out again: ring points at their distance in grid units, the corner
+  /// angles at p the triangle's own scaled to add up to 2 pi (1 - index), turning with the
+  /// charts across cut edges. A ring point moves when its (u, v) are two real unknowns (a 2 x 2
+  /// system).
+  void layOut(int p, Eigen::VectorXd& xs, std::vector<char>& frozen) const
+  {
+    const MeshTopology& topo = in_.topo;
+    const int begin = topo.ringOffsets[p];
+    const int n = topo.ringOffsets[p + 1] - begin;
+    double total = 0.0;
+    for (int i = 0; i < n; ++i)
+    {
+      const int f = topo.ringFaces[begin + i];
+      total += cornerAngle(in_, f, MeshTopology::cornerOf(in_.F, f, p));
+    }
+    const double stretch = 2 * Pi * (1 - field_.topology.index[p]) / total;
+    if (!(stretch > 0))
+    {
+      return; // index 1 or more: no fan can close up around it
+    }
+    // the first face's edge from p to its next corner keeps its direction
+    int f = topo.ringFaces[begin];
+    int k = MeshTopology::cornerOf(in_.F, f, p);
+    const int s0 = out_.cornerSector[3 * f + k];
+    const int s1 = out_.cornerSector[3 * f + (k + 1) % 3];
+    double direction = std::atan2(sys_.sectorValue(xs, s1, 1) - sys_.sectorValue(xs, s0, 1),
+      sys_.sectorValue(xs, s1, 0) - sys_.sectorValue(xs, s0, 0));
+    for (int i = 0; i < n; ++i)
+    {
+      f = topo.ringFaces[begin + i];
+      k = MeshTopology::cornerOf(in_.F, f, p);
+      const int cone = out_.cornerSector[3 * f + k];
+      direction += stretch * cornerAngle(in_, f, k);
+      // place the face's other ring point (corner k + 2) in this face's chart
+      const Eigen::Vector3d b = in_.V.row(in_.F(f, (k + 2) % 3)) - in_.V.row(in_.F(f, k));
+      const double radius = b.norm() / out_.edgeLength;
+      const Eigen::Vector2d target(sys_.sectorValue(xs, cone, 0) + radius * std::cos(direction),
+        sys_.sectorValue(xs, cone, 1) + radius * std::sin(direction));
+      place(out_.cornerSector[3 * f + (k + 2) % 3], target, xs, frozen);
+      // into the next face's chart: the edge p -> ring turns with the chart across the edge
+      const int g = topo.faceNeighbors(f, (k + 2) % 3);
+      if (g >= 0)
+      {
+        direction += out_.combedMatching(f, (k + 2) % 3) * Pi / 2;
+      }
+    }
+  }
+
+  /// Moves sector `ring` to `target` where its (u, v) are two real symbols (or one, on a
+  /// boundary line: along it), and freezes them.
+  void place(
+    int ring, const Eigen::Vector2d& target, Eigen::VectorXd& xs, std::vector<char>& frozen) const
+  {
+    int sym[2] = { -1, -1 };
+    Eigen::Matrix2d M = Eigen::Matrix2d::Zero();
+    Eigen::Vector2d rest = target;
+    bool movable = true;
+    for (int c = 0; c < 2; ++c)
+    {
+      for (const auto& t : sys_.sectorExpr[2 * ring + c])
+      {
+        if (t.first >= sys_.numReal)
+        {
+          rest[c] -= t.second * xs[t.first];
+          continue;
+        }
+        int slot = sym[0] == t.first ? 0 : (sym[1] == t.first ? 1 : (sym[0] < 0 ? 0 : 1));
+        if (sym[slot] >= 0 && sym[slot] != t.first)
+        {
+          movable = false;
+        }
+        sym[slot] = t.first;
+        M(c, slot) += t.second;
+      }
+    }
+    if (movable && sym[0] >= 0 && sym[1] >= 0 && std::abs(M.determinant()) > 1e-9)
+    {
+      const Eigen::Vector2d solved = M.inverse() * rest;
+      xs[sym[0]] = solved[0];
+      xs[sym[1]] = solved[1];
+      frozen[sym[0]] = frozen[sym[1]] = 1;
+    }
+    else if (movable && sym[0] >= 0 && sym[1] < 0 && M.col(0).squaredNorm() > 1e-18)
+    {
+      // one coordinate on a boundary line: move along it
+      xs[sym[0]] = M.col(0).dot(rest) / M.col(0).squaredNorm();
+      frozen[sym[0]] = 1;
+    }
+  }
+
+  const Inputs& in_;
+  const Field& field_;
+  const SeamlessSystem& sys_;
+  const Parameterization& out_;
+  const Eigen::SparseMatrix<double, Eigen::RowMajor> Dr_;
+  const Eigen::VectorXd sqrtArea_;
+  const Untangler untangler_; // in symbols: only the real ones move, and they are the real columns
+  Snapshot firstHeld_;
+  /// How many untangling runs there will be is not known beforehand: run k of the repair gets
+  /// the part halving(progress_, k).
+  const Progress progress_;
+  int runs_ = 0;
+};
+}
+
+std::vector<int> wrongWindings(
+  const Inputs& in, const Field& field, const Parameterization& out, const Eigen::MatrixX2d& uv)
+{
+  const std::vector<int>& sector = out.cornerSector;
+  Eigen::VectorXd sum = Eigen::VectorXd::Zero(in.numVertices());
+  for (int f = 0; f < in.numFaces(); ++f)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      const Eigen::Vector2d z = uv.row(sector[3 * f + k]).transpose();
+      const Eigen::Vector2d a = uv.row(sector[3 * f + (k + 1) % 3]).transpose() - z;
+      const Eigen::Vector2d b = uv.row(sector[3 * f + (k + 2) % 3]).transpose() - z;
+      sum[in.F(f, k)] += std::atan2(a.x() * b.y() - a.y() * b.x(), a.dot(b));
+    }
+  }
+  std::vector<int> wrong;
+  for (int p = 0; p < in.numVertices(); ++p)
+  {
+    if (!in.topo.boundaryVertex[p] && in.topo.ringOrdered[p] &&
+      std::abs(sum[p] - 2 * Pi * (1 - field.topology.index[p])) > 1e-3)
+    {
+      wrong.push_back(p);
+    }
+  }
+  return wrong;
+}
+
+void repairMap(const Inputs& in, const Field& field, const SeamlessSystem& sys, Eigen::VectorXd& x,
+  Defects& defects, Parameterization& out, const Progress& progress)
+{
+  if (defects.count() == 0 || in.options.maximumUntangleRounds <= 0)
+  {
+    return;
+  }
+  const auto started = std::chrono::steady_clock::now();
+  MapRepair repair(in, field, sys, out, progress);
+  // kept in case the repair leaves more flipped triangles and wrong fans than it found
+  const Eigen::VectorXd before = x;
+  const Defects found = defects;
+  repair.attempts(x, defects, out.untangleRegions);
+  const std::size_t left = defects.count();
+  // (with no cone among the fans wound the wrong way nothing would be held: the held run would
+  // repeat the first attempt)
+  const bool cones = std::any_of(found.wrong.begin(), found.wrong.end(),
+    [&](int p) { return field.topology.layerShift[p] != 0; });
+  if (left > 0 && left <= 8 && cones)
+  {
+    // Only for a handful left: where many are, holding their fans blocks the untangling (spot
+    // refined 64 times: 20 wrong fans, and 50 s more for nothing). (The first attempt always
+    // ran: there were defects.)
+    repair.heldRun(x, defects, out.untangleRegions);
+  }
+  if (defects.count() > found.count())
+  {
+    x = before;
+    defects = found;
+  }
+  out.untangleSeconds = seconds(started);
+  progress.report(1.0);
+}
+}
+}

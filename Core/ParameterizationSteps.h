@@ -1,0 +1,223 @@
+// ParameterizationSteps.h: internal to Core: the steps of computeParameterization and the state
+// they share (the surface cut open, the seamless system, rounding, the repair of the map).
+#ifndef quadcover_ParameterizationSteps_h
+#define quadcover_ParameterizationSteps_h
+
+#include "Eliminator.h"
+#include "Matchings.h"
+#include "MeshTopology.h"
+#include "Parameterization.h"
+#include "Progress.h"
+#include "SparseSolver.h"
+
+#include <Eigen/Core>
+#include <Eigen/Sparse>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstddef>
+#include <vector>
+
+namespace quadcover
+{
+namespace param
+{
+constexpr double Pi = 3.14159265358979323846;
+
+using SparseMatrix = Eigen::SparseMatrix<double>;
+
+inline double seconds(std::chrono::steady_clock::time_point since)
+{
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - since).count();
+}
+
+/// Reports i / n done about every 1% of a loop over n items (cheap on every iteration).
+inline void reportEvery(const Progress& progress, int i, int n)
+{
+  if (i % std::max(1, n / 100) == 0)
+  {
+    progress.report(static_cast<double>(i) / n);
+  }
+}
+
+/// The part of `progress` for step i = 0, 1, ... of a sequence that may stop at any step: half
+/// of what is left.
+inline Progress halving(const Progress& progress, int i)
+{
+  return progress.part(1.0 - std::ldexp(1.0, -i), 1.0 - std::ldexp(1.0, -i - 1));
+}
+
+/// What computeParameterization was given.
+struct Inputs
+{
+  const Eigen::MatrixX3d& V;
+  const Eigen::MatrixX3i& F;
+  const MeshTopology& topo;
+  const FrameGeometry& geometry;
+  const Eigen::MatrixX3d& frameU;
+  const Eigen::MatrixX3i& matching;
+  const ParameterizationOptions& options;
+
+  int numFaces() const { return static_cast<int>(F.rows()); }
+  int numVertices() const { return static_cast<int>(V.rows()); }
+};
+
+/// The frame field as the steps read it.
+struct Field
+{
+  FrameTopology topology;   ///< evaluateMatchings: index and layer shift per point
+  std::vector<char> branch; ///< #V: 1 for an inner point with a non-zero layer shift
+  Eigen::VectorXd theta;    ///< #F: the frame's angle in the face basis, before combing
+};
+
+// ---- the surface cut open (CutSurface.cxx) ----
+
+/// The field's layer shifts, indices and angles.
+Field evaluateField(const Inputs& in);
+
+/// The cut graph through every singular point: out.cut, seamEdges, branchPoints.
+void cutThroughSingularities(const Inputs& in, const Field& field, Parameterization& out);
+
+/// Quarter turns so that matchings vanish across every edge off the cut: out.comb,
+/// combedMatching, seam.
+/// @throws std::logic_error when a matching off the cut remains (a singular point off the cut)
+void combFrames(const Inputs& in, Parameterization& out);
+
+/// The corners of a point between cut (or boundary) edges: out.cornerSector, sectorPoint.
+void cutIntoSectors(const Inputs& in, Parameterization& out);
+
+/// The sector of point p in face f.
+inline int sectorOf(const Eigen::MatrixX3i& F, const Parameterization& out, int f, int p)
+{
+  return out.cornerSector[3 * f + MeshTopology::cornerOf(F, f, p)];
+}
+
+// ---- the seamless system (SeamlessSystem.cxx) ----
+
+/**
+ * The map's unknowns after elimination and its energy. Columns are the unknowns left: the real
+ * ones (0 .. numReal - 1), then the integer ones. Symbols are what the sectors are written in:
+ * the real unknowns (the same as the real columns), then every integer unknown a sector refers
+ * to, eliminated or not; P maps symbols to columns (an eliminated integer unknown may be a long
+ * sum: a seam's translation sums the branch points beyond it).
+ */
+struct SeamlessSystem
+{
+  int numReal = 0;
+  int numInteger = 0;
+  std::vector<Expr> sectorExpr;    ///< 2 #S: u (2s) and v (2s + 1) of sector s, in symbols
+  std::vector<Expr> symbolColumns; ///< integer symbol numReal + k in columns, per k
+  SparseMatrix P;                  ///< #symbols x #columns
+  /// 4 #F x #symbols: sqrt(A) (grad u . x, grad u . y, grad v . x, grad v . y) per triangle
+  SparseMatrix D;
+  SparseMatrix H;           ///< #columns x #columns: P^T D^T D P
+  Eigen::VectorXd rhs;      ///< 4 #F: sqrt(A) times the combed frame (U', V') / edgeLength
+  Eigen::VectorXd faceArea; ///< #F: 0 for a degenerate triangle (left out of the energy)
+  double energyNorm = 0.0;  ///< 2 area / edgeLength^2: the energy's scale
+
+  int numColumns() const { return numReal + numInteger; }
+
+  /// Coordinate c (0: u, 1: v) of a sector, from the symbols' values.
+  double sectorValue(const Eigen::VectorXd& symbols, int sector, int c) const
+  {
+    double value = 0.0;
+    for (const auto& t : sectorExpr[2 * sector + c])
+    {
+      value += t.second * symbols[t.first];
+    }
+    return value;
+  }
+
+  /// #S x 2: the (u, v) of every sector, from the columns' values.
+  Eigen::MatrixX2d uv(const Eigen::VectorXd& columns) const;
+
+  /// sum A_f |grad phi - K|^2 / (area |K|^2) of the map given by the columns' values.
+  double energy(const Eigen::VectorXd& columns) const
+  {
+    return (D * (P * columns) - rhs).squaredNorm() / energyNorm;
+  }
+};
+
+/// The unknowns (u, v per sector, a translation per cut edge, boundary lines) and the linear
+/// constraints among them, eliminated: the cut's transition functions, boundary edges on grid
+/// lines, one pinned point per component. Sets out.alignedBoundaryEdges, constraints and
+/// nonUnitPivots.
+Eliminator constrainUnknowns(
+  const Inputs& in, const Field& field, Parameterization& out, const Progress& progress);
+
+/// The columns and symbols of the unknowns left (numReal, numInteger, sectorExpr,
+/// symbolColumns, P); sets out.unknowns and integerUnknowns.
+SeamlessSystem numberUnknowns(Eliminator& elim, Parameterization& out);
+
+/// The energy sum_f A_f |grad phi - K_f|^2 with K_f the combed frame / edgeLength: sys.D, H,
+/// rhs, faceArea, energyNorm.
+void assembleEnergy(const Inputs& in, const Field& field, const Parameterization& out,
+  SeamlessSystem& sys, const Progress& progress);
+
+/// Twice the signed (u, v) area of face f.
+inline double twiceUVArea(const Eigen::MatrixX2d& uv, const std::vector<int>& cornerSector, int f)
+{
+  const Eigen::Vector2d a = uv.row(cornerSector[3 * f]).transpose();
+  const Eigen::Vector2d b = uv.row(cornerSector[3 * f + 1]).transpose();
+  const Eigen::Vector2d c = uv.row(cornerSector[3 * f + 2]).transpose();
+  return (b - a).x() * (c - a).y() - (b - a).y() * (c - a).x();
+}
+
+/// The faces whose (u, v) area is not positive.
+std::vector<int> flippedFaces(const Eigen::MatrixX2d& uv, const std::vector<int>& cornerSector);
+
+// ---- solving and rounding (IntegerRounding.cxx) ----
+
+/// H factored once: the continuous solve, and the greedy rounding's conditioning and re-solve.
+struct HessianFactor
+{
+  SpdSolver<double> solver;
+  Eigen::MatrixXd S; ///< numInteger x numInteger: the integer block of H^-1 (greedy only)
+};
+
+/// The continuous minimizer (#columns), with H factored into `factor` (and S for greedy).
+/// @throws std::runtime_error when the factorization fails
+Eigen::VectorXd solveContinuous(const SeamlessSystem& sys, bool greedy, HessianFactor& factor,
+  Parameterization& out, const Progress& progress);
+
+/// For ParameterizationOptions::targetQuadCount: scales the continuous minimizer (and the
+/// right-hand side, energy scale and out.edgeLength) so that the map covers about that many
+/// unit cells.
+void correctEdgeLength(
+  const Inputs& in, SeamlessSystem& sys, Eigen::VectorXd& x, Parameterization& out);
+
+/// The integer unknowns' values (numInteger), rounded from the continuous minimizer x, greedy
+/// (with exact conditioning through factor.S) or simple; sets out.separatedBranchPoints.
+Eigen::VectorXd roundIntegers(const Inputs& in, const Field& field, const SeamlessSystem& sys,
+  const Eigen::VectorXd& x, const HessianFactor& factor, bool greedy, Parameterization& out,
+  const Progress& progress);
+
+/// The minimizer x (#columns) with the integer unknowns fixed to `integers`.
+void solveWithIntegersFixed(const SeamlessSystem& sys, const HessianFactor& factor,
+  const Eigen::VectorXd& integers, bool greedy, Eigen::VectorXd& x, Parameterization& out);
+
+// ---- flipped triangles and windings (MapRepair.cxx) ----
+
+/// What is wrong with a map: flipped triangles, inner points wound the wrong way.
+struct Defects
+{
+  std::vector<int> flipped;
+  std::vector<int> wrong;
+
+  std::size_t count() const { return flipped.size() + wrong.size(); }
+};
+
+/// The inner points around which the map's angles do not add up to 2 pi (1 - index).
+std::vector<int> wrongWindings(
+  const Inputs& in, const Field& field, const Parameterization& out, const Eigen::MatrixX2d& uv);
+
+/// Untangles the flipped triangles of x and lays out again the fans wound the wrong way (three
+/// attempts and a held run), keeping x as it was when the repair leaves more defects than it
+/// found; updates `defects` and out.untangleRegions, untangleSeconds.
+void repairMap(const Inputs& in, const Field& field, const SeamlessSystem& sys, Eigen::VectorXd& x,
+  Defects& defects, Parameterization& out, const Progress& progress);
+}
+}
+
+#endif

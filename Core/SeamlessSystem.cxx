@@ -1,0 +1,414 @@
+// SeamlessSystem.cxx: the linear system of the integer-grid map: unknowns per sector, the
+// constraints of the cut and the boundary eliminated, columns and symbols, the energy.
+#include "ParameterizationSteps.h"
+
+#include "FrameField.h"
+
+#include <cmath>
+#include <utility>
+
+namespace quadcover
+{
+namespace param
+{
+namespace
+{
+/// z_B - i^r z_A - t_e = 0 at both ends of every cut edge (f = side A, g = side B), with a new
+/// integer translation t_e per cut edge.
+void constrainTransitions(
+  const Inputs& in, const Parameterization& out, Eliminator& elim, const Progress& progress)
+{
+  const MeshTopology& topo = in.topo;
+  const int nV = in.numVertices();
+  std::vector<std::vector<int>> cutAt(nV);
+  std::vector<int> translation(topo.numEdges(), -1);
+  for (int e = 0; e < topo.numEdges(); ++e)
+  {
+    if (out.cut.onCut[e])
+    {
+      translation[e] = elim.add(true);
+      elim.add(true);
+      cutAt[topo.edges(e, 0)].push_back(e);
+      cutAt[topo.edges(e, 1)].push_back(e);
+    }
+  }
+  for (int p = 0; p < nV; ++p)
+  {
+    reportEvery(progress, p, nV);
+    for (const int e : cutAt[p])
+    {
+      const int c0 = topo.edgeCorners(e, 0);
+      const int f = c0 / 3;
+      const int g = topo.edgeCorners(e, 1) / 3;
+      const int r = out.combedMatching(f, c0 % 3);
+      const int a = sectorOf(in.F, out, f, p);
+      const int b = sectorOf(in.F, out, g, p);
+      // i^r (uA + i vA): r = 0: (uA, vA), 1: (-vA, uA), 2: (-uA, -vA), 3: (vA, -uA)
+      const int reU = (r % 2 == 0) ? 2 * a : 2 * a + 1;
+      const double reS = (r == 0 || r == 3) ? 1.0 : -1.0;
+      const int imU = (r % 2 == 0) ? 2 * a + 1 : 2 * a;
+      const double imS = (r == 0 || r == 1) ? 1.0 : -1.0;
+      elim.constrain({ { 2 * b, 1.0 }, { reU, -reS }, { translation[e], -1.0 } });
+      elim.constrain({ { 2 * b + 1, 1.0 }, { imU, -imS }, { translation[e] + 1, -1.0 } });
+    }
+  }
+}
+
+/// Which coordinate of boundary edge e (corner k of face f) is constant along it: 1 (v) for an
+/// edge along the combed frame's u direction, 0 (u) for one along v (within the boundary
+/// tolerance), -1 for neither.
+int constantCoordinate(
+  const Inputs& in, const Field& field, const Parameterization& out, int f, int k, double tolerance)
+{
+  const Eigen::Vector3d d = in.V.row(in.F(f, (k + 1) % 3)) - in.V.row(in.F(f, k));
+  const double alpha = std::atan2(
+    d.dot(in.geometry.bases.b2.row(f).transpose()), d.dot(in.geometry.bases.b1.row(f).transpose()));
+  double delta = wrapAngle(alpha - field.theta[f] - out.comb[f] * Pi / 2);
+  // delta modulo pi in (-pi/2, pi/2]: near 0 along u (v constant), near +-pi/2 along v
+  if (delta > Pi / 2)
+  {
+    delta -= Pi;
+  }
+  else if (delta <= -Pi / 2)
+  {
+    delta += Pi;
+  }
+  if (std::abs(delta) <= tolerance)
+  {
+    return 1;
+  }
+  if (Pi / 2 - std::abs(delta) <= tolerance)
+  {
+    return 0;
+  }
+  return -1;
+}
+
+/// Boundary edges along a combed frame direction: the other coordinate is an integer line.
+/// Returns per sector coordinate (2s + c) 1 where it is on a line.
+std::vector<char> alignToBoundary(
+  const Inputs& in, const Field& field, Parameterization& out, Eliminator& elim)
+{
+  const int nS = static_cast<int>(out.sectorPoint.size());
+  std::vector<char> onLine(2 * static_cast<std::size_t>(nS), 0);
+  if (!in.options.alignToBoundary)
+  {
+    return onLine;
+  }
+  const double tolerance = in.options.boundaryTolerance * Pi / 180.0;
+  for (int e = 0; e < in.topo.numEdges(); ++e)
+  {
+    if (in.topo.edgeFaceCount[e] != 1)
+    {
+      continue;
+    }
+    const int c0 = in.topo.edgeCorners(e, 0);
+    const int f = c0 / 3;
+    const int k = c0 % 3;
+    const int component = constantCoordinate(in, field, out, f, k, tolerance);
+    if (component < 0)
+    {
+      continue;
+    }
+    ++out.alignedBoundaryEdges;
+    const int line = elim.add(true);
+    for (int end = 0; end < 2; ++end)
+    {
+      const int s = out.cornerSector[3 * f + (k + end) % 3];
+      elim.constrain({ { 2 * s + component, 1.0 }, { line, -1.0 } });
+      onLine[2 * s + component] = 1;
+    }
+  }
+  return onLine;
+}
+
+/// One point per component fixed at (0, 0): the map is defined up to translation. The point is
+/// one that is on the grid anyway (a branch point, else a boundary corner on two grid lines),
+/// so that the fixing costs nothing; only without either is a regular point put on the grid.
+void pinComponents(const Inputs& in, const Field& field, const std::vector<char>& onLine,
+  const Parameterization& out, Eliminator& elim)
+{
+  std::vector<int> pin(in.topo.numComponents(), -1);
+  std::vector<int> rank(in.topo.numComponents(), 3);
+  for (int f = 0; f < in.numFaces(); ++f)
+  {
+    const int c = in.topo.faceComponent[f];
+    for (int k = 0; k < 3 && c >= 0; ++k)
+    {
+      const int s = out.cornerSector[3 * f + k];
+      const int r = field.branch[in.F(f, k)] ? 0 : (onLine[2 * s] && onLine[2 * s + 1] ? 1 : 2);
+      if (r < rank[c])
+      {
+        rank[c] = r;
+        pin[c] = s;
+      }
+    }
+  }
+  for (const int s : pin)
+  {
+    if (s >= 0)
+    {
+      elim.constrain({ { 2 * s, 1.0 } });
+      elim.constrain({ { 2 * s + 1, 1.0 } });
+    }
+  }
+}
+
+/// P: symbols x columns, the identity on the real ones.
+SparseMatrix symbolMatrix(int numReal, const std::vector<Expr>& symbolColumns, int numColumns)
+{
+  SparseMatrix P(numReal + static_cast<int>(symbolColumns.size()), numColumns);
+  std::vector<Eigen::Triplet<double>> t;
+  for (int j = 0; j < numReal; ++j)
+  {
+    t.emplace_back(j, j, 1.0);
+  }
+  for (std::size_t k = 0; k < symbolColumns.size(); ++k)
+  {
+    for (const auto& c : symbolColumns[k])
+    {
+      t.emplace_back(numReal + static_cast<int>(k), c.first, c.second);
+    }
+  }
+  P.setFromTriplets(t.begin(), t.end());
+  return P;
+}
+
+/**
+ * Builds the energy's rows, 4 per triangle: sqrt(A) (grad u - U'/h, grad v - V'/h) in the
+ * triangle's basis, D's rows over symbols and rhs; H = P^T (D^T D) P, with D^T D assembled from
+ * each row's outer product (much faster than the sparse product).
+ */
+class EnergyAssembly
+{
+public:
+  EnergyAssembly(
+    const Inputs& in, const Field& field, const Parameterization& out, SeamlessSystem& sys)
+    : in_(in)
+    , field_(field)
+    , out_(out)
+    , sys_(sys)
+    , scale_(1.0 / out.edgeLength)
+  {
+    const int nF = in.numFaces();
+    sys.faceArea = Eigen::VectorXd::Zero(nF);
+    sys.rhs = Eigen::VectorXd::Zero(4 * static_cast<Eigen::Index>(nF));
+    triplets_.reserve(static_cast<std::size_t>(nF) * 14);
+    hessian_.reserve(static_cast<std::size_t>(nF) * 26);
+  }
+
+  /// The rows of face f (none for a degenerate one).
+  void addFace(int f)
+  {
+    Eigen::Vector2d p[3];
+    const Eigen::Vector3d b1 = in_.geometry.bases.b1.row(f).transpose();
+    const Eigen::Vector3d b2 = in_.geometry.bases.b2.row(f).transpose();
+    for (int k = 0; k < 3; ++k)
+    {
+      const Eigen::Vector3d d = in_.V.row(in_.F(f, k)) - in_.V.row(in_.F(f, 0));
+      p[k] = Eigen::Vector2d(d.dot(b1), d.dot(b2));
+    }
+    const double twiceArea =
+      (p[1] - p[0]).x() * (p[2] - p[0]).y() - (p[1] - p[0]).y() * (p[2] - p[0]).x();
+    if (!(twiceArea > 0))
+    {
+      return;
+    }
+    totalArea_ += 0.5 * twiceArea;
+    sys_.faceArea[f] = 0.5 * twiceArea;
+    const double w = std::sqrt(0.5 * twiceArea);
+    const double angle = field_.theta[f] + out_.comb[f] * Pi / 2;
+    const double c = std::cos(angle);
+    const double s = std::sin(angle);
+    sys_.rhs[4 * f + 0] = w * scale_ * c;  // grad u . x = U'.x
+    sys_.rhs[4 * f + 1] = w * scale_ * s;  // grad u . y
+    sys_.rhs[4 * f + 2] = w * scale_ * -s; // grad v . x = V'.x
+    sys_.rhs[4 * f + 3] = w * scale_ * c;  // grad v . y
+    for (int r = 0; r < 4; ++r)
+    {
+      row_[r].clear();
+    }
+    for (int k = 0; k < 3; ++k)
+    {
+      const Eigen::Vector2d edge = p[(k + 2) % 3] - p[(k + 1) % 3];
+      const Eigen::Vector2d grad = Eigen::Vector2d(-edge.y(), edge.x()) * (w / twiceArea);
+      const int sector = out_.cornerSector[3 * f + k];
+      for (int uv = 0; uv < 2; ++uv)
+      {
+        for (const auto& t : sys_.sectorExpr[2 * sector + uv])
+        {
+          row_[2 * uv].emplace_back(t.first, grad.x() * t.second);
+          row_[2 * uv + 1].emplace_back(t.first, grad.y() * t.second);
+        }
+      }
+    }
+    addRows(f);
+  }
+
+  /// D, H and the energy's scale from the rows added.
+  void finish()
+  {
+    const int numSymbols = static_cast<int>(sys_.P.rows());
+    sys_.D.resize(4 * static_cast<Eigen::Index>(in_.numFaces()), numSymbols);
+    sys_.D.setFromTriplets(triplets_.begin(), triplets_.end());
+    triplets_.clear();
+    triplets_.shrink_to_fit();
+    SparseMatrix lower(numSymbols, numSymbols);
+    lower.setFromTriplets(hessian_.begin(), hessian_.end());
+    hessian_.clear();
+    hessian_.shrink_to_fit();
+    const SparseMatrix full = lower.selfadjointView<Eigen::Lower>();
+    sys_.H = sys_.P.transpose() * full * sys_.P;
+    sys_.energyNorm = 2.0 * scale_ * scale_ * std::max(totalArea_, 1e-300);
+  }
+
+private:
+  /// D's rows of face f, and their outer products (lower triangle) into D^T D.
+  void addRows(int f)
+  {
+    for (int r = 0; r < 4; ++r)
+    {
+      for (const auto& a : row_[r])
+      {
+        triplets_.emplace_back(4 * f + r, a.first, a.second);
+        for (const auto& b : row_[r])
+        {
+          if (b.first <= a.first)
+          {
+            hessian_.emplace_back(a.first, b.first, a.second * b.second);
+          }
+        }
+      }
+    }
+  }
+
+  const Inputs& in_;
+  const Field& field_;
+  const Parameterization& out_;
+  SeamlessSystem& sys_;
+  const double scale_;
+  double totalArea_ = 0.0;
+  std::vector<Eigen::Triplet<double>> triplets_;
+  std::vector<Eigen::Triplet<double>> hessian_;
+  Expr row_[4];
+};
+}
+
+Eliminator constrainUnknowns(
+  const Inputs& in, const Field& field, Parameterization& out, const Progress& progress)
+{
+  Eliminator elim;
+  const int nS = static_cast<int>(out.sectorPoint.size());
+  for (int s = 0; s < nS; ++s)
+  {
+    const bool integer = in.options.pureQuads && field.branch[out.sectorPoint[s]];
+    elim.add(integer); // u = 2s
+    elim.add(integer); // v = 2s + 1
+  }
+  constrainTransitions(in, out, elim, progress.part(0.0, 0.9));
+  const std::vector<char> onLine = alignToBoundary(in, field, out, elim);
+  pinComponents(in, field, onLine, out, elim);
+  out.constraints = elim.Constraints;
+  out.nonUnitPivots = elim.NonUnitPivots;
+  progress.report(1.0);
+  return elim;
+}
+
+SeamlessSystem numberUnknowns(Eliminator& elim, Parameterization& out)
+{
+  SeamlessSystem sys;
+  // Columns: real unknowns first, then integer ones.
+  std::vector<int> column(elim.size(), -1);
+  for (int x = 0; x < elim.size(); ++x)
+  {
+    if (!elim.isEliminated(x) && !elim.isInteger(x))
+    {
+      column[x] = sys.numReal++;
+    }
+  }
+  for (int x = 0; x < elim.size(); ++x)
+  {
+    if (!elim.isEliminated(x) && elim.isInteger(x))
+    {
+      column[x] = sys.numReal + sys.numInteger++;
+    }
+  }
+  out.unknowns = sys.numColumns();
+  out.integerUnknowns = sys.numInteger;
+  // Symbols: the real unknowns, then the integer unknowns in the order the sectors meet them.
+  const int nS = static_cast<int>(out.sectorPoint.size());
+  std::vector<int> symbolOf(elim.size(), -1);
+  sys.sectorExpr.resize(2 * nS);
+  for (int x = 0; x < 2 * nS; ++x)
+  {
+    sys.sectorExpr[x] = elim.resolveReals(x);
+    for (auto& t : sys.sectorExpr[x])
+    {
+      if (!elim.isInteger(t.first))
+      {
+        t.first = column[t.first];
+        continue;
+      }
+      if (symbolOf[t.first] < 0)
+      {
+        symbolOf[t.first] = sys.numReal + static_cast<int>(sys.symbolColumns.size());
+        Expr e = elim.resolve(t.first);
+        for (auto& c : e)
+        {
+          c.first = column[c.first];
+        }
+        sys.symbolColumns.push_back(std::move(e));
+      }
+      t.first = symbolOf[t.first];
+    }
+  }
+  sys.P = symbolMatrix(sys.numReal, sys.symbolColumns, sys.numColumns());
+  return sys;
+}
+
+void assembleEnergy(const Inputs& in, const Field& field, const Parameterization& out,
+  SeamlessSystem& sys, const Progress& progress)
+{
+  EnergyAssembly assembly(in, field, out, sys);
+  const int nF = in.numFaces();
+  const Progress rows = progress.part(0.0, 0.4);
+  for (int f = 0; f < nF; ++f)
+  {
+    reportEvery(rows, f, nF);
+    assembly.addFace(f);
+  }
+  progress.report(0.4);
+  assembly.finish();
+  progress.report(1.0);
+}
+
+Eigen::MatrixX2d SeamlessSystem::uv(const Eigen::VectorXd& columns) const
+{
+  const Eigen::VectorXd x = P * columns;
+  const int nS = static_cast<int>(sectorExpr.size() / 2);
+  Eigen::MatrixX2d uv(nS, 2);
+  for (int s = 0; s < nS; ++s)
+  {
+    for (int c = 0; c < 2; ++c)
+    {
+      uv(s, c) = sectorValue(x, s, c);
+    }
+  }
+  return uv;
+}
+
+std::vector<int> flippedFaces(const Eigen::MatrixX2d& uv, const std::vector<int>& cornerSector)
+{
+  std::vector<int> flipped;
+  const int nF = static_cast<int>(cornerSector.size() / 3);
+  for (int f = 0; f < nF; ++f)
+  {
+    if (!(twiceUVArea(uv, cornerSector, f) > 0))
+    {
+      flipped.push_back(f);
+    }
+  }
+  return flipped;
+}
+}
+}

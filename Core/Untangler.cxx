@@ -1,0 +1,336 @@
+// Untangler.cxx: foldover-free untangling of flipped triangles with L-BFGS.
+#include "Untangler.h"
+
+#include <Eigen/LU>
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <limits>
+#include <utility>
+
+namespace quadcover
+{
+namespace param
+{
+namespace
+{
+using RowMajorMatrix = Eigen::SparseMatrix<double, Eigen::RowMajor>;
+
+/// The faces within `rings` vertex rings of a flipped face: 1 per face of the region.
+std::vector<char> regionAround(
+  const MeshTopology& topo, const Eigen::MatrixX3i& F, const std::vector<int>& flipped, int rings)
+{
+  std::vector<char> inRegion(F.rows(), 0);
+  std::vector<int> front = flipped;
+  for (const int f : flipped)
+  {
+    inRegion[f] = 1;
+  }
+  for (int ring = 0; ring < rings && !front.empty(); ++ring)
+  {
+    std::vector<int> next;
+    for (const int f : front)
+    {
+      for (int k = 0; k < 3; ++k)
+      {
+        const int p = F(f, k);
+        for (int i = topo.ringOffsets[p]; i < topo.ringOffsets[p + 1]; ++i)
+        {
+          const int g = topo.ringFaces[i];
+          if (!inRegion[g])
+          {
+            inRegion[g] = 1;
+            next.push_back(g);
+          }
+        }
+      }
+    }
+    front.swap(next);
+  }
+  return inRegion;
+}
+
+/// The untangling energy as a function of the free unknowns y alone: the others stay as in the
+/// map it started from.
+class LocalEnergy
+{
+public:
+  LocalEnergy(const Untangler& untangler, std::vector<int> columns, std::vector<int> faces,
+    const Eigen::VectorXd& x)
+    : untangler_(untangler)
+    , columns_(std::move(columns))
+    , faces_(std::move(faces))
+    , full_(x)
+    , gradFull_(Eigen::VectorXd::Zero(x.size()))
+  {}
+
+  int size() const { return static_cast<int>(columns_.size()); }
+  /// How often evaluate was called: the measure of the work done.
+  int evaluations() const { return evaluations_; }
+
+  /// The free unknowns of a full map.
+  Eigen::VectorXd restrictTo(const Eigen::VectorXd& full) const
+  {
+    Eigen::VectorXd y(size());
+    for (int i = 0; i < size(); ++i)
+    {
+      y[i] = full[columns_[i]];
+    }
+    return y;
+  }
+
+  /// Writes y into the map.
+  void scatter(const Eigen::VectorXd& y, Eigen::VectorXd& full) const
+  {
+    for (int i = 0; i < size(); ++i)
+    {
+      full[columns_[i]] = y[i];
+    }
+  }
+
+  /// The energy at y, and its gradient g.
+  double evaluate(const Eigen::VectorXd& y, double eps, Eigen::VectorXd& g)
+  {
+    ++evaluations_;
+    scatter(y, full_);
+    for (const int c : columns_)
+    {
+      gradFull_[c] = 0.0;
+    }
+    const double e = untangler_.energy(faces_, full_, eps, &gradFull_);
+    g = restrictTo(gradFull_);
+    return e;
+  }
+
+  /// The smallest Jacobian determinant of the energy's faces at y.
+  double minDet(const Eigen::VectorXd& y)
+  {
+    scatter(y, full_);
+    double lowest = std::numeric_limits<double>::max();
+    for (const int f : faces_)
+    {
+      lowest = std::min(lowest, untangler_.jacobian(f, full_).determinant());
+    }
+    return lowest;
+  }
+
+private:
+  const Untangler& untangler_;
+  const std::vector<int> columns_;
+  const std::vector<int> faces_;
+  Eigen::VectorXd full_;
+  Eigen::VectorXd gradFull_;
+  int evaluations_ = 0;
+};
+
+/// The L-BFGS direction for gradient g from the pairs (S, Y) (the two-loop recursion).
+Eigen::VectorXd lbfgsDirection(const std::vector<Eigen::VectorXd>& S,
+  const std::vector<Eigen::VectorXd>& Y, const Eigen::VectorXd& g)
+{
+  Eigen::VectorXd d = -g;
+  std::vector<double> alpha(S.size());
+  for (int j = static_cast<int>(S.size()) - 1; j >= 0; --j)
+  {
+    alpha[j] = S[j].dot(d) / Y[j].dot(S[j]);
+    d -= alpha[j] * Y[j];
+  }
+  if (!S.empty())
+  {
+    d *= S.back().dot(Y.back()) / Y.back().squaredNorm();
+  }
+  for (std::size_t j = 0; j < S.size(); ++j)
+  {
+    const double beta = Y[j].dot(d) / Y[j].dot(S[j]);
+    d += S[j] * (alpha[j] - beta);
+  }
+  return d;
+}
+
+/// Minimizes the energy (with eps fixed) from y: L-BFGS, 8 pairs, Armijo backtracking, at most
+/// 200 iterations. Returns the energy at the new y.
+double minimize(LocalEnergy& energy, Eigen::VectorXd& y, double eps, const Progress& progress)
+{
+  constexpr int Iterations = 200;
+  std::vector<Eigen::VectorXd> S, Y;
+  Eigen::VectorXd g;
+  double e = energy.evaluate(y, eps, g);
+  for (int it = 0; it < Iterations; ++it)
+  {
+    // how many rounds and iterations it takes is not known beforehand: a fraction that
+    // approaches 1 with the evaluations done
+    progress.report(energy.evaluations() / (energy.evaluations() + 100.0));
+    Eigen::VectorXd d = lbfgsDirection(S, Y, g);
+    double slope = g.dot(d);
+    if (!(slope < 0))
+    {
+      d = -g;
+      slope = -g.squaredNorm();
+      S.clear();
+      Y.clear();
+    }
+    double step = S.empty() ? std::min(1.0, 1.0 / std::max(1e-300, g.norm())) : 1.0;
+    Eigen::VectorXd gNew;
+    double eNew = e;
+    Eigen::VectorXd yNew;
+    bool moved = false;
+    for (int tries = 0; tries < 40; ++tries, step *= 0.5)
+    {
+      yNew = y + step * d;
+      eNew = energy.evaluate(yNew, eps, gNew);
+      if (std::isfinite(eNew) && eNew <= e + 1e-4 * step * slope)
+      {
+        moved = true;
+        break;
+      }
+    }
+    if (!moved)
+    {
+      break;
+    }
+    S.push_back(yNew - y);
+    Y.push_back(gNew - g);
+    if (S.back().dot(Y.back()) <= 1e-300)
+    {
+      S.pop_back();
+      Y.pop_back();
+    }
+    if (S.size() > 8)
+    {
+      S.erase(S.begin());
+      Y.erase(Y.begin());
+    }
+    const double change = e - eNew;
+    y = yNew;
+    g = gNew;
+    e = eNew;
+    if (change <= 1e-9 * std::abs(e))
+    {
+      break;
+    }
+  }
+  return e;
+}
+}
+
+Eigen::Matrix2d Untangler::jacobian(int f, const Eigen::VectorXd& x) const
+{
+  Eigen::Matrix2d J;
+  for (int i = 0; i < 4; ++i)
+  {
+    double value = 0.0;
+    for (RowMajorMatrix::InnerIterator it(Dr, 4 * f + i); it; ++it)
+    {
+      value += it.value() * x[it.col()];
+    }
+    J(i / 2, i % 2) = value * edgeLength / sqrtArea[f];
+  }
+  return J;
+}
+
+double Untangler::energy(const std::vector<int>& faces, const Eigen::VectorXd& x, double eps,
+  Eigen::VectorXd* gradient) const
+{
+  double total = 0.0;
+  for (const int f : faces)
+  {
+    const Eigen::Matrix2d J = jacobian(f, x);
+    const double det = J.determinant();
+    const double root = std::sqrt(eps * eps + det * det);
+    const double chi = 0.5 * (det + root);
+    const double chiPrime = 0.5 * (1.0 + det / root);
+    const double trace = J.squaredNorm();
+    const double area = sqrtArea[f] * sqrtArea[f];
+    total += area * ((1 - theta) * trace / chi + theta * (det * det + 1) / chi);
+    if (gradient)
+    {
+      Eigen::Matrix2d dDet;
+      dDet << J(1, 1), -J(1, 0), -J(0, 1), J(0, 0);
+      const Eigen::Matrix2d dE =
+        (1 - theta) * (2.0 * J / chi - trace * chiPrime / (chi * chi) * dDet) +
+        theta * (2.0 * det / chi - (det * det + 1) * chiPrime / (chi * chi)) * dDet;
+      for (int i = 0; i < 4; ++i)
+      {
+        const double g = area * dE(i / 2, i % 2) * edgeLength / sqrtArea[f];
+        for (RowMajorMatrix::InnerIterator it(Dr, 4 * f + i); it; ++it)
+        {
+          (*gradient)[it.col()] += g * it.value();
+        }
+      }
+    }
+  }
+  return total;
+}
+
+std::vector<int> Untangler::freeColumns(
+  const std::vector<char>& inRegion, const std::vector<char>& frozen) const
+{
+  std::vector<int> columns;
+  std::vector<char> isFree(Dc.cols(), 0);
+  for (int f = 0; f < static_cast<int>(inRegion.size()); ++f)
+  {
+    if (!inRegion[f] || sqrtArea[f] <= 0)
+    {
+      continue;
+    }
+    for (int i = 0; i < 4; ++i)
+    {
+      for (RowMajorMatrix::InnerIterator it(Dr, 4 * f + i); it; ++it)
+      {
+        if (it.col() < numReal && !isFree[it.col()] && (frozen.empty() || !frozen[it.col()]))
+        {
+          isFree[it.col()] = 1;
+          columns.push_back(static_cast<int>(it.col()));
+        }
+      }
+    }
+  }
+  return columns;
+}
+
+std::vector<int> Untangler::facesUsing(const std::vector<int>& columns) const
+{
+  std::vector<char> inEnergy(sqrtArea.size(), 0);
+  std::vector<int> faces;
+  for (const int c : columns)
+  {
+    for (Eigen::SparseMatrix<double>::InnerIterator it(Dc, c); it; ++it)
+    {
+      const int f = static_cast<int>(it.row() / 4);
+      if (!inEnergy[f] && sqrtArea[f] > 0)
+      {
+        inEnergy[f] = 1;
+        faces.push_back(f);
+      }
+    }
+  }
+  return faces;
+}
+
+void Untangler::run(const MeshTopology& topo, const Eigen::MatrixX3i& F,
+  const std::vector<int>& flipped, int rings, int maxRounds, Eigen::VectorXd& x,
+  const std::vector<char>& frozen, const Progress& progress) const
+{
+  // free unknowns: the real ones the region's rows use; energy: every face they touch
+  std::vector<int> columns = freeColumns(regionAround(topo, F, flipped, rings), frozen);
+  std::vector<int> faces = facesUsing(columns);
+  LocalEnergy energy(*this, std::move(columns), std::move(faces), x);
+  const int m = energy.size();
+  Eigen::VectorXd y = energy.restrictTo(x);
+  double previous = std::numeric_limits<double>::max();
+  for (int round = 0; round < maxRounds && m > 0; ++round)
+  {
+    const double lowest = energy.minDet(y);
+    const double eps = lowest < 0 ? std::sqrt(1e-8 + 0.04 * lowest * lowest) : 1e-8;
+    const double e = minimize(energy, y, eps, progress);
+    const double after = energy.minDet(y);
+    if (after > 0 && previous - e <= 1e-3 * std::abs(e))
+    {
+      break;
+    }
+    previous = e;
+  }
+  energy.scatter(y, x);
+}
+}
+}

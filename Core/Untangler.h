@@ -1,0 +1,62 @@
+// Untangler.h: internal to Core: foldover-free untangling of the flipped triangles of the
+// integer-grid map (Garanzha et al. 2021), moving only real unknowns near them.
+#ifndef quadcover_Untangler_h
+#define quadcover_Untangler_h
+
+#include "MeshTopology.h"
+#include "Progress.h"
+
+#include <Eigen/Core>
+#include <Eigen/Sparse>
+
+#include <vector>
+
+namespace quadcover
+{
+namespace param
+{
+/**
+ * Removes flipped triangles from a map x = (real unknowns, integer unknowns) by moving only real
+ * unknowns near them: the foldover-free untangling of Garanzha et al. (2021). Each triangle's
+ * Jacobian J (relative to the grid, so 1 is a perfect unit cell) pays
+ *   (1 - theta) tr(J^T J) / chi(det J) + theta (det^2 J + 1) / chi(det J),
+ *   chi(d) = (d + sqrt(eps^2 + d^2)) / 2,
+ * a smooth stand-in for a barrier against det J <= 0 that stays finite on flipped triangles; eps
+ * shrinks with the most negative determinant, so the minimizer (L-BFGS) becomes foldover-free.
+ * The unknowns moved are those of the triangles within `rings` rings of a flipped one; every
+ * triangle they touch is in the energy.
+ */
+struct Untangler
+{
+  const Eigen::SparseMatrix<double, Eigen::RowMajor>& Dr; // rows of D: 4 per triangle
+  const Eigen::SparseMatrix<double>& Dc;                  // the same, by column
+  const Eigen::VectorXd& sqrtArea;                        // per triangle, 0 if skipped
+  double edgeLength;                                      // h: J relative to the unit cell
+  int numReal;
+  double theta = 0.25;
+
+  /// The Jacobian of triangle f in the map x (symbols) relative to the unit cell.
+  Eigen::Matrix2d jacobian(int f, const Eigen::VectorXd& x) const;
+
+  /// Energy of the listed triangles; with `gradient`, adds dE/dx.
+  double energy(const std::vector<int>& faces, const Eigen::VectorXd& x, double eps,
+    Eigen::VectorXd* gradient) const;
+
+  /// Untangles around `flipped` (faces), moving real unknowns not `frozen` (empty: none is);
+  /// callers recount the flips. Reports once per L-BFGS iteration
+  /// (approaching 1, as the number of iterations is not known beforehand).
+  void run(const MeshTopology& topo, const Eigen::MatrixX3i& F, const std::vector<int>& flipped,
+    int rings, int maxRounds, Eigen::VectorXd& x, const std::vector<char>& frozen,
+    const Progress& progress) const;
+
+private:
+  /// The real unknowns (not frozen) that the rows of the faces in the region use, in order.
+  std::vector<int> freeColumns(
+    const std::vector<char>& inRegion, const std::vector<char>& frozen) const;
+  /// The faces (with area) whose rows use any of the columns.
+  std::vector<int> facesUsing(const std::vector<int>& columns) const;
+};
+}
+}
+
+#endif
