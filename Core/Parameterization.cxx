@@ -27,6 +27,11 @@ void checkArguments(const Inputs& in)
   {
     throw std::invalid_argument("computeParameterization: sizes do not match");
   }
+  const std::string matching = checkMatching(in.topo, in.matching);
+  if (!matching.empty())
+  {
+    throw std::invalid_argument("computeParameterization: " + matching);
+  }
   const ParameterizationOptions& options = in.options;
   const bool fromQuadCount = options.targetEdgeLength == 0.0;
   if (!(options.targetEdgeLength >= 0) || !std::isfinite(options.targetEdgeLength) ||

@@ -44,7 +44,8 @@ struct ParameterizationOptions
   /// Boundary edges along a frame direction (within boundaryTolerance degrees) lie on an integer
   /// grid line (constant u or v), so quads end cleanly at the border.
   bool alignToBoundary = true;
-  double boundaryTolerance = 10.0;
+  /// The same concept as BranchPointOptions::boundaryTolerance, and its default.
+  double boundaryTolerance = BranchPointOptions().boundaryTolerance;
   /// After rounding, triangles whose (u, v) image is flipped are untangled: the real unknowns
   /// of their neighbourhood (2 rings, then 4, 8, 16) move to minimize a foldover-free distortion
   /// energy, in at most this many rounds per neighbourhood; 0 leaves flips as they are.

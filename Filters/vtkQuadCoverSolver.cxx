@@ -16,7 +16,6 @@
 #include "vtkPolyData.h"
 #include "vtkUnsignedCharArray.h"
 
-#include "Matchings.h"
 #include "Parameterization.h"
 
 #include <cmath>
@@ -44,21 +43,15 @@ int FilterRounding(quadcover::RoundingMode mode)
                                                : vtkQuadCoverSolver::ROUNDING_GREEDY);
 }
 
-/// The Matching array as integers, checked (quadcover::checkMatching).
-Eigen::MatrixX3i ReadMatching(vtkDataArray* m, const quadcover::MeshTopology& topo)
+/// The Matching array as integers (computeParameterization checks their values).
+Eigen::MatrixX3i ReadMatching(vtkDataArray* m)
 {
   const Eigen::MatrixXd values = vtkQuadCoverEigen::FromArray(m);
-  if (!(values.array() == values.array().round()).all())
+  if (!(values.array() == values.array().round()).all() || !(values.array().abs() < 1e9).all())
   {
     throw std::invalid_argument(std::string(names::Matching) + " holds values that are not whole");
   }
-  const Eigen::MatrixX3i matching = values.cast<int>();
-  const std::string problem = quadcover::checkMatching(topo, matching);
-  if (!problem.empty())
-  {
-    throw std::invalid_argument(problem);
-  }
-  return matching;
+  return values.cast<int>();
 }
 
 /// The surface cut open along the seams: a point per sector, UV its texture coordinates.
@@ -146,7 +139,7 @@ void vtkQuadCoverSolver::Execute(vtkQuadCoverSurface& in, vtkInformationVector* 
   {
     throw std::invalid_argument(std::string(names::FrameU) + " has non-finite values");
   }
-  const Eigen::MatrixX3i matching = ReadMatching(m, in.topo);
+  const Eigen::MatrixX3i matching = ReadMatching(m);
   this->UpdateProgress(0.1);
 
   const quadcover::FrameGeometry geometry = quadcover::computeFrameGeometry(in.V, in.F, in.topo);
