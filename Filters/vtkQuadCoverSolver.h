@@ -60,7 +60,7 @@ public:
   };
 
   ///@{
-  /** Edge length of the quads in world units; 0 (default) uses TargetQuadCount. */
+  /** Edge length of the quads in world units, 0 for TargetQuadCount (default 0). */
   vtkSetClampMacro(TargetEdgeLength, double, 0.0, VTK_DOUBLE_MAX);
   vtkGetMacro(TargetEdgeLength, double);
   ///@}

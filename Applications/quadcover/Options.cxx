@@ -254,7 +254,7 @@ std::vector<Option> StageOptions(Pipeline& p)
     QC_SWITCH2("smooth", smoother, solver, AlignToBoundary,
       "quads follow the boundary: frames held along it, boundary edges on grid lines"),
     QC_SWITCH("smooth", smoother, GlobalStart, "also start from the globally smoothest fields"),
-    QC_SWITCH("matching", matching, OptimizeBranchPoints, "merge singularities (Sect. 4.2)"),
+    QC_SWITCH("matching", matching, OptimizeBranchPoints, "merge pairs of singularities that cancel (Sect. 4.2)"),
     QC_NUMBER("matching", matching, BranchPointWeight,
       "cost of one singular point, in radians of matching angle"),
     QC_SWITCH("matching", matching, LengthScaledCost,
@@ -349,10 +349,14 @@ void PrintUsage(std::ostream& os, const std::vector<Option>& options)
       os << stage << ":\n";
     }
     std::string range;
-    if (o.kind == Option::Kind::Number || o.kind == Option::Kind::Whole)
+    const bool whole = o.kind == Option::Kind::Whole;
+    if (o.kind == Option::Kind::Number || whole)
     {
       char text[96];
-      std::snprintf(text, sizeof text, ", %g..%g", o.low, o.high);
+      if (o.high > 1e100)
+        std::snprintf(text, sizeof text, ", at least %g", o.low);
+      else
+        std::snprintf(text, sizeof text, whole ? ", %.0f..%.0f" : ", %g..%g", o.low, o.high);
       range = text;
     }
     else if (o.kind == Option::Kind::Choice)
@@ -364,7 +368,7 @@ void PrintUsage(std::ostream& os, const std::vector<Option>& options)
     }
     const std::string flag = o.kind == Option::Kind::Switch
       ? "--[no-]" + o.flag
-      : "--" + o.flag + (o.kind == Option::Kind::Choice ? " MODE" : " X");
+      : "--" + o.flag + (o.kind == Option::Kind::Choice ? " MODE" : (whole ? " N" : " X"));
     os << "  " << flag << "\n      " << o.meaning << range << " (default " << o.Text(o.get())
        << ")\n";
   }

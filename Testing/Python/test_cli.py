@@ -348,6 +348,12 @@ class CommandLine(unittest.TestCase):
         code, out, _ = run("--help")
         self.assertEqual(code, 0)
         self.assertIn("usage: quadcover", out)
+        # Documentation/CommandLine.md keeps a copy of it
+        doc = os.path.join(os.path.dirname(__file__), "..", "..", "Documentation",
+                           "CommandLine.md")
+        with open(doc, encoding="utf-8") as f:
+            self.assertIn("```\n" + out + "```", f.read(),
+                          "Documentation/CommandLine.md's copy of --help is not the program's")
 
     # ---- refused input: exit 1, one line ----
     def test_missing_file(self):
@@ -428,7 +434,7 @@ class CommandLine(unittest.TestCase):
         self.assertEqual(self.check_frames(out).GetNumberOfCells(), 4)
 
     def test_user_frames_reach_the_filter(self):
-        # A torus with FrameU = z everywhere: kept (projected) unless --no-input-frames.
+        # A torus with FrameU = z everywhere: kept (projected) unless --no-use-input-frames.
         reader = vtk.vtkOBJReader()
         reader.SetFileName(os.path.join(DATA, "torus.obj"))
         reader.Update()
