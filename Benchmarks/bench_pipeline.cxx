@@ -87,18 +87,17 @@ int RunCase(const Case& c, int threads, int repeat, int quads, int fd)
     vtkNew<vtkCurvatureFrames> frames;
     frames->SetInputData(surface);
     frames->SetNumberOfThreads(threads);
-    vtkNew<vtkFrameSmoother> smoother;
-    smoother->SetInputConnection(frames->GetOutputPort());
-    vtkNew<vtkMatchingBuilder> matching;
-    matching->SetInputConnection(smoother->GetOutputPort());
     vtkNew<vtkQuadCoverSolver> solver;
-    solver->SetInputConnection(matching->GetOutputPort());
     solver->SetTargetQuadCount(quads);
-    vtkNew<vtkQuadExtractor> extractor;
-    extractor->SetInputConnection(solver->GetOutputPort());
-    vtkAlgorithm* const stages[Stages] = { frames, smoother, matching, solver, extractor };
+    const vtkSmartPointer<vtkAlgorithm> stages[Stages] = { frames.Get(),
+      vtkSmartPointer<vtkFrameSmoother>::New(), vtkSmartPointer<vtkMatchingBuilder>::New(),
+      solver.Get(), vtkSmartPointer<vtkQuadExtractor>::New() };
     for (int s = 0; s < Stages; ++s)
     {
+      if (s > 0)
+      {
+        stages[s]->SetInputConnection(stages[s - 1]->GetOutputPort());
+      }
       const auto t0 = std::chrono::steady_clock::now();
       stages[s]->Update();
       best[s] = std::min(
@@ -111,131 +110,159 @@ int RunCase(const Case& c, int threads, int repeat, int quads, int fd)
     best[4]);
   return write(fd, line, n) == n ? 0 : 1;
 }
-}
 
-int main(int argc, char* argv[])
+struct Settings
 {
   std::string shared, out;
   long long maxTriangles = 1000000;
   int repeat = 3;
   int quads = 3000;
   std::string command = "quadcover_bench";
+};
+
+/// The arguments; false on bad usage.
+bool Parse(int argc, char* argv[], Settings& o)
+{
   for (int i = 1; i < argc; ++i)
   {
     const std::string a = argv[i];
-    command += " " + a;
-    if (i + 1 < argc && a == "--shared")
-      shared = argv[++i], command += std::string(" ") + argv[i];
-    else if (i + 1 < argc && a == "--max-triangles")
-      maxTriangles = std::atoll(argv[++i]), command += std::string(" ") + argv[i];
-    else if (i + 1 < argc && a == "--repeat")
-      repeat = std::max(1, std::atoi(argv[++i])), command += std::string(" ") + argv[i];
-    else if (i + 1 < argc && a == "--quads")
-      quads = std::max(1, std::atoi(argv[++i])), command += std::string(" ") + argv[i];
-    else if (i + 1 < argc && a == "--out")
-      out = argv[++i], command += std::string(" ") + argv[i];
+    o.command += " " + a;
+    if (i + 1 >= argc)
+      return false;
+    const std::string value = argv[++i];
+    o.command += " " + value;
+    if (a == "--shared")
+      o.shared = value;
+    else if (a == "--max-triangles")
+      o.maxTriangles = std::atoll(value.c_str());
+    else if (a == "--repeat")
+      o.repeat = std::max(1, std::atoi(value.c_str()));
+    else if (a == "--quads")
+      o.quads = std::max(1, std::atoi(value.c_str()));
+    else if (a == "--out")
+      o.out = value;
     else
-    {
-      std::fprintf(stderr,
-        "usage: quadcover_bench [--shared DIR] [--max-triangles N] [--repeat K] [--quads N] "
-        "[--out FILE]\n");
-      return 2;
-    }
+      return false;
   }
+  return true;
+}
 
+/// The shared meshes, the two largest refined (4^k times the triangles, up to maxTriangles),
+/// and tori of about 10k, 100k and 1M triangles.
+std::vector<Case> Cases(const Settings& o)
+{
   std::vector<Case> cases;
-  if (!shared.empty())
+  for (const char* name :
+    { "bunny-lowres", "spot", "teapot", "fandisk", "cheburashka", "rocker-arm" })
   {
-    for (const char* name :
-      { "bunny-lowres", "spot", "teapot", "fandisk", "cheburashka", "rocker-arm" })
+    const std::string file = o.shared + "/" + name + ".obj";
+    if (!o.shared.empty() && std::ifstream(file).good())
     {
-      const std::string file = shared + "/" + name + ".obj";
-      if (std::ifstream(file).good())
-      {
-        cases.push_back({ name, file });
-      }
+      cases.push_back({ name, file });
     }
-    // refined: the two largest, 4^k times as many triangles, up to --max-triangles
-    for (const auto& [name, triangles] :
-      { std::pair<const char*, long long>{ "spot", 5856 }, { "rocker-arm", 20088 } })
+  }
+  for (const auto& [name, triangles] :
+    { std::pair<const char*, long long>{ "spot", 5856 }, { "rocker-arm", 20088 } })
+  {
+    const std::string file = o.shared + "/" + name + ".obj";
+    long long count = triangles;
+    for (int level = 1; level <= 4 && !o.shared.empty() && std::ifstream(file).good(); ++level)
     {
-      const std::string file = shared + "/" + name + ".obj";
-      long long count = triangles;
-      for (int level = 1; level <= 4 && std::ifstream(file).good(); ++level)
+      count *= 4;
+      if (count <= o.maxTriangles)
       {
-        count *= 4;
-        if (count <= maxTriangles)
-        {
-          cases.push_back(
-            { std::string(name) + " x" + std::to_string(1 << (2 * level)), file, 0, 0, level });
-        }
+        cases.push_back(
+          { std::string(name) + " x" + std::to_string(1 << (2 * level)), file, 0, 0, level });
       }
     }
   }
-  // Tori of about 10k, 100k and 1M triangles (2 nu nv, nu = 2 nv).
-  for (long long target : { 10000LL, 100000LL, 1000000LL })
+  for (long long target : { 10000LL, 100000LL, 1000000LL }) // 2 nu nv triangles, nu = 2 nv
   {
-    if (target <= maxTriangles)
+    if (target <= o.maxTriangles)
     {
       const int nv = static_cast<int>(std::lround(std::sqrt(target / 4.0)));
       cases.push_back({ "torus " + std::to_string(target / 1000) + "k", "", 2 * nv, nv });
     }
   }
+  return cases;
+}
 
+/// Runs one case in a child process; its table row, or "" when it failed.
+std::string RunInChild(const Case& c, int threads, const Settings& o)
+{
+  int fds[2];
+  if (pipe(fds) != 0)
+  {
+    return "";
+  }
+  const pid_t pid = fork();
+  if (pid == 0)
+  {
+    close(fds[0]);
+    _exit(RunCase(c, threads, o.repeat, o.quads, fds[1]));
+  }
+  close(fds[1]);
+  char buf[128] = { 0 };
+  const ssize_t got = read(fds[0], buf, sizeof buf - 1);
+  close(fds[0]);
+  int status = 0;
+  struct rusage usage;
+  wait4(pid, &status, 0, &usage);
+  long long triangles = 0;
+  double t[Stages] = { 0, 0, 0, 0, 0 };
+  if (got <= 0 || !WIFEXITED(status) || WEXITSTATUS(status) != 0 ||
+    std::sscanf(buf, "%lld %lf %lf %lf %lf %lf", &triangles, &t[0], &t[1], &t[2], &t[3], &t[4]) !=
+      6)
+  {
+    return "";
+  }
+  char row[256];
+  std::snprintf(row, sizeof row,
+    "| %s | %lld | %d | %.4f | %.4f | %.4f | %.4f | %.4f | %.4f | %.0f |\n", c.name.c_str(),
+    triangles, threads, t[0], t[1], t[2], t[3], t[4], t[0] + t[1] + t[2] + t[3] + t[4],
+    usage.ru_maxrss / 1024.0);
+  return row;
+}
+}
+
+int main(int argc, char* argv[])
+{
+  Settings o;
+  if (!Parse(argc, argv, o))
+  {
+    std::fprintf(stderr,
+      "usage: quadcover_bench [--shared DIR] [--max-triangles N] [--repeat K] "
+      "[--quads N] [--out FILE]\n");
+    return 2;
+  }
   std::ostringstream table;
   table << "| surface | triangles | threads | curvature s | smooth s | matching s | param s | "
            "quads s | total s | peak RSS MiB |\n"
         << "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
-  for (const Case& c : cases)
+  for (const Case& c : Cases(o))
   {
     for (int threads : { 1, 2 })
     {
-      int fds[2];
-      if (pipe(fds) != 0)
-      {
-        return 1;
-      }
-      const pid_t pid = fork();
-      if (pid == 0)
-      {
-        close(fds[0]);
-        _exit(RunCase(c, threads, repeat, quads, fds[1]));
-      }
-      close(fds[1]);
-      char buf[128] = { 0 };
-      const ssize_t got = read(fds[0], buf, sizeof buf - 1);
-      close(fds[0]);
-      int status = 0;
-      struct rusage usage;
-      wait4(pid, &status, 0, &usage);
-      long long triangles = 0;
-      double seconds[Stages] = { 0, 0, 0, 0, 0 };
-      if (got <= 0 || !WIFEXITED(status) || WEXITSTATUS(status) != 0 ||
-        std::sscanf(buf, "%lld %lf %lf %lf %lf %lf", &triangles, &seconds[0], &seconds[1],
-          &seconds[2], &seconds[3], &seconds[4]) != 6)
+      const std::string row = RunInChild(c, threads, o);
+      if (row.empty())
       {
         std::fprintf(stderr, "quadcover_bench: case %s failed\n", c.name.c_str());
         continue;
       }
-      char row[256];
-      std::snprintf(row, sizeof row,
-        "| %s | %lld | %d | %.4f | %.4f | %.4f | %.4f | %.4f | %.4f | %.0f |\n", c.name.c_str(),
-        triangles, threads, seconds[0], seconds[1], seconds[2], seconds[3], seconds[4],
-        seconds[0] + seconds[1] + seconds[2] + seconds[3] + seconds[4], usage.ru_maxrss / 1024.0);
       table << row;
-      std::fputs(row, stderr);
+      std::fputs(row.c_str(), stderr);
     }
   }
   std::ostringstream doc;
-  doc << "Command: `" << command << "` (Release build, best of " << repeat << " runs)\n\n"
+  doc << "Command: `" << o.command << "` (Release build, best of " << o.repeat << " runs)\n\n"
       << table.str();
-  if (out.empty())
+  if (o.out.empty())
   {
     std::fputs(doc.str().c_str(), stdout);
   }
   else
   {
-    std::ofstream(out) << doc.str();
+    std::ofstream(o.out) << doc.str();
   }
   return 0;
 }

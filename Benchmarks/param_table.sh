@@ -1,20 +1,15 @@
 #!/usr/bin/env bash
 # The integer-grid map on the generated surfaces and the shared meshes at about 3,000 quads
 # (or QUADS): branch points, seams, energies, flipped triangles and seconds, as the Markdown
-# table kept in README.md.
+# table kept in Documentation/Algorithms.md.
 #   bash Benchmarks/param_table.sh [SHARED_DIR] [QUADS]      (after bash Scripts/build.sh)
 set -euo pipefail
-cd "$(dirname "$0")/.."
 shared=${1:-../shared/data}
 quads=${2:-3000}
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
+source "$(dirname "$0")/common.sh"
 echo "| surface | triangles | branch points (on grid) | seam edges | energy continuous → rounded → final | flipped continuous → rounded → final | param s |"
 echo "|---|---:|---|---:|---|---|---:|"
-for mesh in Data/sphere.obj Data/torus.obj Data/knot.obj Data/roundedcube.obj Data/cylinder.obj \
-  "$shared"/bunny-lowres.obj "$shared"/spot.obj "$shared"/fandisk.obj "$shared"/rocker-arm.obj \
-  "$shared"/cheburashka.obj "$shared"/teapot.obj; do
-  [ -f "$mesh" ] || continue
+for mesh in $(surfaces "$shared" and-generated); do
   build/bin/quadcover "$mesh" -o "$tmp/out.vtp" --stage param --target-quad-count "$quads" \
     --stats "$tmp/s.json"
   /usr/bin/python3 - "$mesh" "$tmp/s.json" <<'PY'

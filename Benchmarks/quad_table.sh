@@ -1,21 +1,16 @@
 #!/usr/bin/env bash
 # The quad meshes of the shared meshes (and the generated surfaces) at about QUADS quads (default
-# 6,500, the paper's Table 1 density): the figures kept in README.md.
+# 6,500, the paper's Table 1 density): the figures kept in Documentation/Algorithms.md.
 #   bash Benchmarks/quad_table.sh [SHARED_DIR] [QUADS] [QUADCOVER OPTIONS...]
 # (after bash Scripts/build.sh), e.g. ... ../shared/data 6500 --relaxation-iterations 10
 set -euo pipefail
-cd "$(dirname "$0")/.."
 shared=${1:-../shared/data}
 quads=${2:-6500}
 shift $(( $# < 2 ? $# : 2 ))
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
+source "$(dirname "$0")/common.sh"
 echo "| surface | vertices | quads | quad share | irregular inner (+ boundary) | edge-length RSD | angle RSD | scaled Jacobian min / mean | Hausdorff % | χ (input) | dropped cells | seconds (all stages) |"
 echo "|---|---:|---:|---:|---|---:|---:|---|---:|---|---:|---:|"
-for mesh in "$shared"/bunny-lowres.obj "$shared"/spot.obj "$shared"/fandisk.obj \
-  "$shared"/rocker-arm.obj "$shared"/cheburashka.obj "$shared"/teapot.obj Data/sphere.obj \
-  Data/torus.obj Data/knot.obj Data/roundedcube.obj Data/cylinder.obj; do
-  [ -f "$mesh" ] || continue
+for mesh in $(surfaces "$shared" and-generated); do
   build/bin/quadcover "$mesh" -o "$tmp/out.vtp" --target-quad-count "$quads" --stats "$tmp/s.json" \
     "$@" 2>/dev/null
   /usr/bin/python3 - "$mesh" "$tmp/s.json" <<'PY'

@@ -1,18 +1,13 @@
 #!/usr/bin/env bash
 # Branch points before and after branch-point optimization, and the singularities left, on the
-# generated surfaces and the shared meshes, as the Markdown table kept in README.md.
+# generated surfaces and the shared meshes, as the Markdown table kept in Documentation/Algorithms.md.
 #   bash Benchmarks/singularity_table.sh [SHARED_DIR]      (after bash Scripts/build.sh)
 set -euo pipefail
-cd "$(dirname "$0")/.."
 shared=${1:-../shared/data}
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
+source "$(dirname "$0")/common.sh"
 echo "| surface | triangles | chi | held frames | smoothing energy | branch points before → after | singularities (by index) | index sum |"
 echo "|---|---:|---:|---:|---|---|---|---:|"
-for mesh in Data/sphere.obj Data/torus.obj Data/knot.obj Data/roundedcube.obj Data/cylinder.obj \
-  "$shared"/bunny-lowres.obj "$shared"/spot.obj "$shared"/fandisk.obj "$shared"/rocker-arm.obj \
-  "$shared"/cheburashka.obj "$shared"/teapot.obj; do
-  [ -f "$mesh" ] || continue
+for mesh in $(surfaces "$shared" and-generated); do
   build/bin/quadcover "$mesh" -o "$tmp/out.vtp" --stage matching --stats "$tmp/s.json"
   /usr/bin/python3 - "$mesh" "$tmp/s.json" <<'PY'
 import json, os, sys

@@ -3,15 +3,13 @@
 # (vtkFrameSmoother, --smoothing-weight) and branch-point weight (vtkMatchingBuilder,
 # --branch-point-weight):
 # irregular inner vertices, edge-length RSD / angle RSD, and (!) where the map kept a flipped
-# triangle or a fan wound the wrong way. The table that chose the defaults, kept in README.md.
+# triangle or a fan wound the wrong way. The table that chose the defaults, kept in Documentation/Algorithms.md.
 #   bash Benchmarks/tuning_table.sh [SHARED_DIR] [QUADS]      (after bash Scripts/build.sh)
 set -euo pipefail
-cd "$(dirname "$0")/.."
 shared=${1:-../shared/data}
 quads=${2:-6500}
 pairs=("0.5 6" "0.9 4" "0.95 3" "0.95 4" "0.95 6" "0.98 4")
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
+source "$(dirname "$0")/common.sh"
 header="| surface |"
 rule="|---|"
 for p in "${pairs[@]}"; do
@@ -21,8 +19,8 @@ for p in "${pairs[@]}"; do
 done
 echo "$header"
 echo "$rule"
-for mesh in bunny-lowres spot fandisk rocker-arm cheburashka teapot; do
-  [ -f "$shared/$mesh.obj" ] || continue
+for mesh in $(surfaces "$shared"); do
+  mesh=$(basename "$mesh" .obj)
   row="| $mesh |"
   for p in "${pairs[@]}"; do
     set -- $p

@@ -171,18 +171,6 @@ void ReadFaces(OffLines& lines, long long nv, long long nf, vtkPolyData* out)
 }
 
 //------------------------------------------------------------------------------
-vtkOFFReader::vtkOFFReader()
-{
-  this->SetNumberOfInputPorts(0);
-}
-
-//------------------------------------------------------------------------------
-vtkOFFReader::~vtkOFFReader()
-{
-  this->SetFileName(nullptr);
-}
-
-//------------------------------------------------------------------------------
 int vtkOFFReader::RequestData(
   vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector)
 {
@@ -219,5 +207,4 @@ int vtkOFFReader::RequestData(
 void vtkOFFReader::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
-  os << indent << "FileName: " << (this->FileName ? this->FileName : "(none)") << "\n";
 }

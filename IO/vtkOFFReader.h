@@ -15,29 +15,21 @@
 #ifndef vtkOFFReader_h
 #define vtkOFFReader_h
 
-#include "vtkPolyDataAlgorithm.h"
+#include "vtkAbstractPolyDataReader.h"
 #include "vtkQuadCoverIOModule.h" // for export macro
 
-class VTKQUADCOVERIO_EXPORT vtkOFFReader : public vtkPolyDataAlgorithm
+class VTKQUADCOVERIO_EXPORT vtkOFFReader : public vtkAbstractPolyDataReader
 {
 public:
   static vtkOFFReader* New();
-  vtkTypeMacro(vtkOFFReader, vtkPolyDataAlgorithm);
+  vtkTypeMacro(vtkOFFReader, vtkAbstractPolyDataReader);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
-  ///@{
-  /** The file to read (default none). */
-  vtkSetStringMacro(FileName);
-  vtkGetStringMacro(FileName);
-  ///@}
-
 protected:
-  vtkOFFReader();
-  ~vtkOFFReader() override;
+  vtkOFFReader() = default;
+  ~vtkOFFReader() override = default;
 
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
-
-  char* FileName = nullptr;
 
 private:
   vtkOFFReader(const vtkOFFReader&) = delete;

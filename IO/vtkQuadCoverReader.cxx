@@ -81,18 +81,6 @@ vtkSmartPointer<vtkAlgorithm> MakeReader(const std::string& path, std::string& e
 }
 
 //------------------------------------------------------------------------------
-vtkQuadCoverReader::vtkQuadCoverReader()
-{
-  this->SetNumberOfInputPorts(0);
-}
-
-//------------------------------------------------------------------------------
-vtkQuadCoverReader::~vtkQuadCoverReader()
-{
-  this->SetFileName(nullptr);
-}
-
-//------------------------------------------------------------------------------
 bool vtkQuadCoverReader::CanReadFile(const char* fileName)
 {
   const std::string e = vtkQuadCoverFileChecks::Extension(fileName ? fileName : "");
@@ -144,5 +132,4 @@ int vtkQuadCoverReader::RequestData(
 void vtkQuadCoverReader::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
-  os << indent << "FileName: " << (this->FileName ? this->FileName : "(none)") << "\n";
 }

@@ -14,32 +14,24 @@
 #ifndef vtkQuadCoverReader_h
 #define vtkQuadCoverReader_h
 
-#include "vtkPolyDataAlgorithm.h"
+#include "vtkAbstractPolyDataReader.h"
 #include "vtkQuadCoverIOModule.h" // for export macro
 
-class VTKQUADCOVERIO_EXPORT vtkQuadCoverReader : public vtkPolyDataAlgorithm
+class VTKQUADCOVERIO_EXPORT vtkQuadCoverReader : public vtkAbstractPolyDataReader
 {
 public:
   static vtkQuadCoverReader* New();
-  vtkTypeMacro(vtkQuadCoverReader, vtkPolyDataAlgorithm);
+  vtkTypeMacro(vtkQuadCoverReader, vtkAbstractPolyDataReader);
   void PrintSelf(ostream& os, vtkIndent indent) override;
-
-  ///@{
-  /** The file to read (default none). */
-  vtkSetStringMacro(FileName);
-  vtkGetStringMacro(FileName);
-  ///@}
 
   /** True when the file name ends in an extension this reader knows (case ignored). */
   static bool CanReadFile(const char* fileName);
 
 protected:
-  vtkQuadCoverReader();
-  ~vtkQuadCoverReader() override;
+  vtkQuadCoverReader() = default;
+  ~vtkQuadCoverReader() override = default;
 
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
-
-  char* FileName = nullptr;
 
 private:
   vtkQuadCoverReader(const vtkQuadCoverReader&) = delete;

@@ -23,36 +23,32 @@ namespace
 /// The VTK writer for the extension, set up to write `surface` to `path`.
 vtkSmartPointer<vtkAlgorithm> MakeWriter(const std::string& path, vtkPolyData* surface)
 {
+  auto to = [&](auto writer) {
+    writer->SetFileName(path.c_str());
+    writer->SetInputData(surface);
+    return writer;
+  };
   const std::string ext = vtkQuadCoverFileChecks::Extension(path);
   if (ext == ".vtp")
   {
-    auto w = vtkSmartPointer<vtkXMLPolyDataWriter>::New();
-    w->SetFileName(path.c_str());
-    w->SetDataModeToAppended();
-    w->SetCompressorTypeToZLib();
-    w->SetInputData(surface);
-    return w;
+    auto xml = to(vtkSmartPointer<vtkXMLPolyDataWriter>::New());
+    xml->SetDataModeToAppended();
+    xml->SetCompressorTypeToZLib();
+    return xml;
   }
   if (ext == ".vtk")
   {
-    auto w = vtkSmartPointer<vtkPolyDataWriter>::New();
-    w->SetFileName(path.c_str());
-    w->SetFileTypeToBinary();
-    w->SetInputData(surface);
-    return w;
+    auto legacy = to(vtkSmartPointer<vtkPolyDataWriter>::New());
+    legacy->SetFileTypeToBinary();
+    return legacy;
   }
   if (ext == ".obj")
   {
-    auto w = vtkSmartPointer<vtkOBJWriter>::New();
-    w->SetFileName(path.c_str());
-    w->SetInputData(surface);
-    return w;
+    return to(vtkSmartPointer<vtkOBJWriter>::New());
   }
-  auto w = vtkSmartPointer<vtkPLYWriter>::New();
-  w->SetFileName(path.c_str());
-  w->SetFileTypeToBinary();
-  w->SetInputData(surface);
-  return w;
+  auto ply = to(vtkSmartPointer<vtkPLYWriter>::New());
+  ply->SetFileTypeToBinary();
+  return ply;
 }
 }
 

@@ -1,0 +1,20 @@
+# common.sh: what the table scripts share; source it. Moves to the repository, makes a scratch
+# folder $tmp that goes on exit, and lists the surfaces the tables run on.
+cd "$(dirname "${BASH_SOURCE[0]}")/.."
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+
+# The shared meshes the tables use (those present in $1), then with "and-generated" as $2 the
+# surfaces in Data/.
+surfaces() {
+  local name
+  for name in bunny-lowres spot fandisk rocker-arm cheburashka teapot; do
+    [ -f "$1/$name.obj" ] && echo "$1/$name.obj"
+  done
+  if [ "${2:-}" = and-generated ]; then
+    for name in sphere torus knot roundedcube cylinder; do
+      echo "Data/$name.obj"
+    done
+  fi
+  return 0
+}
