@@ -5,6 +5,7 @@ Needs QUADCOVER_CLI (the binary) and QUADCOVER_DATA (Data/); QUADCOVER_SHARED_DA
 import json
 import math
 import os
+import re
 import subprocess
 import tempfile
 import unittest
@@ -354,6 +355,19 @@ class CommandLine(unittest.TestCase):
         with open(doc, encoding="utf-8") as f:
             self.assertIn("```\n" + out + "```", f.read(),
                           "Documentation/CommandLine.md's copy of --help is not the program's")
+
+    def test_readme_states_the_defaults_the_program_has(self):
+        _, out, _ = run("--help")
+        defaults = dict(re.findall(r"\n  --(?:\[no-\])?([\w-]+).*\n.*\(default ([^)]+)\)", out))
+        readme = os.path.join(os.path.dirname(__file__), "..", "..", "README.md")
+        with open(readme, encoding="utf-8") as f:
+            rows = re.findall(r"^\| `--(?:no-)?([\w-]+)[^|]*\| ([^|]+) \|", f.read(), re.M)
+        self.assertGreater(len(rows), 5)
+        for flag, stated in rows:
+            with self.subTest(flag=flag):
+                self.assertIn(flag, defaults, "README names an option the program does not have")
+                if stated.strip() not in ("off", "on") or defaults[flag] in ("on", "off"):
+                    self.assertEqual(stated.strip(), defaults[flag])
 
     # ---- refused input: exit 1, one line ----
     def test_missing_file(self):
