@@ -189,11 +189,12 @@ void addLink(Eigen::VectorXd& diagonal, std::vector<Eigen::Triplet<Scalar>>& t, 
 class Descent
 {
 public:
-  Descent(const Smoothing& s, const SmootherOptions& options)
+  /// Factors the bound's matrix (progress: before and after the factorization).
+  Descent(const Smoothing& s, const SmootherOptions& options, const Progress& progress)
     : S(s)
     , Options(options)
   {
-    this->factor();
+    this->factor(progress);
     // Rounding in E is relative to the size of its terms, not to E (which may be ~0).
     const Problem& P = s.P;
     for (const Link& l : P.links)
@@ -244,7 +245,7 @@ public:
 private:
   /// The bound's matrix, plus a small proximal term that keeps it definite where nothing else
   /// does (it only adds a positive term to the bound, so the energy still never rises).
-  void factor()
+  void factor(const Progress& progress)
   {
     const Problem& P = S.P;
     const int n = S.n, nf = static_cast<int>(S.unknown.size());
@@ -271,6 +272,7 @@ private:
     }
     Eigen::SparseMatrix<double> H(n, n);
     H.setFromTriplets(t.begin(), t.end());
+    progress.report(0.2);
     if (n > 0)
     {
       Solver.compute(H);
@@ -279,6 +281,7 @@ private:
         throw std::runtime_error("smoothFrames: factorization failed");
       }
     }
+    progress.report(1.0);
   }
 
   /// dE/dalpha over the unknowns.
@@ -448,6 +451,7 @@ std::vector<Eigen::VectorXcd> globalStarts(
   const Smoothing& s, int numConstrained, const Progress& progress)
 {
   const GlobalSystem G(s);
+  progress.report(0.05);
   const double lambda = s.P.lambda;
   const double meanDiag = G.meanDiagonal(), meanMass = G.mass.sum() / s.n;
   const bool aligned = numConstrained > 0 || G.alignTotal > 1e-9 * G.smoothTotal;
@@ -471,6 +475,7 @@ std::vector<Eigen::VectorXcd> globalStarts(
   {
     u0 = solver.solve(G.b);
     starts.push_back(u0);
+    progress.report(0.3);
   }
   // The smoothest field matters where the curvature says little (a sphere's is noise: ratio 3e-4
   // of the two terms before lambda weighs them); on the shared meshes (ratios 0.08-0.12) the
@@ -542,8 +547,8 @@ SmootherResult smoothFrames(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F
   s.phi = vectorAngles(geometry.bases, frameU);
   setUpProblem(V, F, topo, geometry, weight, options, s, R);
   numberUnknowns(s, R);
-  Descent descent(s, options);
-  progress.report(0.05);
+  progress.report(0.01);
+  Descent descent(s, options, progress.part(0.01, 0.05));
   const bool global = options.globalStart && s.P.lambda > 0.0 && s.n > 0;
 
   // Run 1: from the input (held triangles turned onto their edges).
