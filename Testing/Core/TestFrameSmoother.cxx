@@ -248,17 +248,10 @@ TEST(FrameSmoother, ReportsProgressAndStopsWhenAsked)
     std::printf(
       "%s: %zu reports, %d iterations in the chosen run\n", name, fractions.size(), r.iterations);
     ASSERT_GT(fractions.size(), 10u);
+    // in order from 0 to 1, and so all within [0, 1]
+    EXPECT_TRUE(std::is_sorted(fractions.begin(), fractions.end()));
     EXPECT_EQ(fractions.front(), 0.0);
     EXPECT_EQ(fractions.back(), 1.0);
-    for (std::size_t i = 0; i < fractions.size(); ++i)
-    {
-      EXPECT_GE(fractions[i], 0.0);
-      EXPECT_LE(fractions[i], 1.0);
-      if (i > 0)
-      {
-        ASSERT_GE(fractions[i], fractions[i - 1]) << i;
-      }
-    }
     // Reporting changes nothing.
     EXPECT_EQ(r.energyHistory, plain.energyHistory);
     EXPECT_TRUE(r.frameU == plain.frameU);

@@ -509,17 +509,10 @@ TEST(Matchings, BranchPointOptimizationReportsProgressAndStopsWhenAsked)
   std::printf("%zu reports, %d singularities split, %d paths changed\n", fractions.size(), r.split,
     r.pathsChanged);
   ASSERT_GT(fractions.size(), 20u);
+  // in order from 0 to 1, and so all within [0, 1]
+  EXPECT_TRUE(std::is_sorted(fractions.begin(), fractions.end()));
   EXPECT_EQ(fractions.front(), 0.0);
   EXPECT_EQ(fractions.back(), 1.0);
-  for (std::size_t i = 0; i < fractions.size(); ++i)
-  {
-    EXPECT_GE(fractions[i], 0.0);
-    EXPECT_LE(fractions[i], 1.0);
-    if (i > 0)
-    {
-      ASSERT_GE(fractions[i], fractions[i - 1]) << i;
-    }
-  }
   // Reporting changes nothing.
   EXPECT_EQ(r.pathsChanged, plain.pathsChanged);
   EXPECT_EQ(r.costAfter, plain.costAfter);
