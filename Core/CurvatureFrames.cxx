@@ -1,3 +1,5 @@
+// CurvatureFrames.cxx: triangle normals, curvature tensors from the normal cycle, and the
+// curvature frames they give.
 #include "CurvatureFrames.h"
 
 #include "Parallel.h"
@@ -92,13 +94,11 @@ double quadratic(const Tensor& t, const Eigen::Vector3d& a, const Eigen::Vector3
     t[3] * (a.x() * b.y() + a.y() * b.x()) + t[4] * (a.x() * b.z() + a.z() * b.x()) +
     t[5] * (a.y() * b.z() + a.z() * b.y());
 }
-}
 
-CurvatureField computeCurvatureField(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F,
-  const MeshTopology& topo, const CurvatureOptions& options)
+void checkInputs(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F, const MeshTopology& topo,
+  const CurvatureOptions& options)
 {
-  const int nf = static_cast<int>(F.rows());
-  if (topo.numFaces != nf || topo.numVertices != V.rows())
+  if (topo.numFaces != F.rows() || topo.numVertices != V.rows())
   {
     throw std::invalid_argument("computeCurvatureField: topology does not match the mesh");
   }
@@ -110,16 +110,13 @@ CurvatureField computeCurvatureField(const Eigen::MatrixX3d& V, const Eigen::Mat
   {
     throw std::invalid_argument("computeCurvatureField: radius must be finite and >= 0");
   }
+}
 
-  CurvatureField out;
-  std::vector<char> degenerate;
-  out.normals = computeFaceNormals(V, F, topo, &degenerate);
-  out.degenerateFaces = static_cast<int>(std::count(degenerate.begin(), degenerate.end(), 1));
-  out.medianEdgeLength = medianEdgeLength(V, topo);
-  out.curvatureRadius = options.neighborhoodRadius * out.medianEdgeLength;
-  const Eigen::MatrixX3d& N = out.normals;
-
-  // Per-edge contribution beta |e| e e^T, beta > 0 where the edge is convex.
+/// Per-edge contribution beta |e| e e^T, beta > 0 where the edge is convex (#E; zero on edges
+/// without two triangles, with a degenerate one, or of zero length).
+std::vector<Tensor> edgeTensors(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F,
+  const MeshTopology& topo, const Eigen::MatrixX3d& N, const std::vector<char>& degenerate)
+{
   const int ne = topo.numEdges();
   std::vector<Tensor> edgeTensor(ne, Tensor::Zero());
   for (int e = 0; e < ne; ++e)
@@ -147,16 +144,31 @@ CurvatureField computeCurvatureField(const Eigen::MatrixX3d& V, const Eigen::Mat
     const double beta = std::atan2(n0.cross(n1).dot(d), n0.dot(n1));
     edgeTensor[e] = outer(d, beta * len);
   }
+  return edgeTensor;
+}
 
-  // Per-face half sums and areas, centroids.
-  std::vector<Tensor> faceTensor(nf);
-  Eigen::VectorXd area(nf);
-  Eigen::MatrixX3d centroid(nf, 3);
+/// What each triangle brings to a neighbourhood: half the tensors of its edges, its area, and
+/// where it is (its centroid).
+struct FaceSums
+{
+  std::vector<Tensor> tensor; ///< #F
+  Eigen::VectorXd area;       ///< #F
+  Eigen::MatrixX3d centroid;  ///< #F x 3
+};
+
+FaceSums faceSums(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F, const MeshTopology& topo,
+  const std::vector<Tensor>& edgeTensor)
+{
+  const int nf = static_cast<int>(F.rows());
+  FaceSums S;
+  S.tensor.resize(nf);
+  S.area.resize(nf);
+  S.centroid.resize(nf, 3);
   for (int f = 0; f < nf; ++f)
   {
     const Eigen::Vector3d a = V.row(F(f, 0)), b = V.row(F(f, 1)), c = V.row(F(f, 2));
-    area[f] = 0.5 * (b - a).cross(c - a).norm();
-    centroid.row(f) = ((a + b + c) / 3.0).transpose();
+    S.area[f] = 0.5 * (b - a).cross(c - a).norm();
+    S.centroid.row(f) = ((a + b + c) / 3.0).transpose();
     Tensor t = Tensor::Zero();
     for (int k = 0; k < 3; ++k)
     {
@@ -166,105 +178,169 @@ CurvatureField computeCurvatureField(const Eigen::MatrixX3d& V, const Eigen::Mat
         t += 0.5 * edgeTensor[e];
       }
     }
-    faceTensor[f] = t;
+    S.tensor[f] = t;
+  }
+  return S;
+}
+
+/// Sums the tensors and areas of the triangles around one, breadth-first over edge neighbours
+/// whose centroid lies closer than the radius; one per worker thread, its scratch reused.
+class NeighborhoodSummer
+{
+public:
+  NeighborhoodSummer(const MeshTopology& topo, const FaceSums& sums, double r2, size_t cap)
+    : Topo(topo)
+    , Sums(sums)
+    , R2(r2)
+    , Cap(cap)
+    , Stamp(r2 > 0.0 ? topo.numFaces : 0, -1)
+  {}
+
+  /// The tensor summed around f and divided by the area summed (as is where that area is 0).
+  /// @return whether the neighbourhood was cut at the cap
+  bool sum(int f, Tensor& H)
+  {
+    H = Sums.tensor[f];
+    double A = Sums.area[f];
+    bool truncated = false;
+    if (R2 > 0.0)
+    {
+      Queue.clear();
+      Queue.push_back(f);
+      Stamp[f] = f;
+      const Eigen::RowVector3d cf = Sums.centroid.row(f);
+      for (size_t q = 0; q < Queue.size() && Queue.size() < Cap; ++q)
+      {
+        const int g = Queue[q];
+        for (int k = 0; k < 3 && Queue.size() < Cap; ++k)
+        {
+          const int h = Topo.faceNeighbors(g, k);
+          if (h < 0 || Stamp[h] == f)
+          {
+            continue;
+          }
+          Stamp[h] = f;
+          if ((Sums.centroid.row(h) - cf).squaredNorm() < R2)
+          {
+            H += Sums.tensor[h];
+            A += Sums.area[h];
+            Queue.push_back(h);
+          }
+        }
+      }
+      truncated = Queue.size() >= Cap;
+    }
+    if (A > 0.0)
+    {
+      H /= A;
+    }
+    return truncated;
   }
 
+private:
+  const MeshTopology& Topo;
+  const FaceSums& Sums;
+  const double R2;
+  const size_t Cap;
+  std::vector<int> Stamp; // per-block visit marks
+  std::vector<int> Queue;
+};
+
+/// Curvatures, directions, frame and weight of triangle f with unit normal n from its
+/// neighbourhood's tensor H.
+void setPrincipalFrame(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F, int f,
+  const Eigen::Vector3d& n, const Tensor& H, CurvatureField& out)
+{
+  // Tangent basis from the longest edge (any tangent if it is parallel to n).
+  Eigen::Vector3d t1 = Eigen::Vector3d::Zero();
+  for (int k = 0; k < 3; ++k)
+  {
+    const Eigen::Vector3d e = V.row(F(f, (k + 1) % 3)) - V.row(F(f, k));
+    t1 = e.squaredNorm() > t1.squaredNorm() ? e : t1;
+  }
+  t1 -= t1.dot(n) * n;
+  if (!(t1.squaredNorm() > 1e-24 * std::max(1.0, V.row(F(f, 0)).squaredNorm())))
+  {
+    t1 = n.unitOrthogonal();
+  }
+  t1.normalize();
+  const Eigen::Vector3d t2 = n.cross(t1);
+  // The edge tensor's value along t is the curvature across t: rotate by 90 degrees.
+  const double h11 = quadratic(H, t1, t1), h12 = quadratic(H, t1, t2), h22 = quadratic(H, t2, t2);
+  const double a = h22, b = -h12, c = h11; // curvature tensor [[a b][b c]] in (t1, t2)
+  const double mean = 0.5 * (a + c);
+  const double dev = std::sqrt(0.25 * (a - c) * (a - c) + b * b);
+  const double k1 = mean + dev, k2 = mean - dev;
+  const double theta = 0.5 * std::atan2(2.0 * b, a - c);
+  const Eigen::Vector3d d1 = std::cos(theta) * t1 + std::sin(theta) * t2;
+  const Eigen::Vector3d d2 = n.cross(d1);
+  out.curvatures(f, 0) = k1;
+  out.curvatures(f, 1) = k2;
+  out.direction1.row(f) = d1.transpose();
+  out.direction2.row(f) = d2.transpose();
+  out.frameU.row(f) = d2.transpose();
+  out.frameV.row(f) = n.cross(d2).transpose();
+  const double norm = std::sqrt(k1 * k1 + k2 * k2);
+  out.weight[f] = norm > 0.0 ? std::abs(k1 - k2) / norm : 0.0;
+}
+
+/// Triangle f has no normal at all (an isolated degenerate triangle): nothing to say there.
+void setZeroFrame(int f, CurvatureField& out)
+{
+  out.curvatures.row(f).setZero();
+  out.direction1.row(f).setZero();
+  out.direction2.row(f).setZero();
+  out.frameU.row(f).setZero();
+  out.frameV.row(f).setZero();
+  out.weight[f] = 0.0;
+}
+
+void resizeFrames(int nf, CurvatureField& out)
+{
   out.curvatures.resize(nf, 2);
   out.direction1.resize(nf, 3);
   out.direction2.resize(nf, 3);
   out.frameU.resize(nf, 3);
   out.frameV.resize(nf, 3);
   out.weight.resize(nf);
+}
+}
+
+CurvatureField computeCurvatureField(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F,
+  const MeshTopology& topo, const CurvatureOptions& options)
+{
+  checkInputs(V, F, topo, options);
+  const int nf = static_cast<int>(F.rows());
+  CurvatureField out;
+  std::vector<char> degenerate;
+  out.normals = computeFaceNormals(V, F, topo, &degenerate);
+  out.degenerateFaces = static_cast<int>(std::count(degenerate.begin(), degenerate.end(), 1));
+  out.medianEdgeLength = medianEdgeLength(V, topo);
+  out.curvatureRadius = options.neighborhoodRadius * out.medianEdgeLength;
+  const Eigen::MatrixX3d& N = out.normals;
+  const FaceSums sums = faceSums(V, F, topo, edgeTensors(V, F, topo, N, degenerate));
+
+  resizeFrames(nf, out);
   const double r2 = out.curvatureRadius * out.curvatureRadius;
   const int threads = options.numberOfThreads > 0 ? options.numberOfThreads : defaultThreadCount();
   const size_t cap =
     options.maximumNeighborhood > 0 ? static_cast<size_t>(options.maximumNeighborhood) : size_t(-1);
   std::vector<int> truncated(std::max(1, threads), 0);
-
   parallelFor(nf, threads, [&](int begin, int end, int thread) {
-    std::vector<int> stamp(r2 > 0.0 ? nf : 0, -1); // per-block visit marks
-    std::vector<int> queue;
+    NeighborhoodSummer neighborhood(topo, sums, r2, cap);
+    Tensor H;
     for (int f = begin; f < end; ++f)
     {
-      // Breadth-first over edge neighbours whose centroid lies closer than the radius.
-      Tensor H = faceTensor[f];
-      double A = area[f];
-      if (r2 > 0.0)
-      {
-        queue.clear();
-        queue.push_back(f);
-        stamp[f] = f;
-        const Eigen::RowVector3d cf = centroid.row(f);
-        for (size_t q = 0; q < queue.size() && queue.size() < cap; ++q)
-        {
-          const int g = queue[q];
-          for (int k = 0; k < 3 && queue.size() < cap; ++k)
-          {
-            const int h = topo.faceNeighbors(g, k);
-            if (h < 0 || stamp[h] == f)
-            {
-              continue;
-            }
-            stamp[h] = f;
-            if ((centroid.row(h) - cf).squaredNorm() < r2)
-            {
-              H += faceTensor[h];
-              A += area[h];
-              queue.push_back(h);
-            }
-          }
-        }
-        truncated[thread] += queue.size() >= cap ? 1 : 0;
-      }
-      if (A > 0.0)
-      {
-        H /= A;
-      }
-
+      truncated[thread] += neighborhood.sum(f, H) ? 1 : 0;
       const Eigen::Vector3d n = N.row(f);
       if (n.squaredNorm() == 0.0)
       {
-        // No normal at all (an isolated degenerate triangle): nothing to say here.
-        out.curvatures.row(f).setZero();
-        out.direction1.row(f).setZero();
-        out.direction2.row(f).setZero();
-        out.frameU.row(f).setZero();
-        out.frameV.row(f).setZero();
-        out.weight[f] = 0.0;
-        continue;
+        setZeroFrame(f, out);
       }
-      // Tangent basis from the longest edge (any tangent if it is parallel to n).
-      Eigen::Vector3d t1 = Eigen::Vector3d::Zero();
-      for (int k = 0; k < 3; ++k)
+      else
       {
-        const Eigen::Vector3d e = V.row(F(f, (k + 1) % 3)) - V.row(F(f, k));
-        t1 = e.squaredNorm() > t1.squaredNorm() ? e : t1;
+        setPrincipalFrame(V, F, f, n, H, out);
       }
-      t1 -= t1.dot(n) * n;
-      if (!(t1.squaredNorm() > 1e-24 * std::max(1.0, V.row(F(f, 0)).squaredNorm())))
-      {
-        t1 = n.unitOrthogonal();
-      }
-      t1.normalize();
-      const Eigen::Vector3d t2 = n.cross(t1);
-      // The edge tensor's value along t is the curvature across t: rotate by 90 degrees.
-      const double h11 = quadratic(H, t1, t1), h12 = quadratic(H, t1, t2),
-                   h22 = quadratic(H, t2, t2);
-      const double a = h22, b = -h12, c = h11; // curvature tensor [[a b][b c]] in (t1, t2)
-      const double mean = 0.5 * (a + c);
-      const double dev = std::sqrt(0.25 * (a - c) * (a - c) + b * b);
-      const double k1 = mean + dev, k2 = mean - dev;
-      const double theta = 0.5 * std::atan2(2.0 * b, a - c);
-      const Eigen::Vector3d d1 = std::cos(theta) * t1 + std::sin(theta) * t2;
-      const Eigen::Vector3d d2 = n.cross(d1);
-      out.curvatures(f, 0) = k1;
-      out.curvatures(f, 1) = k2;
-      out.direction1.row(f) = d1.transpose();
-      out.direction2.row(f) = d2.transpose();
-      out.frameU.row(f) = d2.transpose();
-      out.frameV.row(f) = n.cross(d2).transpose();
-      const double norm = std::sqrt(k1 * k1 + k2 * k2);
-      out.weight[f] = norm > 0.0 ? std::abs(k1 - k2) / norm : 0.0;
     }
   });
   for (int t : truncated)

@@ -1,28 +1,22 @@
+// CutGraph.cxx: the cut graph, grown from a spanning tree of the triangles and pruned.
 #include "CutGraph.h"
 
+#include <algorithm>
 #include <queue>
 #include <stdexcept>
+#include <utility>
+#include <vector>
 
 namespace quadcover
 {
-
-CutGraph computeCutGraph(const MeshTopology& topo, const std::vector<char>& terminal)
+namespace
 {
-  const int nf = topo.numFaces, nv = topo.numVertices, ne = topo.numEdges();
-  if (!topo.isManifold())
-  {
-    throw std::invalid_argument("computeCutGraph: the surface is not manifold");
-  }
-  if (!terminal.empty() && static_cast<int>(terminal.size()) != nv)
-  {
-    throw std::invalid_argument("computeCutGraph: one terminal flag per point expected");
-  }
-  CutGraph G;
-  G.onCut.assign(ne, 0);
-
-  // Spanning tree of the triangles across inner edges; every inner edge it does not cross is
-  // cut to begin with.
-  std::vector<char> crossed(ne, 0), reached(nf, 0);
+/// Breadth-first spanning trees of the triangles across inner edges, one per component, each
+/// grown from its lowest triangle. @return #E, 1 for an edge a tree crosses
+std::vector<char> spanningTreeEdges(const MeshTopology& topo)
+{
+  const int nf = topo.numFaces;
+  std::vector<char> crossed(topo.numEdges(), 0), reached(nf, 0);
   std::queue<int> queue;
   for (int seed = 0; seed < nf; ++seed)
   {
@@ -48,34 +42,64 @@ CutGraph computeCutGraph(const MeshTopology& topo, const std::vector<char>& term
       }
     }
   }
-  // Inner edges around each point; degree counts those on the cut, kept current below.
-  std::vector<std::vector<std::pair<int, int>>> adjacent(nv); // (neighbour, inner edge)
-  std::vector<int> degree(nv, 0);
-  for (int e = 0; e < ne; ++e)
+  return crossed;
+}
+
+/// The cut while it is being shaped: the inner edges around each point, and how many of them are
+/// on the cut.
+struct CutState
+{
+  const MeshTopology& topo;
+  const std::vector<char>& terminal;
+  std::vector<char>& onCut;
+  std::vector<std::vector<std::pair<int, int>>> adjacent; ///< #V (neighbour, inner edge)
+  std::vector<int> degree;                                ///< #V cut edges at the point
+
+  /// A point where a cut may end: on the boundary (where the cut surface's border already runs)
+  /// or a terminal.
+  bool anchored(int v) const
+  {
+    return topo.boundaryVertex[v] || (!terminal.empty() && terminal[v]);
+  }
+
+  /// Puts the inner edge e between a and b on the cut.
+  void cut(int e, int a, int b)
+  {
+    onCut[e] = 1;
+    ++degree[a];
+    ++degree[b];
+  }
+};
+
+/// Every inner edge the spanning trees do not cross is cut to begin with.
+void cutAllButTree(CutState& S, const std::vector<char>& crossed)
+{
+  const MeshTopology& topo = S.topo;
+  S.adjacent.assign(topo.numVertices, {});
+  S.degree.assign(topo.numVertices, 0);
+  for (int e = 0; e < topo.numEdges(); ++e)
   {
     if (topo.edgeFaceCount[e] != 2)
     {
       continue;
     }
     const int a = topo.edges(e, 0), b = topo.edges(e, 1);
-    adjacent[a].push_back({ b, e });
-    adjacent[b].push_back({ a, e });
+    S.adjacent[a].push_back({ b, e });
+    S.adjacent[b].push_back({ a, e });
     if (!crossed[e])
     {
-      G.onCut[e] = 1;
-      ++degree[a];
-      ++degree[b];
+      S.cut(e, a, b);
     }
   }
+}
 
-  // Prune dangling branches: a point with one cut edge that is neither a terminal nor on the
-  // boundary (where the cut surface's border already runs) lets its edge go.
-  auto anchored = [&](
-                    int v) { return topo.boundaryVertex[v] || (!terminal.empty() && terminal[v]); };
+/// Prunes dangling branches: a point with one cut edge that is not anchored lets its edge go.
+void pruneDanglingBranches(CutState& S)
+{
   std::vector<int> stack;
-  for (int v = 0; v < nv; ++v)
+  for (int v = 0; v < S.topo.numVertices; ++v)
   {
-    if (degree[v] == 1 && !anchored(v))
+    if (S.degree[v] == 1 && !S.anchored(v))
     {
       stack.push_back(v);
     }
@@ -84,32 +108,38 @@ CutGraph computeCutGraph(const MeshTopology& topo, const std::vector<char>& term
   {
     const int v = stack.back();
     stack.pop_back();
-    if (degree[v] != 1 || anchored(v))
+    if (S.degree[v] != 1 || S.anchored(v))
     {
       continue;
     }
-    for (const auto& [w, e] : adjacent[v])
+    for (const auto& [w, e] : S.adjacent[v])
     {
-      if (!G.onCut[e])
+      if (!S.onCut[e])
       {
         continue;
       }
-      G.onCut[e] = 0;
-      --degree[v];
-      if (--degree[w] == 1 && !anchored(w))
+      S.onCut[e] = 0;
+      --S.degree[v];
+      if (--S.degree[w] == 1 && !S.anchored(w))
       {
         stack.push_back(w);
       }
       break;
     }
   }
-  // A terminal that no cut reaches (a closed disk-like component whose tree left nothing, e.g.
-  // a sphere with one terminal) needs a path: join it to the cut, or to a boundary, or to the
-  // component's first terminal, by the shortest edge path.
+}
+
+/// A terminal that no cut reaches (a closed disk-like component whose tree left nothing, e.g. a
+/// sphere with one terminal) needs a path: join it to the cut, or to a boundary, or to the
+/// component's first terminal, by the shortest edge path.
+void joinLoneTerminals(CutState& S)
+{
+  const MeshTopology& topo = S.topo;
+  const int nv = topo.numVertices;
   std::vector<int> from(nv, -1), via(nv, -1), stamp(nv, -1);
-  for (int v = 0; v < nv && !terminal.empty(); ++v)
+  for (int v = 0; v < nv && !S.terminal.empty(); ++v)
   {
-    if (!terminal[v] || degree[v] > 0 || topo.boundaryVertex[v])
+    if (!S.terminal[v] || S.degree[v] > 0 || topo.boundaryVertex[v])
     {
       continue;
     }
@@ -123,7 +153,7 @@ CutGraph computeCutGraph(const MeshTopology& topo, const std::vector<char>& term
     {
       const int u = q.front();
       q.pop();
-      for (const auto& [w, e] : adjacent[u])
+      for (const auto& [w, e] : S.adjacent[u])
       {
         if (stamp[w] == v)
         {
@@ -132,7 +162,7 @@ CutGraph computeCutGraph(const MeshTopology& topo, const std::vector<char>& term
         stamp[w] = v;
         from[w] = u;
         via[w] = e;
-        if (degree[w] > 0 || topo.boundaryVertex[w] || (terminal[w] && w < v))
+        if (S.degree[w] > 0 || topo.boundaryVertex[w] || (S.terminal[w] && w < v))
         {
           target = w;
           break;
@@ -142,13 +172,16 @@ CutGraph computeCutGraph(const MeshTopology& topo, const std::vector<char>& term
     }
     for (int x = target; x >= 0 && x != v; x = from[x])
     {
-      G.onCut[via[x]] = 1;
-      ++degree[x];
-      ++degree[from[x]];
+      S.cut(via[x], x, from[x]);
     }
   }
+}
 
-  // Copies of each point once cut open, and the Euler characteristic per component.
+/// The number of cut edges, the copies of each point once cut open, and the Euler
+/// characteristic of the cut surface per component.
+void countCutSurface(const MeshTopology& topo, const std::vector<int>& degree, CutGraph& G)
+{
+  const int nv = topo.numVertices, ne = topo.numEdges();
   G.copies.assign(nv, 0);
   for (int e = 0; e < ne; ++e)
   {
@@ -176,10 +209,30 @@ CutGraph computeCutGraph(const MeshTopology& topo, const std::vector<char>& term
   {
     G.cutEuler[topo.vertexComponent[topo.edges(e, 0)]] -= 1 + G.onCut[e];
   }
-  for (int f = 0; f < nf; ++f)
+  for (int f = 0; f < topo.numFaces; ++f)
   {
     G.cutEuler[topo.faceComponent[f]] += 1;
   }
+}
+}
+
+CutGraph computeCutGraph(const MeshTopology& topo, const std::vector<char>& terminal)
+{
+  if (!topo.isManifold())
+  {
+    throw std::invalid_argument("computeCutGraph: the surface is not manifold");
+  }
+  if (!terminal.empty() && static_cast<int>(terminal.size()) != topo.numVertices)
+  {
+    throw std::invalid_argument("computeCutGraph: one terminal flag per point expected");
+  }
+  CutGraph G;
+  G.onCut.assign(topo.numEdges(), 0);
+  CutState S{ topo, terminal, G.onCut, {}, {} };
+  cutAllButTree(S, spanningTreeEdges(topo));
+  pruneDanglingBranches(S);
+  joinLoneTerminals(S);
+  countCutSurface(topo, S.degree, G);
   return G;
 }
 

@@ -1,3 +1,4 @@
+// FrameField.cxx: triangle bases, transport, angle defects, frames as angles, sharp edges.
 #include "FrameField.h"
 
 #include "CurvatureFrames.h"
@@ -118,23 +119,14 @@ Eigen::MatrixX3d computeTransport(const Eigen::MatrixX3d& V, const Eigen::Matrix
 {
   const int nf = static_cast<int>(F.rows());
   Eigen::MatrixX3d T = Eigen::MatrixX3d::Zero(nf, 3);
-  for (int f = 0; f < nf; ++f)
-  {
-    for (int k = 0; k < 3; ++k)
-    {
-      const int g = topo.faceNeighbors(f, k);
-      if (g < 0)
-      {
-        continue;
-      }
-      // The shared edge, as one 3D vector, measured in both bases: unfolding g onto f about the
-      // edge keeps the edge fixed, so angles shift by the difference.
-      const Eigen::Vector3d e = V.row(F(f, (k + 1) % 3)) - V.row(F(f, k));
-      const double af = std::atan2(e.dot(bases.b2.row(f)), e.dot(bases.b1.row(f)));
-      const double ag = std::atan2(e.dot(bases.b2.row(g)), e.dot(bases.b1.row(g)));
-      T(f, k) = wrapAngle(af - ag);
-    }
-  }
+  forEachNeighbor(topo, [&](int f, int k, int g) {
+    // The shared edge, as one 3D vector, measured in both bases: unfolding g onto f about the
+    // edge keeps the edge fixed, so angles shift by the difference.
+    const Eigen::Vector3d e = V.row(F(f, (k + 1) % 3)) - V.row(F(f, k));
+    const double af = std::atan2(e.dot(bases.b2.row(f)), e.dot(bases.b1.row(f)));
+    const double ag = std::atan2(e.dot(bases.b2.row(g)), e.dot(bases.b1.row(g)));
+    T(f, k) = wrapAngle(af - ag);
+  });
   return T;
 }
 

@@ -1,3 +1,5 @@
+// FrameSmoother.cxx: smoothing and curvature alignment of a frame field by a majorized descent,
+// run from the input and from the globally optimal fields.
 #include "FrameSmoother.h"
 
 #include "SparseSolver.h"
@@ -11,7 +13,7 @@ namespace quadcover
 {
 namespace
 {
-constexpr double Pi = 3.14159265358979323846;
+using Complex = std::complex<double>;
 
 /// One inner edge: faces f < g, the frames' misalignment before rotation, the weight.
 struct Link
@@ -42,15 +44,23 @@ struct Problem
     return lambda * smooth + (1.0 - lambda) * align;
   }
 };
-}
 
-SmootherResult smoothFrames(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F,
-  const MeshTopology& topo, const FrameGeometry& geometry, const Eigen::MatrixX3d& frameU,
-  const Eigen::MatrixX3d& frameV, const Eigen::VectorXd& weight, const SmootherOptions& options,
-  const Progress& progress)
+/// What every run shares: the energy, the input frames' angles, the held frames and the
+/// numbering of the free ones.
+struct Smoothing
 {
-  progress.report(0.0);
-  const int nf = static_cast<int>(F.rows());
+  Problem P;
+  Eigen::VectorXd phi;        ///< #F angles of the input frames
+  Eigen::VectorXd fixedAlpha; ///< #F the turn that puts a held frame onto its edge
+  std::vector<int> unknown;   ///< #F index of the triangle's unknown, -1 where its frame is held
+  int n = 0;                  ///< number of unknowns
+};
+
+void checkInputs(const Eigen::MatrixX3i& F, const MeshTopology& topo,
+  const Eigen::MatrixX3d& frameU, const Eigen::MatrixX3d& frameV, const Eigen::VectorXd& weight,
+  const SmootherOptions& options)
+{
+  const Eigen::Index nf = F.rows();
   if (frameU.rows() != nf || frameV.rows() != nf || weight.size() != nf || topo.numFaces != nf)
   {
     throw std::invalid_argument("smoothFrames: one frame and one weight per triangle expected");
@@ -63,8 +73,16 @@ SmootherResult smoothFrames(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F
   {
     throw std::invalid_argument("smoothFrames: smoothing weight must lie in [0, 1]");
   }
-  const Eigen::VectorXd phi = vectorAngles(geometry.bases, frameU);
-  Problem P;
+}
+
+/// The energy's terms (areas, weights, a link per inner edge) and the frames held along
+/// boundaries and sharp edges: R's constrained, featureEdges and boundaryEdges, s.fixedAlpha.
+void setUpProblem(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F, const MeshTopology& topo,
+  const FrameGeometry& geometry, const Eigen::VectorXd& weight, const SmootherOptions& options,
+  Smoothing& s, SmootherResult& R)
+{
+  const int nf = static_cast<int>(F.rows());
+  Problem& P = s.P;
   P.lambda = options.smoothingWeight;
   P.area.resize(nf);
   for (int f = 0; f < nf; ++f)
@@ -74,9 +92,8 @@ SmootherResult smoothFrames(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F
   }
   P.weight = weight.unaryExpr([](double w) { return std::isfinite(w) && w > 0.0 ? w : 0.0; });
 
-  SmootherResult R;
   R.constrained.assign(nf, 0);
-  Eigen::VectorXd fixedAlpha = Eigen::VectorXd::Zero(nf);
+  s.fixedAlpha = Eigen::VectorXd::Zero(nf);
   Eigen::VectorXd constraintLength = Eigen::VectorXd::Zero(nf);
   auto hold = [&](int f, int k) {
     const double len = (V.row(F(f, (k + 1) % 3)) - V.row(F(f, k))).norm();
@@ -84,7 +101,7 @@ SmootherResult smoothFrames(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F
     {
       constraintLength[f] = len;
       R.constrained[f] = 1;
-      fixedAlpha[f] = wrapQuarter(geometry.edgeAngle(f, k) - phi[f]);
+      s.fixedAlpha[f] = wrapQuarter(geometry.edgeAngle(f, k) - s.phi[f]);
     }
   };
   // Sharp edges, kept only in chains of at least minimumFeatureLength edges.
@@ -120,14 +137,18 @@ SmootherResult smoothFrames(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F
       {
         const double rho = geometry.transport(f, k);
         P.links.push_back(
-          { f, g, wrapAngle(phi[f] - phi[g] - rho), rho, (P.area[f] + P.area[g]) / 3.0 });
+          { f, g, wrapAngle(s.phi[f] - s.phi[g] - rho), rho, (P.area[f] + P.area[g]) / 3.0 });
       }
     }
   }
+}
 
-  // Unknowns: the free triangles.
-  std::vector<int> unknown(nf, -1);
-  int n = 0;
+/// The unknowns: the free triangles, in order (R.numConstrained counts the others).
+void numberUnknowns(Smoothing& s, SmootherResult& R)
+{
+  const int nf = static_cast<int>(R.constrained.size());
+  s.unknown.assign(nf, -1);
+  s.n = 0;
   for (int f = 0; f < nf; ++f)
   {
     if (R.constrained[f])
@@ -136,38 +157,111 @@ SmootherResult smoothFrames(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F
     }
     else
     {
-      unknown[f] = n++;
+      s.unknown[f] = s.n++;
     }
   }
-  const double lambda = P.lambda;
+}
 
-  // The majorizer's matrix: 16 lambda w per link (graph Laplacian) + 2 (1 - lambda) A w, plus a
-  // small proximal term that keeps it definite where nothing else does (it only adds a positive
-  // term to the bound, so the energy still never rises).
-  Eigen::SparseMatrix<double> H;
-  Eigen::VectorXd diagonal = Eigen::VectorXd::Zero(n);
+/// Adds a link's term c |x_a - turn x_b|^2 to a system over the unknowns (a, b: the link's ends'
+/// unknowns, -1 where held): c to the diagonal at each free end (kept apart, the caller adds the
+/// diagonal's triplets), and -c turn, -c conj(turn) between two free ends.
+template<typename Scalar>
+void addLink(Eigen::VectorXd& diagonal, std::vector<Eigen::Triplet<Scalar>>& t, int a, int b,
+  double c, const Scalar& turn)
+{
+  if (a >= 0)
+    diagonal[a] += c;
+  if (b >= 0)
+    diagonal[b] += c;
+  if (a >= 0 && b >= 0)
   {
+    t.emplace_back(a, b, -c * turn);
+    t.emplace_back(b, a, -c * Eigen::numext::conj(turn));
+  }
+}
+
+/**
+ * The descent: each iteration minimizes a quadratic upper bound of E (1 - cos is bounded by its
+ * second-order expansion with curvature 1), so E never increases. The bound's matrix, 16 lambda
+ * w per link (a graph Laplacian) + 2 (1 - lambda) A w, does not change: it is factored once for
+ * every run.
+ */
+class Descent
+{
+public:
+  /// Factors the bound's matrix (progress: before and after the factorization).
+  Descent(const Smoothing& s, const SmootherOptions& options, const Progress& progress)
+    : S(s)
+    , Options(options)
+  {
+    this->factor(progress);
+    // Rounding in E is relative to the size of its terms, not to E (which may be ~0).
+    const Problem& P = s.P;
+    for (const Link& l : P.links)
+    {
+      EnergyScale += P.lambda * l.w;
+    }
+    EnergyScale += (1.0 - P.lambda) * (P.area.array() * P.weight.array()).sum();
+  }
+
+  /// Descends from alpha (#F) until an iteration gains less than the convergence tolerance.
+  /// @param[out] history E at the start and after every iteration
+  Eigen::VectorXd run(
+    Eigen::VectorXd alpha, std::vector<double>& history, int& iterations, const Progress& progress)
+  {
+    double E = S.P.energy(alpha);
+    history.assign(1, E);
+    iterations = 0;
+    Eigen::VectorXd grad(S.n);
+    for (int it = 0; it < Options.maximumNumberOfIterations && S.n > 0; ++it)
+    {
+      progress.report(static_cast<double>(it) / Options.maximumNumberOfIterations);
+      this->gradient(alpha, grad);
+      const Eigen::VectorXd step = Solver.solve(-grad);
+      double En = 0.0;
+      Eigen::VectorXd next = this->longestStep(alpha, step, En);
+      if (!(En <= E))
+      {
+        // The bound guarantees descent: only rounding at the minimum gets here.
+        Rejected += En - E > 1e-12 * EnergyScale || !std::isfinite(En);
+        break;
+      }
+      ++iterations;
+      alpha = next;
+      history.push_back(En);
+      const bool done = E - En <= Options.convergenceTolerance * std::max(E, 1e-300);
+      E = En;
+      if (done)
+      {
+        break;
+      }
+    }
+    return alpha;
+  }
+
+  /// Steps of all runs that raised the energy by more than rounding.
+  int rejected() const { return Rejected; }
+
+private:
+  /// The bound's matrix, plus a small proximal term that keeps it definite where nothing else
+  /// does (it only adds a positive term to the bound, so the energy still never rises).
+  void factor(const Progress& progress)
+  {
+    const Problem& P = S.P;
+    const int n = S.n, nf = static_cast<int>(S.unknown.size());
+    const double lambda = P.lambda;
+    Eigen::VectorXd diagonal = Eigen::VectorXd::Zero(n);
     std::vector<Eigen::Triplet<double>> t;
     t.reserve(4 * P.links.size() + n);
     for (const Link& l : P.links)
     {
-      const double c = 16.0 * lambda * l.w;
-      const int a = unknown[l.f], b = unknown[l.g];
-      if (a >= 0)
-        diagonal[a] += c;
-      if (b >= 0)
-        diagonal[b] += c;
-      if (a >= 0 && b >= 0)
-      {
-        t.emplace_back(a, b, -c);
-        t.emplace_back(b, a, -c);
-      }
+      addLink(diagonal, t, S.unknown[l.f], S.unknown[l.g], 16.0 * lambda * l.w, 1.0);
     }
     for (int f = 0; f < nf; ++f)
     {
-      if (unknown[f] >= 0)
+      if (S.unknown[f] >= 0)
       {
-        diagonal[unknown[f]] += 2.0 * (1.0 - lambda) * P.area[f] * P.weight[f];
+        diagonal[S.unknown[f]] += 2.0 * (1.0 - lambda) * P.area[f] * P.weight[f];
       }
     }
     const double mean = n > 0 ? diagonal.sum() / n : 0.0;
@@ -176,244 +270,308 @@ SmootherResult smoothFrames(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F
       diagonal[i] += 1e-9 * mean + 1e-300;
       t.emplace_back(i, i, diagonal[i]);
     }
-    H.resize(n, n);
+    Eigen::SparseMatrix<double> H(n, n);
     H.setFromTriplets(t.begin(), t.end());
-  }
-  SpdSolver<double> mm;
-  if (n > 0)
-  {
-    mm.compute(H);
-    if (mm.info() != Eigen::Success)
+    progress.report(0.2);
+    if (n > 0)
     {
-      throw std::runtime_error("smoothFrames: factorization failed");
+      Solver.compute(H);
+      if (Solver.info() != Eigen::Success)
+      {
+        throw std::runtime_error("smoothFrames: factorization failed");
+      }
+    }
+    progress.report(1.0);
+  }
+
+  /// dE/dalpha over the unknowns.
+  void gradient(const Eigen::VectorXd& alpha, Eigen::VectorXd& grad) const
+  {
+    const Problem& P = S.P;
+    const double lambda = P.lambda;
+    grad.setZero();
+    for (const Link& l : P.links)
+    {
+      const double s = 4.0 * lambda * l.w * std::sin(4.0 * (l.theta + alpha[l.f] - alpha[l.g]));
+      if (S.unknown[l.f] >= 0)
+        grad[S.unknown[l.f]] += s;
+      if (S.unknown[l.g] >= 0)
+        grad[S.unknown[l.g]] -= s;
+    }
+    for (int f = 0; f < static_cast<int>(S.unknown.size()); ++f)
+    {
+      if (S.unknown[f] >= 0)
+        grad[S.unknown[f]] += 2.0 * (1.0 - lambda) * P.area[f] * P.weight[f] * alpha[f];
     }
   }
 
-  // Rounding in E is relative to the size of its terms, not to E (which may be ~0).
-  double energyScale = 1e-300;
-  for (const Link& l : P.links)
+  /// alpha moved by scale times step on the unknowns.
+  Eigen::VectorXd advance(
+    const Eigen::VectorXd& alpha, const Eigen::VectorXd& step, double scale) const
   {
-    energyScale += lambda * l.w;
-  }
-  energyScale += (1.0 - lambda) * (P.area.array() * P.weight.array()).sum();
-  int rejected = 0;
-  auto descend = [&](Eigen::VectorXd alpha, std::vector<double>& history, int& iterations) {
-    double E = P.energy(alpha);
-    history.assign(1, E);
-    iterations = 0;
-    Eigen::VectorXd grad(n);
-    for (int it = 0; it < options.maximumNumberOfIterations && n > 0; ++it)
+    Eigen::VectorXd x = alpha;
+    for (int f = 0; f < static_cast<int>(S.unknown.size()); ++f)
     {
-      grad.setZero();
-      for (const Link& l : P.links)
-      {
-        const double s = 4.0 * lambda * l.w * std::sin(4.0 * (l.theta + alpha[l.f] - alpha[l.g]));
-        if (unknown[l.f] >= 0)
-          grad[unknown[l.f]] += s;
-        if (unknown[l.g] >= 0)
-          grad[unknown[l.g]] -= s;
-      }
-      for (int f = 0; f < nf; ++f)
-      {
-        if (unknown[f] >= 0)
-          grad[unknown[f]] += 2.0 * (1.0 - lambda) * P.area[f] * P.weight[f] * alpha[f];
-      }
-      const Eigen::VectorXd step = mm.solve(-grad);
-      auto advance = [&](double scale) {
-        Eigen::VectorXd x = alpha;
-        for (int f = 0; f < nf; ++f)
-        {
-          if (unknown[f] >= 0)
-            x[f] += scale * step[unknown[f]];
-        }
-        return x;
-      };
-      Eigen::VectorXd next = advance(1.0);
-      double En = P.energy(next);
-      // The bound's step is safe but often short where the energy is flat: try longer ones and
-      // keep the lowest (only energies below En are taken, so the descent stays monotone).
-      for (double scale = 2.0; scale <= 8.0; scale *= 2.0)
-      {
-        Eigen::VectorXd longer = advance(scale);
-        const double El = P.energy(longer);
-        if (!(El < En))
-          break;
-        next.swap(longer);
-        En = El;
-      }
-      if (!(En <= E))
-      {
-        // The bound guarantees descent: only rounding at the minimum gets here.
-        rejected += En - E > 1e-12 * energyScale || !std::isfinite(En);
-        break;
-      }
-      ++iterations;
-      alpha = next;
-      history.push_back(En);
-      const bool done = E - En <= options.convergenceTolerance * std::max(E, 1e-300);
-      E = En;
-      if (done)
-      {
-        break;
-      }
+      if (S.unknown[f] >= 0)
+        x[f] += scale * step[S.unknown[f]];
     }
-    return alpha;
-  };
-
-  // Run 1: from the input (constrained triangles turned onto their edges).
-  Eigen::VectorXd start = Eigen::VectorXd::Zero(nf);
-  for (int f = 0; f < nf; ++f)
-  {
-    start[f] = R.constrained[f] ? fixedAlpha[f] : 0.0;
+    return x;
   }
-  std::vector<double> history;
-  int iterations = 0;
-  Eigen::VectorXd alpha = descend(start, history, iterations);
-  R.energyBefore = history.front();
-  R.energyHistory = history;
-  R.iterations = iterations;
 
-  // Run 2: from the smoothest four-fold field blended with the alignment (complex u = e^{4 i psi}):
-  // lambda/2 sum w |u_f - c u_g|^2 + (1 - lambda)/16 sum A w |u_f - q_f|^2, u fixed where held.
-  if (options.globalStart && lambda > 0.0 && n > 0)
+  /// The bound's step is safe but often short where the energy is flat: try longer ones and
+  /// keep the lowest (only energies below the bound step's are taken, so the descent stays
+  /// monotone). @param[out] En the energy where it ends
+  Eigen::VectorXd longestStep(
+    const Eigen::VectorXd& alpha, const Eigen::VectorXd& step, double& En) const
   {
-    using C = std::complex<double>;
-    std::vector<Eigen::Triplet<C>> t;
-    Eigen::VectorXcd b = Eigen::VectorXcd::Zero(n);
-    Eigen::VectorXd diag = Eigen::VectorXd::Zero(n), mass = Eigen::VectorXd::Zero(n);
-    auto fixedU = [&](int f) { return std::polar(1.0, 4.0 * (phi[f] + fixedAlpha[f])); };
-    double alignTotal = 0.0, smoothTotal = 0.0;
+    Eigen::VectorXd next = this->advance(alpha, step, 1.0);
+    En = S.P.energy(next);
+    for (double scale = 2.0; scale <= 8.0; scale *= 2.0)
+    {
+      Eigen::VectorXd longer = this->advance(alpha, step, scale);
+      const double El = S.P.energy(longer);
+      if (!(El < En))
+        break;
+      next.swap(longer);
+      En = El;
+    }
+    return next;
+  }
+
+  const Smoothing& S;
+  const SmootherOptions& Options;
+  SpdSolver<double> Solver;
+  double EnergyScale = 1e-300;
+  int Rejected = 0;
+};
+
+/**
+ * The smoothest four-fold field blended with the alignment, in u = e^{4 i psi} per free triangle:
+ *   lambda/2 sum w |u_f - c u_g|^2 + (1 - lambda)/16 sum A w |u_f - q_f|^2, u fixed where held.
+ */
+struct GlobalSystem
+{
+  std::vector<Eigen::Triplet<Complex>> t; ///< the matrix without its diagonal
+  Eigen::VectorXcd b;
+  Eigen::VectorXd diag, mass;
+  double alignTotal = 0.0, smoothTotal = 0.0;
+
+  explicit GlobalSystem(const Smoothing& s)
+    : b(Eigen::VectorXcd::Zero(s.n))
+    , diag(Eigen::VectorXd::Zero(s.n))
+    , mass(Eigen::VectorXd::Zero(s.n))
+  {
+    const Problem& P = s.P;
+    const double lambda = P.lambda;
+    auto fixedU = [&](int f) { return std::polar(1.0, 4.0 * (s.phi[f] + s.fixedAlpha[f])); };
     for (const Link& l : P.links)
     {
       const double c = 0.5 * lambda * l.w;
       smoothTotal += c;
-      const C rot = std::polar(1.0, 4.0 * l.rho); // u_g carried into f's basis
-      const int a = unknown[l.f], bb = unknown[l.g];
-      if (a >= 0)
-        diag[a] += c;
-      if (bb >= 0)
-        diag[bb] += c;
-      if (a >= 0 && bb >= 0)
-      {
-        t.emplace_back(a, bb, -c * rot);
-        t.emplace_back(bb, a, -c * std::conj(rot));
-      }
-      else if (a >= 0)
+      const Complex rot = std::polar(1.0, 4.0 * l.rho); // u_g carried into f's basis
+      const int a = s.unknown[l.f], bb = s.unknown[l.g];
+      addLink(diag, t, a, bb, c, rot);
+      if (a >= 0 && bb < 0)
       {
         b[a] += c * rot * fixedU(l.g);
       }
-      else if (bb >= 0)
+      else if (a < 0 && bb >= 0)
       {
         b[bb] += c * std::conj(rot) * fixedU(l.f);
       }
     }
-    for (int f = 0; f < nf; ++f)
+    for (int f = 0; f < static_cast<int>(s.unknown.size()); ++f)
     {
-      if (unknown[f] < 0)
+      if (s.unknown[f] < 0)
         continue;
-      const double s = (1.0 - lambda) / 16.0 * P.area[f] * P.weight[f];
-      diag[unknown[f]] += s;
-      alignTotal += s;
-      b[unknown[f]] += s * std::polar(1.0, 4.0 * phi[f]);
-      mass[unknown[f]] = P.area[f];
-    }
-    // Two candidate starts: the aligned solution of the system above, and, when no frame is
-    // held and the alignment is weak, the smoothest field itself (the eigenvector of the smallest
-    // eigenvalue, by inverse iteration begun from the aligned solution, so that within the
-    // smoothest fields it keeps what alignment it can). A weak alignment term (a sphere) can mix
-    // several near-smoothest fields into one with extra singularities; the eigenvector cannot.
-    const double meanDiag = diag.sum() / n, meanMass = mass.sum() / n;
-    const bool aligned = R.numConstrained > 0 || alignTotal > 1e-9 * smoothTotal;
-    const double shift = 1e-6 * meanDiag / std::max(meanMass, 1e-300);
-    auto factor = [&](double sigma, SpdSolver<C>& solver) -> bool {
-      std::vector<Eigen::Triplet<C>> all = t;
-      // The floor keeps the matrix definite where a triangle has neither links nor area (an
-      // isolated zero-area triangle), which would otherwise drop the start for the whole mesh.
-      for (int i = 0; i < n; ++i)
-      {
-        all.emplace_back(i, i, C(diag[i] + sigma * mass[i] + 1e-9 * meanDiag + 1e-300, 0.0));
-      }
-      Eigen::SparseMatrix<C> A(n, n);
-      A.setFromTriplets(all.begin(), all.end());
-      solver.compute(A);
-      return solver.info() == Eigen::Success;
-    };
-    std::vector<Eigen::VectorXcd> starts;
-    Eigen::VectorXcd u0 = Eigen::VectorXcd::Zero(n);
-    for (int f = 0; f < nf; ++f)
-    {
-      if (unknown[f] >= 0)
-        u0[unknown[f]] = std::polar(1.0, 4.0 * phi[f]);
-    }
-    // One factorization serves both: the shift is far below the smallest nonzero eigenvalue's
-    // scale, so the aligned solution barely feels it.
-    SpdSolver<C> solver;
-    if (factor(shift, solver))
-    {
-      if (aligned)
-      {
-        u0 = solver.solve(b);
-        starts.push_back(u0);
-      }
-      // The smoothest field matters where the curvature says little (a sphere's is noise:
-      // ratio 3e-4 of the two terms before lambda weighs them); on the shared meshes (ratios
-      // 0.08-0.12) the aligned start always won or tied, so the inverse iteration's dozen solves
-      // are spared there. The ratio leaves lambda out: it asks how much the curvature says, not
-      // how much it is listened to (with lambda in, every mesh fell below the bar at 0.95).
-      const bool weakCurvature =
-        lambda >= 1.0 || alignTotal / (1.0 - lambda) < 0.02 * smoothTotal / lambda;
-      if (R.numConstrained == 0 && weakCurvature)
-      {
-        Eigen::VectorXcd u = u0;
-        for (int it = 0; it < 40; ++it)
-        {
-          Eigen::VectorXcd next = solver.solve((mass.cast<C>().array() * u.array()).matrix());
-          const double norm = std::sqrt((mass.array() * next.array().abs2()).sum());
-          if (!(norm > 0.0) || !std::isfinite(norm))
-            break;
-          next /= norm;
-          // Settled (up to a global phase, which does not matter for the cross field)?
-          const C overlap = (mass.cast<C>().array() * u.array().conjugate() * next.array()).sum();
-          u = next;
-          // At least a dozen rounds: leftovers of higher modes, however small, add pairs of
-          // singularities where the field is weak.
-          if (it >= 12 && 1.0 - std::abs(overlap) < 1e-10)
-            break;
-        }
-        starts.push_back(u);
-      }
-    }
-    for (const Eigen::VectorXcd& u : starts)
-    {
-      const double largest = u.size() ? u.cwiseAbs().maxCoeff() : 0.0;
-      Eigen::VectorXd global = start;
-      for (int f = 0; f < nf; ++f)
-      {
-        const int i = unknown[f];
-        if (i >= 0 && std::abs(u[i]) > 1e-12 * largest && std::isfinite(std::abs(u[i])))
-        {
-          global[f] = wrapQuarter(std::arg(u[i]) / 4.0 - phi[f]);
-        }
-      }
-      std::vector<double> globalHistory;
-      int globalIterations = 0;
-      const Eigen::VectorXd candidate = descend(global, globalHistory, globalIterations);
-      if (globalHistory.back() < R.energyHistory.back())
-      {
-        alpha = candidate;
-        R.energyHistory = globalHistory;
-        R.iterations = globalIterations;
-        R.fromGlobalStart = true;
-      }
+      const double w = (1.0 - lambda) / 16.0 * P.area[f] * P.weight[f];
+      diag[s.unknown[f]] += w;
+      alignTotal += w;
+      b[s.unknown[f]] += w * std::polar(1.0, 4.0 * s.phi[f]);
+      mass[s.unknown[f]] = P.area[f];
     }
   }
 
-  R.rejectedSteps = rejected;
+  double meanDiagonal() const { return diag.sum() / diag.size(); }
+
+  /// Factors the matrix shifted by sigma times the mass.
+  bool factor(double sigma, SpdSolver<Complex>& solver) const
+  {
+    const int n = static_cast<int>(diag.size());
+    const double meanDiag = this->meanDiagonal();
+    std::vector<Eigen::Triplet<Complex>> all = t;
+    // The floor keeps the matrix definite where a triangle has neither links nor area (an
+    // isolated zero-area triangle), which would otherwise drop the start for the whole mesh.
+    for (int i = 0; i < n; ++i)
+    {
+      all.emplace_back(i, i, Complex(diag[i] + sigma * mass[i] + 1e-9 * meanDiag + 1e-300, 0.0));
+    }
+    Eigen::SparseMatrix<Complex> A(n, n);
+    A.setFromTriplets(all.begin(), all.end());
+    solver.compute(A);
+    return solver.info() == Eigen::Success;
+  }
+};
+
+/// The eigenvector of the smallest eigenvalue of the factored system (mass-normalized), by
+/// inverse iteration from u, one report per solve.
+Eigen::VectorXcd smoothestField(const SpdSolver<Complex>& solver, const Eigen::VectorXd& mass,
+  Eigen::VectorXcd u, const Progress& progress)
+{
+  const int rounds = 40;
+  for (int it = 0; it < rounds; ++it)
+  {
+    progress.report(static_cast<double>(it) / rounds);
+    Eigen::VectorXcd next = solver.solve((mass.cast<Complex>().array() * u.array()).matrix());
+    const double norm = std::sqrt((mass.array() * next.array().abs2()).sum());
+    if (!(norm > 0.0) || !std::isfinite(norm))
+      break;
+    next /= norm;
+    // Settled (up to a global phase, which does not matter for the cross field)?
+    const Complex overlap =
+      (mass.cast<Complex>().array() * u.array().conjugate() * next.array()).sum();
+    u = next;
+    // At least a dozen rounds: leftovers of higher modes, however small, add pairs of
+    // singularities where the field is weak.
+    if (it >= 12 && 1.0 - std::abs(overlap) < 1e-10)
+      break;
+  }
+  return u;
+}
+
+/**
+ * The global candidate starts: the aligned solution of the global system, and, when no frame is
+ * held and the alignment is weak, the smoothest field itself (the eigenvector of the smallest
+ * eigenvalue, by inverse iteration begun from the aligned solution, so that within the smoothest
+ * fields it keeps what alignment it can). A weak alignment term (a sphere) can mix several
+ * near-smoothest fields into one with extra singularities; the eigenvector cannot. None when the
+ * system cannot be factored.
+ */
+std::vector<Eigen::VectorXcd> globalStarts(
+  const Smoothing& s, int numConstrained, const Progress& progress)
+{
+  const GlobalSystem G(s);
+  progress.report(0.05);
+  const double lambda = s.P.lambda;
+  const double meanDiag = G.meanDiagonal(), meanMass = G.mass.sum() / s.n;
+  const bool aligned = numConstrained > 0 || G.alignTotal > 1e-9 * G.smoothTotal;
+  const double shift = 1e-6 * meanDiag / std::max(meanMass, 1e-300);
+  std::vector<Eigen::VectorXcd> starts;
+  Eigen::VectorXcd u0 = Eigen::VectorXcd::Zero(s.n);
+  for (int f = 0; f < static_cast<int>(s.unknown.size()); ++f)
+  {
+    if (s.unknown[f] >= 0)
+      u0[s.unknown[f]] = std::polar(1.0, 4.0 * s.phi[f]);
+  }
+  // One factorization serves both: the shift is far below the smallest nonzero eigenvalue's
+  // scale, so the aligned solution barely feels it.
+  SpdSolver<Complex> solver;
+  if (!G.factor(shift, solver))
+  {
+    return starts;
+  }
+  progress.report(0.2);
+  if (aligned)
+  {
+    u0 = solver.solve(G.b);
+    starts.push_back(u0);
+    progress.report(0.3);
+  }
+  // The smoothest field matters where the curvature says little (a sphere's is noise: ratio 3e-4
+  // of the two terms before lambda weighs them); on the shared meshes (ratios 0.08-0.12) the
+  // aligned start always won or tied, so the inverse iteration's dozen solves are spared there.
+  // The ratio leaves lambda out: it asks how much the curvature says, not how much it is
+  // listened to (with lambda in, every mesh fell below the bar at 0.95).
+  const bool weakCurvature =
+    lambda >= 1.0 || G.alignTotal / (1.0 - lambda) < 0.02 * G.smoothTotal / lambda;
+  if (numConstrained == 0 && weakCurvature)
+  {
+    starts.push_back(smoothestField(solver, G.mass, u0, progress.part(0.3, 1.0)));
+  }
+  return starts;
+}
+
+/// The turns (#F) that carry the input frames onto the field u (held frames, and triangles
+/// where u vanishes, keep their turn from `start`).
+Eigen::VectorXd turnsToField(
+  const Smoothing& s, const Eigen::VectorXcd& u, const Eigen::VectorXd& start)
+{
+  const double largest = u.size() ? u.cwiseAbs().maxCoeff() : 0.0;
+  Eigen::VectorXd global = start;
+  for (int f = 0; f < static_cast<int>(s.unknown.size()); ++f)
+  {
+    const int i = s.unknown[f];
+    if (i >= 0 && std::abs(u[i]) > 1e-12 * largest && std::isfinite(std::abs(u[i])))
+    {
+      global[f] = wrapQuarter(std::arg(u[i]) / 4.0 - s.phi[f]);
+    }
+  }
+  return global;
+}
+
+/// Runs 2 and 3: descents from the global starts (Knoeppel et al. 2013), each kept in alpha and
+/// R when it ends with a lower energy than the runs before.
+void descendFromGlobalStarts(const Smoothing& s, Descent& descent, const Eigen::VectorXd& start,
+  Eigen::VectorXd& alpha, SmootherResult& R, const Progress& progress)
+{
+  const std::vector<Eigen::VectorXcd> starts =
+    globalStarts(s, R.numConstrained, progress.part(0.0, 0.2));
+  for (std::size_t i = 0; i < starts.size(); ++i)
+  {
+    const double from = 0.2 + 0.8 * static_cast<double>(i) / static_cast<double>(starts.size());
+    const double to = 0.2 + 0.8 * static_cast<double>(i + 1) / static_cast<double>(starts.size());
+    std::vector<double> globalHistory;
+    int globalIterations = 0;
+    const Eigen::VectorXd candidate = descent.run(
+      turnsToField(s, starts[i], start), globalHistory, globalIterations, progress.part(from, to));
+    if (globalHistory.back() < R.energyHistory.back())
+    {
+      alpha = candidate;
+      R.energyHistory = globalHistory;
+      R.iterations = globalIterations;
+      R.fromGlobalStart = true;
+    }
+  }
+}
+}
+
+SmootherResult smoothFrames(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F,
+  const MeshTopology& topo, const FrameGeometry& geometry, const Eigen::MatrixX3d& frameU,
+  const Eigen::MatrixX3d& frameV, const Eigen::VectorXd& weight, const SmootherOptions& options,
+  const Progress& progress)
+{
+  progress.report(0.0);
+  checkInputs(F, topo, frameU, frameV, weight, options);
+  SmootherResult R;
+  Smoothing s;
+  s.phi = vectorAngles(geometry.bases, frameU);
+  setUpProblem(V, F, topo, geometry, weight, options, s, R);
+  numberUnknowns(s, R);
+  progress.report(0.01);
+  Descent descent(s, options, progress.part(0.01, 0.05));
+  const bool global = options.globalStart && s.P.lambda > 0.0 && s.n > 0;
+
+  // Run 1: from the input (held triangles turned onto their edges).
+  Eigen::VectorXd start = Eigen::VectorXd::Zero(F.rows());
+  for (Eigen::Index f = 0; f < F.rows(); ++f)
+  {
+    start[f] = R.constrained[f] ? s.fixedAlpha[f] : 0.0;
+  }
+  Eigen::VectorXd alpha =
+    descent.run(start, R.energyHistory, R.iterations, progress.part(0.05, global ? 0.5 : 1.0));
+  R.energyBefore = R.energyHistory.front();
+  if (global)
+  {
+    descendFromGlobalStarts(s, descent, start, alpha, R, progress.part(0.5, 1.0));
+  }
+
+  R.rejectedSteps = descent.rejected();
   R.rotation = alpha;
   R.energyAfter = R.energyHistory.back();
   R.frameU = frameU;
   R.frameV = frameV;
   rotateFrames(geometry.bases, alpha, R.frameU, R.frameV);
+  progress.report(1.0);
   return R;
 }
 

@@ -1,3 +1,5 @@
+// MeshTopology.cxx: edges, one-rings, boundary loops and components of a triangle mesh, and the
+// splitting of non-manifold vertices.
 #include "MeshTopology.h"
 
 #include "UnionFind.h"
@@ -75,46 +77,12 @@ private:
   std::vector<int> Position; // face -> index in the current list, -1 elsewhere
   std::vector<int> Parent;
 };
-}
 
-int MeshTopology::eulerCharacteristic() const
+/// Checks that every index lies in [0, numVertices) and lists the triangles that repeat a vertex
+/// (T.degenerateFaces). @return #F, 1 for such a triangle
+std::vector<char> findDegenerateFaces(const Eigen::MatrixX3i& F, MeshTopology& T)
 {
-  int chi = 0;
-  for (const ComponentInfo& c : components)
-  {
-    chi += c.eulerCharacteristic;
-  }
-  return chi;
-}
-
-std::string MeshTopology::describeDefects() const
-{
-  std::ostringstream os;
-  const char* sep = "";
-  auto item = [&](size_t n, const char* what) {
-    if (n > 0)
-    {
-      os << sep << n << ' ' << what;
-      sep = ", ";
-    }
-  };
-  item(degenerateFaces.size(), "triangles that repeat a vertex");
-  item(nonManifoldEdges.size(), "non-manifold edges (more than two triangles)");
-  item(nonManifoldVertices.size(), "non-manifold vertices");
-  item(misorientedEdges.size(), "edges between inconsistently oriented triangles");
-  return os.str();
-}
-
-MeshTopology buildTopology(const Eigen::MatrixX3i& F, int numVertices)
-{
-  if (numVertices < 0)
-  {
-    throw std::invalid_argument("buildTopology: negative vertex count");
-  }
-  MeshTopology T;
-  T.numVertices = numVertices;
-  T.numFaces = static_cast<int>(F.rows());
-  const int nf = T.numFaces;
+  const int nf = T.numFaces, numVertices = T.numVertices;
   std::vector<char> degenerate(nf, 0);
   for (int f = 0; f < nf; ++f)
   {
@@ -132,13 +100,21 @@ MeshTopology buildTopology(const Eigen::MatrixX3i& F, int numVertices)
       T.degenerateFaces.push_back(f);
     }
   }
+  return degenerate;
+}
 
-  // Edges: sort the half-edges of the non-degenerate triangles by their unordered vertex pair.
-  // A triangle that repeats a vertex has no edges: it would only corrupt its neighbours'.
-  struct HalfEdge
-  {
-    int a, b, corner; // a < b; corner = 3f + k
-  };
+struct HalfEdge
+{
+  int a, b, corner; // a < b; corner = 3f + k
+};
+
+/// The half-edges of the non-degenerate triangles sorted by their unordered vertex pair (then by
+/// corner), so that the half-edges of one edge follow each other. A triangle that repeats a vertex
+/// has no edges: it would only corrupt its neighbours'.
+std::vector<HalfEdge> sortedHalfEdges(
+  const Eigen::MatrixX3i& F, const std::vector<char>& degenerate)
+{
+  const int nf = static_cast<int>(F.rows());
   std::vector<HalfEdge> he;
   he.reserve(3 * static_cast<size_t>(nf));
   for (int f = 0; f < nf; ++f)
@@ -156,7 +132,15 @@ MeshTopology buildTopology(const Eigen::MatrixX3i& F, int numVertices)
   std::sort(he.begin(), he.end(), [](const HalfEdge& x, const HalfEdge& y) {
     return x.a != y.a ? x.a < y.a : (x.b != y.b ? x.b < y.b : x.corner < y.corner);
   });
+  return he;
+}
 
+/// Edges and what hangs on them: T.edges, faceEdges, faceNeighbors, edgeFaces, edgeCorners,
+/// edgeFaceCount, nonManifoldEdges and misorientedEdges.
+void buildEdges(const Eigen::MatrixX3i& F, const std::vector<char>& degenerate, MeshTopology& T)
+{
+  const int nf = T.numFaces;
+  const std::vector<HalfEdge> he = sortedHalfEdges(F, degenerate);
   T.faceEdges.setConstant(nf, 3, -1);
   T.faceNeighbors.setConstant(nf, 3, -1);
   std::vector<Eigen::Vector2i> edgeList;
@@ -215,8 +199,14 @@ MeshTopology buildTopology(const Eigen::MatrixX3i& F, int numVertices)
     T.edgeCorners.row(e) = edgeCornerList[e].transpose();
     T.edgeFaceCount[e] = edgeCount[e];
   }
+}
 
-  // Faces around each vertex (CSR over non-degenerate triangles), then fans and ordered rings.
+/// The non-degenerate faces around each vertex in index order, as CSR (T.ringOffsets and
+/// T.ringFaces). @return #V, 1 for a vertex some triangle (degenerate or not) refers to
+std::vector<char> incidentFaces(
+  const Eigen::MatrixX3i& F, const std::vector<char>& degenerate, MeshTopology& T)
+{
+  const int nf = T.numFaces, numVertices = T.numVertices;
   std::vector<int> offsets(numVertices + 1, 0);
   std::vector<char> referenced(numVertices, 0);
   for (int f = 0; f < nf; ++f)
@@ -243,10 +233,65 @@ MeshTopology buildTopology(const Eigen::MatrixX3i& F, int numVertices)
     }
   }
   T.ringOffsets = offsets;
-  T.ringFaces = incident; // replaced by the ordered ring where there is one
+  T.ringFaces = incident;
+  return referenced;
+}
+
+/**
+ * Walks the n triangles around v counterclockwise: the next face is across edge k+2 (k = v's
+ * corner), the previous across edge k; a boundary fan starts where there is no previous face.
+ * A walk that visits all n faces once and ends where it should proves one fan.
+ * @param[in] faces   the n faces around v (in index order)
+ * @param[in] visited #F scratch marks, all 0 (and left so)
+ * @param[out] ring   the faces in walking order
+ * @return whether the walk proved one fan
+ */
+bool walkRing(const MeshTopology& T, const Eigen::MatrixX3i& F, int v, const int* faces, int n,
+  std::vector<char>& visited, std::vector<int>& ring)
+{
+  int start = faces[0], starts = 0;
+  for (int i = 0; i < n; ++i)
+  {
+    const int f = faces[i];
+    if (T.faceNeighbors(f, MeshTopology::cornerOf(F, f, v)) < 0)
+    {
+      ++starts;
+      start = f;
+    }
+  }
+  ring.clear();
+  if (starts > 1)
+  {
+    return false;
+  }
+  ring.reserve(n);
+  int f = start;
+  while (f >= 0 && !visited[f] && static_cast<int>(ring.size()) < n)
+  {
+    visited[f] = 1;
+    ring.push_back(f);
+    f = T.faceNeighbors(f, (MeshTopology::cornerOf(F, f, v) + 2) % 3);
+  }
+  for (int g : ring)
+  {
+    visited[g] = 0;
+  }
+  return static_cast<int>(ring.size()) == n && (starts == 0 ? f == start : f < 0);
+}
+
+/// Boundary vertices, ordered rings where the faces around a vertex form one fan, and the
+/// unreferenced and non-manifold vertices. Where the walk fails, the fans are labelled
+/// (orientation aside) to tell a non-manifold vertex from a misoriented one.
+/// @return #V, 1 for a vertex some triangle refers to
+std::vector<char> buildRings(
+  const Eigen::MatrixX3i& F, const std::vector<char>& degenerate, MeshTopology& T)
+{
+  const int nf = T.numFaces, numVertices = T.numVertices;
+  std::vector<char> referenced = incidentFaces(F, degenerate, T);
+  const std::vector<int> incident = T.ringFaces; // replaced by the ordered ring where there is one
   T.ringOrdered.assign(numVertices, 0);
   T.boundaryVertex.assign(numVertices, 0);
-  for (int e = 0; e < ne; ++e)
+  for (int e = 0; e < T.numEdges(); ++e)
   {
     if (T.edgeFaceCount[e] == 1)
     {
@@ -254,11 +299,11 @@ MeshTopology buildTopology(const Eigen::MatrixX3i& F, int numVertices)
     }
   }
   FanLabeler fans(nf);
-  std::vector<int> fan;
+  std::vector<int> fan, ring;
   std::vector<char> visited(nf, 0);
   for (int v = 0; v < numVertices; ++v)
   {
-    const int begin = offsets[v], n = offsets[v + 1] - offsets[v];
+    const int begin = T.ringOffsets[v], n = T.ringOffsets[v + 1] - T.ringOffsets[v];
     if (!referenced[v])
     {
       T.unreferencedVertices.push_back(v);
@@ -268,39 +313,7 @@ MeshTopology buildTopology(const Eigen::MatrixX3i& F, int numVertices)
     {
       continue; // only degenerate triangles here: reported as such
     }
-    // Walk the triangles counterclockwise: the next face is across edge k+2 (k = v's corner),
-    // the previous across edge k; a boundary fan starts where there is no previous face. A walk
-    // that visits all n faces once and ends where it should proves one fan; otherwise the fans
-    // are labelled (orientation aside) to tell a non-manifold vertex from a misoriented one.
-    int start = incident[begin], starts = 0;
-    for (int i = begin; i < begin + n; ++i)
-    {
-      const int f = incident[i];
-      if (T.faceNeighbors(f, MeshTopology::cornerOf(F, f, v)) < 0)
-      {
-        ++starts;
-        start = f;
-      }
-    }
-    bool ok = false;
-    std::vector<int> ring;
-    if (starts <= 1)
-    {
-      ring.reserve(n);
-      int f = start;
-      while (f >= 0 && !visited[f] && static_cast<int>(ring.size()) < n)
-      {
-        visited[f] = 1;
-        ring.push_back(f);
-        f = T.faceNeighbors(f, (MeshTopology::cornerOf(F, f, v) + 2) % 3);
-      }
-      ok = static_cast<int>(ring.size()) == n && (starts == 0 ? f == start : f < 0);
-      for (int g : ring)
-      {
-        visited[g] = 0;
-      }
-    }
-    if (ok)
+    if (walkRing(T, F, v, incident.data() + begin, n, visited, ring))
     {
       std::copy(ring.begin(), ring.end(), T.ringFaces.begin() + begin);
       T.ringOrdered[v] = 1;
@@ -310,62 +323,71 @@ MeshTopology buildTopology(const Eigen::MatrixX3i& F, int numVertices)
       T.nonManifoldVertices.push_back(v);
     }
   }
+  return referenced;
+}
 
-  // Boundary loops: walk boundary edges vertex to vertex until back at the start vertex. The
-  // walk keeps the triangles' direction where it can; on a non-orientable surface (a Moebius
-  // strip) the boundary edges' directions flip, so it goes by adjacency, not by direction.
+/// Boundary loops: walk boundary edges vertex to vertex until back at the start vertex. The walk
+/// keeps the triangles' direction where it can; on a non-orientable surface (a Moebius strip) the
+/// boundary edges' directions flip, so it goes by adjacency, not by direction.
+void buildBoundaryLoops(const Eigen::MatrixX3i& F, MeshTopology& T)
+{
+  const int nf = T.numFaces;
+  std::vector<std::vector<int>> atVertex(T.numVertices); // boundary corners touching a vertex
+  std::vector<int> boundaryCorners;
+  for (int f = 0; f < nf; ++f)
   {
-    std::vector<std::vector<int>> atVertex(numVertices); // boundary corners touching a vertex
-    std::vector<int> boundaryCorners;
-    for (int f = 0; f < nf; ++f)
+    for (int k = 0; k < 3; ++k)
     {
-      for (int k = 0; k < 3; ++k)
+      const int e = T.faceEdges(f, k);
+      if (e >= 0 && T.edgeFaceCount[e] == 1)
       {
-        const int e = T.faceEdges(f, k);
-        if (e >= 0 && T.edgeFaceCount[e] == 1)
-        {
-          boundaryCorners.push_back(3 * f + k);
-          atVertex[F(f, k)].push_back(3 * f + k);
-          atVertex[F(f, (k + 1) % 3)].push_back(3 * f + k);
-        }
+        boundaryCorners.push_back(3 * f + k);
+        atVertex[F(f, k)].push_back(3 * f + k);
+        atVertex[F(f, (k + 1) % 3)].push_back(3 * f + k);
       }
-    }
-    auto tail = [&](int c) { return F(c / 3, c % 3); };
-    auto head = [&](int c) { return F(c / 3, (c % 3 + 1) % 3); };
-    std::vector<char> used(3 * static_cast<size_t>(nf), 0);
-    for (int c0 : boundaryCorners)
-    {
-      if (used[c0])
-      {
-        continue;
-      }
-      used[c0] = 1;
-      const int start = tail(c0);
-      std::vector<int> loop = { start };
-      int current = head(c0);
-      while (current != start)
-      {
-        loop.push_back(current);
-        int next = -1;
-        for (int c : atVertex[current])
-        {
-          if (!used[c] && (next < 0 || tail(c) == current))
-          {
-            next = c; // any unused edge, preferably one leaving in the triangles' direction
-          }
-        }
-        if (next < 0)
-        {
-          break; // an open path: only next to defects that are reported anyway
-        }
-        used[next] = 1;
-        current = tail(next) == current ? head(next) : tail(next);
-      }
-      T.boundaryLoops.push_back(std::move(loop));
     }
   }
+  auto tail = [&](int c) { return F(c / 3, c % 3); };
+  auto head = [&](int c) { return F(c / 3, (c % 3 + 1) % 3); };
+  std::vector<char> used(3 * static_cast<size_t>(nf), 0);
+  for (int c0 : boundaryCorners)
+  {
+    if (used[c0])
+    {
+      continue;
+    }
+    used[c0] = 1;
+    const int start = tail(c0);
+    std::vector<int> loop = { start };
+    int current = head(c0);
+    while (current != start)
+    {
+      loop.push_back(current);
+      int next = -1;
+      for (int c : atVertex[current])
+      {
+        if (!used[c] && (next < 0 || tail(c) == current))
+        {
+          next = c; // any unused edge, preferably one leaving in the triangles' direction
+        }
+      }
+      if (next < 0)
+      {
+        break; // an open path: only next to defects that are reported anyway
+      }
+      used[next] = 1;
+      current = tail(next) == current ? head(next) : tail(next);
+    }
+    T.boundaryLoops.push_back(std::move(loop));
+  }
+}
 
-  // Components over vertices joined by triangle edges.
+/// Components over vertices joined by triangle edges (T.vertexComponent, faceComponent), numbered
+/// in order of their lowest referenced vertex; their ComponentInfo is left empty.
+void labelComponents(
+  const Eigen::MatrixX3i& F, const std::vector<char>& referenced, MeshTopology& T)
+{
+  const int nf = T.numFaces, numVertices = T.numVertices;
   std::vector<int> parent(numVertices);
   std::iota(parent.begin(), parent.end(), 0);
   for (int f = 0; f < nf; ++f)
@@ -391,19 +413,27 @@ MeshTopology buildTopology(const Eigen::MatrixX3i& F, int numVertices)
   }
   T.components.assign(nc, ComponentInfo());
   T.faceComponent.resize(nf);
-  for (int v = 0; v < numVertices; ++v)
+  for (int f = 0; f < nf; ++f)
+  {
+    T.faceComponent[f] = T.vertexComponent[F(f, 0)];
+  }
+}
+
+/// Each component's counts, defects, Euler characteristic and genus.
+void describeComponents(MeshTopology& T)
+{
+  for (int v = 0; v < T.numVertices; ++v)
   {
     if (T.vertexComponent[v] >= 0)
     {
       ++T.components[T.vertexComponent[v]].numVertices;
     }
   }
-  for (int f = 0; f < nf; ++f)
+  for (int f = 0; f < T.numFaces; ++f)
   {
-    T.faceComponent[f] = T.vertexComponent[F(f, 0)];
     ++T.components[T.faceComponent[f]].numFaces;
   }
-  for (int e = 0; e < ne; ++e)
+  for (int e = 0; e < T.numEdges(); ++e)
   {
     ++T.components[T.vertexComponent[T.edges(e, 0)]].numEdges;
   }
@@ -434,6 +464,52 @@ MeshTopology buildTopology(const Eigen::MatrixX3i& F, int numVertices)
     c.genus =
       (c.manifold && c.oriented && twiceGenus >= 0 && twiceGenus % 2 == 0) ? twiceGenus / 2 : -1;
   }
+}
+}
+
+int MeshTopology::eulerCharacteristic() const
+{
+  int chi = 0;
+  for (const ComponentInfo& c : components)
+  {
+    chi += c.eulerCharacteristic;
+  }
+  return chi;
+}
+
+std::string MeshTopology::describeDefects() const
+{
+  std::ostringstream os;
+  const char* sep = "";
+  auto item = [&](size_t n, const char* what) {
+    if (n > 0)
+    {
+      os << sep << n << ' ' << what;
+      sep = ", ";
+    }
+  };
+  item(degenerateFaces.size(), "triangles that repeat a vertex");
+  item(nonManifoldEdges.size(), "non-manifold edges (more than two triangles)");
+  item(nonManifoldVertices.size(), "non-manifold vertices");
+  item(misorientedEdges.size(), "edges between inconsistently oriented triangles");
+  return os.str();
+}
+
+MeshTopology buildTopology(const Eigen::MatrixX3i& F, int numVertices)
+{
+  if (numVertices < 0)
+  {
+    throw std::invalid_argument("buildTopology: negative vertex count");
+  }
+  MeshTopology T;
+  T.numVertices = numVertices;
+  T.numFaces = static_cast<int>(F.rows());
+  const std::vector<char> degenerate = findDegenerateFaces(F, T);
+  buildEdges(F, degenerate, T);
+  const std::vector<char> referenced = buildRings(F, degenerate, T);
+  buildBoundaryLoops(F, T);
+  labelComponents(F, referenced, T);
+  describeComponents(T);
   return T;
 }
 

@@ -89,6 +89,26 @@ struct MeshTopology
   std::string describeDefects() const;
 };
 
+/// Calls visit(f, k, g) for each edge k of each face f that has a neighbour g across it
+/// (faceNeighbors(f, k) >= 0), faces in index order and edges 0, 1, 2 within each: every inner
+/// edge twice, once from each side.
+template<typename Visit>
+void forEachNeighbor(const MeshTopology& topo, Visit&& visit)
+{
+  const int nf = static_cast<int>(topo.faceNeighbors.rows());
+  for (int f = 0; f < nf; ++f)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      const int g = topo.faceNeighbors(f, k);
+      if (g >= 0)
+      {
+        visit(f, k, g);
+      }
+    }
+  }
+}
+
 /// Builds the connectivity of a triangle mesh.
 /// @param[in] F           #F x 3 vertex indices
 /// @param[in] numVertices number of vertices (indices must lie in [0, numVertices))

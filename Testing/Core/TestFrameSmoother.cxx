@@ -13,7 +13,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <random>
+#include <vector>
 
 using namespace quadcover;
 
@@ -225,5 +227,41 @@ TEST(FrameSmoother, SharpCubeGetsItsEightCornerBranchPoints)
   {
     const bool corner = c.s.V.row(v).cwiseAbs().minCoeff() > 1.0 - 1e-12;
     EXPECT_EQ(t.layerShift[v], corner ? 1 : 0) << v;
+  }
+}
+
+TEST(FrameSmoother, ReportsProgressAndStopsWhenAsked)
+{
+  // The knot runs the descent from the aligned global start too; the sphere's weak curvature
+  // adds the inverse iteration for the smoothest field.
+  for (const char* name : { "knot", "sphere" })
+  {
+    SCOPED_TRACE(name);
+    const Case c = prepare(testSurface(name));
+    const SmootherResult plain = smooth(c);
+    std::vector<double> fractions;
+    const SmootherResult r = smoothFrames(c.s.V, c.s.F, c.topo, c.geometry, c.curvature.frameU,
+      c.curvature.frameV, c.curvature.weight, SmootherOptions(), Progress([&](double x) {
+        fractions.push_back(x);
+        return true;
+      }));
+    std::printf(
+      "%s: %zu reports, %d iterations in the chosen run\n", name, fractions.size(), r.iterations);
+    ASSERT_GT(fractions.size(), 10u);
+    // in order from 0 to 1, and so all within [0, 1]
+    EXPECT_TRUE(std::is_sorted(fractions.begin(), fractions.end()));
+    EXPECT_EQ(fractions.front(), 0.0);
+    EXPECT_EQ(fractions.back(), 1.0);
+    // Reporting changes nothing.
+    EXPECT_EQ(r.energyHistory, plain.energyHistory);
+    EXPECT_TRUE(r.frameU == plain.frameU);
+    EXPECT_EQ(r.fromGlobalStart, plain.fromGlobalStart);
+
+    int calls = 0;
+    EXPECT_THROW(
+      smoothFrames(c.s.V, c.s.F, c.topo, c.geometry, c.curvature.frameU, c.curvature.frameV,
+        c.curvature.weight, SmootherOptions(), Progress([&](double) { return ++calls < 5; })),
+      Cancelled);
+    EXPECT_EQ(calls, 5);
   }
 }

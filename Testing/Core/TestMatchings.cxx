@@ -460,8 +460,8 @@ TEST(Matchings, LengthScaledMergeCostDoesNotDependOnTheMeshResolution)
       const Eigen::Vector3d c =
         (m.s.V.row(m.s.F(f, 0)) + m.s.V.row(m.s.F(f, 1)) + m.s.V.row(m.s.F(f, 2))) / 3.0;
       const Eigen::Vector2d p(c.x(), c.y());
-      const double theta = 0.25 *
-        (std::atan2((p - a).y(), (p - a).x()) - std::atan2((p - b).y(), (p - b).x()));
+      const double theta =
+        0.25 * (std::atan2((p - a).y(), (p - a).x()) - std::atan2((p - b).y(), (p - b).x()));
       const Eigen::Vector3d normal = m.geometry.bases.normal.row(f);
       Eigen::Vector3d u(std::cos(theta), std::sin(theta), 0.0);
       U.row(f) = (u - u.dot(normal) * normal).normalized();
@@ -472,7 +472,8 @@ TEST(Matchings, LengthScaledMergeCostDoesNotDependOnTheMeshResolution)
       ASSERT_EQ(t.singularities, 2) << n;
       BranchPointOptions opt;
       opt.lengthScaledCost = scaled;
-      opt.branchPointWeight = 1000; // merge whatever it costs: the cost of the path is what we look at
+      // merge whatever it costs: the cost of the path is what we look at
+      opt.branchPointWeight = 1000;
       const BranchPointReport r = optimizeBranchPoints(m.s.F, m.topo, m.geometry, U, t, opt);
       ASSERT_EQ(r.singularitiesAfter, 0);
       pathCost[{ n, scaled }] = r.costAfter - r.costBefore + 2 * opt.branchPointWeight;
@@ -481,8 +482,46 @@ TEST(Matchings, LengthScaledMergeCostDoesNotDependOnTheMeshResolution)
     }
   }
   // the scaled cost changes little with a 4x finer mesh, the edge count about 4x
-  const double scaledRatio = pathCost[std::make_pair(80, true)] / pathCost[std::make_pair(20, true)];
-  const double countRatio = pathCost[std::make_pair(80, false)] / pathCost[std::make_pair(20, false)];
+  const double scaledRatio =
+    pathCost[std::make_pair(80, true)] / pathCost[std::make_pair(20, true)];
+  const double countRatio =
+    pathCost[std::make_pair(80, false)] / pathCost[std::make_pair(20, false)];
   EXPECT_NEAR(scaledRatio, 1.0, 0.3);
   EXPECT_GT(countRatio, 2.5);
+}
+
+TEST(Matchings, BranchPointOptimizationReportsProgressAndStopsWhenAsked)
+{
+  // A random field on the torus: hundreds of singular points to search from.
+  const Mesh m = prepare(testSurface("torus"));
+  const Eigen::MatrixX3d U = randomFrames(m, 3);
+  const FrameTopology start = computeMatchings(m.s.F, m.topo, m.geometry, U);
+  FrameTopology quiet = start;
+  const BranchPointReport plain = optimizeBranchPoints(m.s.F, m.topo, m.geometry, U, quiet);
+
+  std::vector<double> fractions;
+  FrameTopology watched = start;
+  const BranchPointReport r = optimizeBranchPoints(
+    m.s.F, m.topo, m.geometry, U, watched, BranchPointOptions(), Progress([&](double x) {
+      fractions.push_back(x);
+      return true;
+    }));
+  std::printf("%zu reports, %d singularities split, %d paths changed\n", fractions.size(), r.split,
+    r.pathsChanged);
+  ASSERT_GT(fractions.size(), 20u);
+  // in order from 0 to 1, and so all within [0, 1]
+  EXPECT_TRUE(std::is_sorted(fractions.begin(), fractions.end()));
+  EXPECT_EQ(fractions.front(), 0.0);
+  EXPECT_EQ(fractions.back(), 1.0);
+  // Reporting changes nothing.
+  EXPECT_EQ(r.pathsChanged, plain.pathsChanged);
+  EXPECT_EQ(r.costAfter, plain.costAfter);
+  EXPECT_TRUE(watched.matching == quiet.matching);
+
+  int calls = 0;
+  FrameTopology stopped = start;
+  EXPECT_THROW(optimizeBranchPoints(m.s.F, m.topo, m.geometry, U, stopped, BranchPointOptions(),
+                 Progress([&](double) { return ++calls < 5; })),
+    Cancelled);
+  EXPECT_EQ(calls, 5);
 }
