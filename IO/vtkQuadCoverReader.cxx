@@ -1,11 +1,11 @@
 #include "vtkQuadCoverReader.h"
 
 #include "vtkQuadCoverFileChecks.h"
+#include "vtkQuadCoverOFF.h"
 
 #include "vtkInformationVector.h"
 #include "vtkNew.h"
 #include "vtkOBJReader.h"
-#include "vtkOFFReader.h"
 #include "vtkObjectFactory.h"
 #include "vtkPLYReader.h"
 #include "vtkPolyData.h"
@@ -61,10 +61,6 @@ vtkSmartPointer<vtkAlgorithm> MakeReader(const std::string& path, std::string& e
   {
     return make(vtkSmartPointer<vtkSTLReader>::New());
   }
-  if (ext == ".off")
-  {
-    return make(vtkSmartPointer<vtkOFFReader>::New());
-  }
   if (ext == ".vtp")
   {
     return make(vtkSmartPointer<vtkXMLPolyDataReader>::New());
@@ -77,6 +73,29 @@ vtkSmartPointer<vtkAlgorithm> MakeReader(const std::string& path, std::string& e
     return nullptr;
   }
   return legacy;
+}
+
+/// Reads `path` (whose extension CanReadFile knows) into `out`; "" or the first error.
+std::string ReadFile(const std::string& path, vtkPolyData* out)
+{
+  if (vtkQuadCoverFileChecks::Extension(path) == ".off")
+  {
+    return vtkQuadCoverOFF::Read(path, out);
+  }
+  std::string error;
+  vtkSmartPointer<vtkAlgorithm> reader = MakeReader(path, error);
+  if (!reader)
+  {
+    return error;
+  }
+  vtkNew<vtkQuadCoverErrorObserver> errors;
+  errors->Attach(reader);
+  reader->Update();
+  if (errors->GetError().empty())
+  {
+    out->ShallowCopy(reader->GetOutputDataObject(0));
+  }
+  return errors->GetError();
 }
 }
 
@@ -92,29 +111,15 @@ int vtkQuadCoverReader::RequestData(
   vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector)
 {
   const std::string path = this->FileName ? this->FileName : "";
-  std::string error;
-  if (path.empty())
+  vtkNew<vtkPolyData> read;
+  std::string error = path.empty() ? "no file name given"
+    : !CanReadFile(path.c_str())   ? "unknown extension (use .obj .off .ply .stl .vtp or .vtk)"
+                                   : CheckFile(path);
+  if (error.empty())
   {
-    error = "no file name given";
+    error = ReadFile(path, read);
   }
-  else if (!CanReadFile(path.c_str()))
-  {
-    error = "unknown extension (use .obj .off .ply .stl .vtp or .vtk)";
-  }
-  else
-  {
-    error = CheckFile(path);
-  }
-  vtkSmartPointer<vtkAlgorithm> reader = error.empty() ? MakeReader(path, error) : nullptr;
-  if (reader)
-  {
-    vtkNew<vtkQuadCoverErrorObserver> errors;
-    errors->Attach(reader);
-    reader->Update();
-    error = errors->GetError();
-  }
-  vtkPolyData* read = reader ? vtkPolyData::SafeDownCast(reader->GetOutputDataObject(0)) : nullptr;
-  if (error.empty() && (!read || read->GetNumberOfPoints() == 0))
+  if (error.empty() && read->GetNumberOfPoints() == 0)
   {
     error = "no points found (empty, or not a valid " + vtkQuadCoverFileChecks::Extension(path) +
       " file)";

@@ -3,13 +3,16 @@
  * @brief   reads a surface from .obj, .off, .ply, .stl, .vtp or .vtk, chosen by extension
  *
  * One reader for every format QuadCover takes, with one-line errors for what goes wrong:
- * a missing, unreadable, empty or truncated file, an unknown extension, a file with no points.
+ * a missing, unreadable or empty file, an unknown extension, a file with no points (and, for
+ * OFF, one that ends early).
  * It checks what VTK 9.1's own readers get wrong before they read: OBJ files with NaN or
  * infinite coordinates (read as 0) or face indices past the vertices, PLY files with face
- * indices past the vertices (which crash its reader). OFF files are read by vtkOFFReader.
+ * indices past the vertices (which crash its reader). It also reads ASCII OFF files, which VTK
+ * has no reader for (the header keyword with the usual prefixes ST, C and N, comments, counts on
+ * the header line or the next; binary, 4D and nOFF files are refused).
  * The output is whatever the file holds (polygons, strips, lines, vertices, point and cell
  * data); vtkQuadCoverSurfaceRepair makes a triangle surface of it.
- * @sa vtkOFFReader vtkQuadCoverWriter vtkQuadCoverSurfaceRepair
+ * @sa vtkQuadCoverWriter vtkQuadCoverSurfaceRepair
  */
 #ifndef vtkQuadCoverReader_h
 #define vtkQuadCoverReader_h

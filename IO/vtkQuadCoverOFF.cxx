@@ -1,9 +1,8 @@
-#include "vtkOFFReader.h"
+// VTK-HeaderTest-Exclude: vtkQuadCoverOFF.cxx
+#include "vtkQuadCoverOFF.h"
 
 #include "vtkCellArray.h"
-#include "vtkInformationVector.h"
 #include "vtkNew.h"
-#include "vtkObjectFactory.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
 
@@ -14,8 +13,6 @@
 #include <stdexcept>
 #include <string>
 #include <vector>
-
-vtkStandardNewMacro(vtkOFFReader);
 
 namespace
 {
@@ -170,15 +167,14 @@ void ReadFaces(OffLines& lines, long long nv, long long nf, vtkPolyData* out)
 }
 }
 
-//------------------------------------------------------------------------------
-int vtkOFFReader::RequestData(
-  vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector)
+namespace vtkQuadCoverOFF
 {
-  std::ifstream in(this->FileName ? this->FileName : "", std::ios::binary);
-  if (!this->FileName || !in)
+std::string Read(const std::string& path, vtkPolyData* output)
+{
+  std::ifstream in(path, std::ios::binary);
+  if (!in)
   {
-    vtkErrorMacro(<< "cannot open '" << (this->FileName ? this->FileName : "") << "'");
-    return 0;
+    return "cannot open the file";
   }
   in.seekg(0, std::ios::end);
   const long long size = static_cast<long long>(in.tellg());
@@ -193,18 +189,12 @@ int vtkOFFReader::RequestData(
     vtkNew<vtkPolyData> surface;
     surface->SetPoints(points);
     ReadFaces(lines, nv, nf, surface);
-    vtkPolyData::GetData(outputVector)->ShallowCopy(surface);
+    output->ShallowCopy(surface);
   }
   catch (const std::exception& e)
   {
-    vtkErrorMacro(<< e.what());
-    return 0;
+    return e.what();
   }
-  return 1;
+  return "";
 }
-
-//------------------------------------------------------------------------------
-void vtkOFFReader::PrintSelf(ostream& os, vtkIndent indent)
-{
-  this->Superclass::PrintSelf(os, indent);
 }
