@@ -89,6 +89,6 @@ void vtkCurvatureFrames::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "NeighborhoodRadius: " << this->NeighborhoodRadius << "\n";
-  os << indent << "UseInputFrames: " << (this->UseInputFrames ? "On" : "Off") << "\n";
   os << indent << "NumberOfThreads: " << this->NumberOfThreads << "\n";
+  os << indent << "UseInputFrames: " << (this->UseInputFrames ? "On" : "Off") << "\n";
 }

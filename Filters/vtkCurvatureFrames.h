@@ -63,20 +63,20 @@ public:
 
   ///@{
   /**
-   * Keep a FrameU cell array found on the input as the guidance field (default on).
-   */
-  vtkSetMacro(UseInputFrames, bool);
-  vtkGetMacro(UseInputFrames, bool);
-  vtkBooleanMacro(UseInputFrames, bool);
-  ///@}
-
-  ///@{
-  /**
    * Number of threads for the per-triangle estimate, 0 for all cores (default 0). The result
    * does not depend on it.
    */
   vtkSetClampMacro(NumberOfThreads, int, 0, 1024);
   vtkGetMacro(NumberOfThreads, int);
+  ///@}
+
+  ///@{
+  /**
+   * Keep a FrameU cell array found on the input as the guidance field (default on).
+   */
+  vtkSetMacro(UseInputFrames, bool);
+  vtkGetMacro(UseInputFrames, bool);
+  vtkBooleanMacro(UseInputFrames, bool);
   ///@}
 
 protected:

@@ -68,7 +68,7 @@ public:
    * original figures) but it cannot change how many quads a region has, which is where most of a
    * map's distortion shows: on the shared meshes it lowers the RSDs by a few per cent at most,
    * raises the Hausdorff distance slightly, and the grid lines follow the frame field less
-   * exactly (README, "How the quads are cut out"). */
+   * exactly (Documentation/Algorithms.md, "How the quads are cut out"). */
   vtkSetClampMacro(RelaxationIterations, int, 0, 1000);
   vtkGetMacro(RelaxationIterations, int);
   ///@}
