@@ -67,16 +67,7 @@ public:
     // transitions z_g = i^r z_f + t across every inner edge, read off the map
     rotation = Eigen::MatrixX3i::Zero(nF, 3);
     translation.assign(3 * static_cast<std::size_t>(nF), Complex(0, 0));
-    for (int f = 0; f < nF; ++f)
-    {
-      for (int k = 0; k < 3; ++k)
-      {
-        if (topo.faceNeighbors(f, k) >= 0)
-        {
-          readTransition(f, k);
-        }
-      }
-    }
+    forEachNeighbor(topo, [&](int f, int k, int) { readTransition(f, k); });
   }
 
   /// Every cell whose centre a triangle holds, in the order of the triangles, then the overlaps
