@@ -30,7 +30,7 @@ void checkArguments(const Inputs& in)
   const std::string matching = checkMatching(in.topo, in.matching);
   if (!matching.empty())
   {
-    throw std::invalid_argument("computeParameterization: " + matching);
+    throw std::invalid_argument(matching); // a user's array: its own words, no function name
   }
   const ParameterizationOptions& options = in.options;
   const bool fromQuadCount = options.targetEdgeLength == 0.0;

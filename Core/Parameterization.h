@@ -5,6 +5,7 @@
 #define quadcover_Parameterization_h
 
 #include "CutGraph.h"
+#include "FrameSmoother.h"
 #include "Matchings.h"
 #include "MeshTopology.h"
 #include "Progress.h"
@@ -43,7 +44,8 @@ struct ParameterizationOptions
   RoundingMode roundingMode = RoundingMode::Greedy;
   /// Boundary edges along a frame direction (within boundaryTolerance degrees) lie on an integer
   /// grid line (constant u or v), so quads end cleanly at the border.
-  bool alignToBoundary = true;
+  /// The same concept as SmootherOptions::alignToBoundary, and its default.
+  bool alignToBoundary = SmootherOptions().alignToBoundary;
   /// The same concept as BranchPointOptions::boundaryTolerance, and its default.
   double boundaryTolerance = BranchPointOptions().boundaryTolerance;
   /// After rounding, triangles whose (u, v) image is flipped are untangled: the real unknowns

@@ -65,12 +65,31 @@ Eigen::MatrixX3d joinSplitPoints(
     {
       if (F(f, k) < 0 || F(f, k) >= n)
       {
-        throw std::invalid_argument("joinSplitPoints: a triangle refers to a point that is not");
+        throw std::invalid_argument("joinSplitPoints: a triangle refers to a point that does not "
+                                    "exist");
       }
       F(f, k) = pointId[F(f, k)];
     }
   }
   return joined;
+}
+
+bool splitPointsCoincide(const Eigen::MatrixX3d& V, const std::vector<int>& pointId)
+{
+  std::vector<int> first(V.rows(), -1); // the first point of each id
+  for (int p = 0; p < static_cast<int>(pointId.size()); ++p)
+  {
+    int& f = first[pointId[p]];
+    if (f < 0)
+    {
+      f = p;
+    }
+    else if (V.row(f) != V.row(p))
+    {
+      return false;
+    }
+  }
+  return true;
 }
 
 HausdorffSamples hausdorffSamples(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F,

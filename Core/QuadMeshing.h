@@ -61,6 +61,11 @@ QuadMeshResult buildQuadMesh(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& 
 Eigen::MatrixX3d joinSplitPoints(
   const Eigen::MatrixX3d& V, Eigen::MatrixX3i& F, const std::vector<int>& pointId);
 
+/// True when the points that share an id lie at one position, as the points of a surface cut
+/// open along its seams do (and an unrelated array of ids most likely does not).
+/// @param[in] V #P x 3 @param[in] pointId #P, each in [0, #P)
+bool splitPointsCoincide(const Eigen::MatrixX3d& V, const std::vector<int>& pointId);
+
 /// What the two-sided Hausdorff distance between a surface and its quad mesh is measured on.
 struct HausdorffSamples
 {

@@ -32,6 +32,7 @@ vtkCurvatureFrames::vtkCurvatureFrames()
 void vtkCurvatureFrames::Execute(vtkQuadCoverSurface& in, vtkInformationVector* outputVector)
 {
   namespace names = vtkQuadCoverArrayNames;
+  vtkQuadCoverEigen::RequireNumbers({ { "NeighborhoodRadius", this->NeighborhoodRadius } });
   quadcover::CurvatureOptions options;
   options.neighborhoodRadius = this->NeighborhoodRadius;
   options.numberOfThreads = this->NumberOfThreads;

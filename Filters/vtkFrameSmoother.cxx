@@ -56,6 +56,9 @@ void vtkFrameSmoother::Execute(vtkQuadCoverSurface& in, vtkInformationVector* ou
     haveWeight ? Eigen::VectorXd(vtkQuadCoverEigen::FromArray(w)) : Eigen::VectorXd::Ones(nf);
   this->UpdateProgress(0.2);
 
+  vtkQuadCoverEigen::RequireNumbers({ { "SmoothingWeight", this->SmoothingWeight },
+    { "ConvergenceTolerance", this->ConvergenceTolerance },
+    { "FeatureAngle", this->FeatureAngle } });
   quadcover::SmootherOptions options;
   options.smoothingWeight = this->SmoothingWeight;
   options.maximumNumberOfIterations = this->MaximumNumberOfIterations;

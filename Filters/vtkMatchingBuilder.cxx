@@ -27,10 +27,9 @@ namespace
 {
 namespace names = vtkQuadCoverArrayNames;
 
-/// The cell array `name` of `surface` when it has `components` components and a tuple per cell.
-vtkDataArray* CellArray(vtkPolyData* surface, const char* name, int components)
+/// `a` when it has `components` components and a tuple per cell of `surface`, else null.
+vtkDataArray* CellArray(vtkDataArray* a, vtkPolyData* surface, int components)
 {
-  vtkDataArray* a = surface->GetCellData()->GetArray(name);
   return a && a->GetNumberOfComponents() == components &&
       a->GetNumberOfTuples() == surface->GetNumberOfCells()
     ? a
@@ -111,7 +110,11 @@ vtkMatchingBuilder::vtkMatchingBuilder()
   this->BoundaryTolerance = defaults.branchPoints.boundaryTolerance;
   this->FitFramesToMatchings = defaults.fitFramesToMatchings;
   this->SetNumberOfOutputPorts(2);
-  this->SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_CELLS, names::FrameU);
+  const int cells = vtkDataObject::FIELD_ASSOCIATION_CELLS;
+  this->SetInputArrayToProcess(0, 0, 0, cells, names::FrameU);
+  this->SetInputArrayToProcess(1, 0, 0, cells, names::FrameV);
+  this->SetInputArrayToProcess(2, 0, 0, cells, names::FrameWeight);
+  this->SetInputArrayToProcess(3, 0, 0, cells, names::FrameConstrained);
 }
 
 //------------------------------------------------------------------------------
@@ -135,14 +138,16 @@ void vtkMatchingBuilder::Execute(vtkQuadCoverSurface& in, vtkInformationVector* 
   }
   this->UpdateProgress(0.1);
   const quadcover::FrameGeometry geometry = quadcover::computeFrameGeometry(in.V, in.F, in.topo);
-  vtkDataArray* v = CellArray(in.polyData, names::FrameV, 3);
-  vtkDataArray* w = CellArray(in.polyData, names::FrameWeight, 1);
-  vtkDataArray* h = CellArray(in.polyData, names::FrameConstrained, 1);
+  vtkDataArray* v = CellArray(this->GetInputArrayToProcess(1, in.polyData), in.polyData, 3);
+  vtkDataArray* w = CellArray(this->GetInputArrayToProcess(2, in.polyData), in.polyData, 1);
+  vtkDataArray* h = CellArray(this->GetInputArrayToProcess(3, in.polyData), in.polyData, 1);
   std::vector<char> held(h ? nf : 0);
   for (vtkIdType f = 0; f < static_cast<vtkIdType>(held.size()); ++f)
   {
     held[f] = h->GetComponent(f, 0) != 0.0;
   }
+  vtkQuadCoverEigen::RequireNumbers({ { "BranchPointWeight", this->BranchPointWeight },
+    { "BoundaryTolerance", this->BoundaryTolerance } });
   quadcover::MatchingOptions options;
   options.optimizeBranchPoints = this->OptimizeBranchPoints;
   options.fitFramesToMatchings = this->FitFramesToMatchings;
@@ -162,7 +167,8 @@ void vtkMatchingBuilder::Execute(vtkQuadCoverSurface& in, vtkInformationVector* 
   {
     // new arrays: the input's stay untouched
     output->GetCellData()->AddArray(ToArray(r.frameU, u->GetName()));
-    output->GetCellData()->AddArray(ToArray(r.frameV, names::FrameV));
+    output->GetCellData()->AddArray(
+      ToArray(r.frameV, v && v->GetName() ? v->GetName() : names::FrameV));
   }
   output->GetCellData()->AddArray(ToArray<vtkIntArray>(r.topology.matching, names::Matching));
   output->GetPointData()->AddArray(ToArray<vtkIntArray>(r.topology.layerShift, names::LayerShift));

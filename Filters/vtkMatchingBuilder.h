@@ -33,7 +33,10 @@
  *
  * Input: a manifold, consistently oriented triangle surface (every point's triangles one fan)
  * with the cell array FrameU (SetInputArrayToProcess(0, ...) for another name). Only FrameU's
- * direction is used: the field is treated as four-fold symmetric.
+ * direction is used for the matchings: the field is treated as four-fold symmetric. When the
+ * frames are fitted to changed matchings, FrameV (1; if absent, n x FrameU) turns with them,
+ * FrameWeight (2) weighs the curvature alignment and FrameConstrained (3) holds boundary frames;
+ * the fitted frames are written under the names of arrays 0 and 1.
  * @sa vtkFrameSmoother vtkQuadCoverSolver
  */
 #ifndef vtkMatchingBuilder_h

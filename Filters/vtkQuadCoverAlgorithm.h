@@ -8,8 +8,11 @@
  * triangulated, triangles that repeat a point dropped with a warning, and the connectivity the
  * stage needs), then runs the stage. Any failure becomes one error, "Cannot <what the stage
  * does>: <reason>.", through vtkErrorMacro, and RequestData returns 0. The long computations
- * report progress (ProgressEvent) and stop soon after AbortExecute is set; the outputs are then
- * left empty and no error is raised.
+ * (smoothing, the branch-point search, the map, the quads) report progress (ProgressEvent) from
+ * inside and stop soon after AbortExecute is set (within a sparse factorization's time: several
+ * seconds on a million triangles); the outputs are then left empty and no error is raised, so a
+ * stage downstream of an aborted one reports an input without points. The repair and the
+ * curvature estimate, linear and quick, only report their steps.
  *
  * Subclasses implement Execute and name their action; they throw std::exception (a one-line
  * what(), without a final period) for anything wrong with their input.

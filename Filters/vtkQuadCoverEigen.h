@@ -22,7 +22,12 @@
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 
+#include <cmath>
+#include <initializer_list>
 #include <memory>
+#include <stdexcept>
+#include <string>
+#include <utility>
 #include <vector>
 
 namespace vtkQuadCoverEigen
@@ -133,6 +138,19 @@ inline Eigen::MatrixXd FromArray(vtkDataArray* a)
 inline Eigen::MatrixX3d FromArray3(vtkDataArray* a)
 {
   return FromArray(a);
+}
+
+/// Throws "NAME is not a number" for the first of the properties that is NaN: vtkSetClampMacro
+/// lets NaN through (it compares false with both bounds), from Python or ParaView as from C++.
+inline void RequireNumbers(std::initializer_list<std::pair<const char*, double>> properties)
+{
+  for (const auto& [name, value] : properties)
+  {
+    if (std::isnan(value))
+    {
+      throw std::invalid_argument(std::string(name) + " is not a number");
+    }
+  }
 }
 
 /// A Core progress that forwards to `algorithm`'s UpdateProgress, mapped into [begin, end] and

@@ -2,6 +2,7 @@
 
 #include "vtkAlgorithm.h"
 #include "vtkExecutive.h"
+#include "vtkNew.h"
 #include "vtkObjectFactory.h"
 
 #include <algorithm>
@@ -45,6 +46,15 @@ void vtkQuadCoverErrorObserver::Clear()
 {
   this->FirstError.clear();
   this->Warnings.clear();
+}
+
+//------------------------------------------------------------------------------
+std::string vtkQuadCoverErrorObserver::Run(vtkAlgorithm* algorithm)
+{
+  vtkNew<vtkQuadCoverErrorObserver> errors;
+  errors->Attach(algorithm);
+  algorithm->Update();
+  return errors->GetError();
 }
 
 //------------------------------------------------------------------------------

@@ -44,6 +44,9 @@ public:
   /// Forget what was collected.
   void Clear();
 
+  /// Updates `algorithm` with an observer attached; its first error ("" when none).
+  static std::string Run(vtkAlgorithm* algorithm);
+
   /// Strips "ERROR: In <file>, line <n>\n<class> (<address>): " and trailing white space from a
   /// VTK message, and joins its lines.
   static std::string Clean(const char* message);

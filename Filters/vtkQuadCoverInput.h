@@ -1,5 +1,5 @@
-// vtkQuadCoverInput.h: the input checks and repairs every QuadCover filter shares, also used by
-// the command line. Not wrapped (plain functions).
+// vtkQuadCoverInput.h (private): the input checks and the triangulation every QuadCover filter
+// shares (vtkQuadCoverAlgorithm). Not wrapped or installed (plain functions).
 #ifndef vtkQuadCoverInput_h
 #define vtkQuadCoverInput_h
 

@@ -143,6 +143,8 @@ void vtkQuadCoverSolver::Execute(vtkQuadCoverSurface& in, vtkInformationVector* 
   this->UpdateProgress(0.1);
 
   const quadcover::FrameGeometry geometry = quadcover::computeFrameGeometry(in.V, in.F, in.topo);
+  vtkQuadCoverEigen::RequireNumbers({ { "TargetEdgeLength", this->TargetEdgeLength },
+    { "BoundaryTolerance", this->BoundaryTolerance } });
   quadcover::ParameterizationOptions options;
   options.targetEdgeLength = this->TargetEdgeLength;
   options.targetQuadCount = this->TargetQuadCount;

@@ -36,16 +36,13 @@ struct Counts
 };
 
 /// Updates a VTK filter on `input`; its first error is thrown.
-template<typename Filter>
-void Run(Filter* filter, vtkPolyData* input)
+void Run(vtkAlgorithm* filter, vtkPolyData* input)
 {
-  vtkNew<vtkQuadCoverErrorObserver> errors;
-  errors->Attach(filter);
-  filter->SetInputData(input);
-  filter->Update();
-  if (!errors->GetError().empty())
+  filter->SetInputDataObject(input);
+  const std::string error = vtkQuadCoverErrorObserver::Run(filter);
+  if (!error.empty())
   {
-    throw std::runtime_error(errors->GetError());
+    throw std::runtime_error(error);
   }
 }
 

@@ -50,20 +50,27 @@ double LargestDistance(
   return std::sqrt(largest);
 }
 
-/// The solver's SplitSeams output: its points joined back through SurfacePointId.
-void JoinSplitSurface(vtkQuadCoverSurface& in)
+/// The solver's SplitSeams output: its points joined back through SurfacePointId (when the
+/// points of one id lie together, as the solver writes them). Returns a warning or "".
+std::string JoinSplitSurface(vtkQuadCoverSurface& in)
 {
   vtkDataArray* ids = in.polyData->GetPointData()->GetArray(names::SurfacePointId);
   const vtkIdType n = in.polyData->GetNumberOfPoints();
   if (!ids || ids->GetNumberOfComponents() != 1 || ids->GetNumberOfTuples() != n ||
     ids->GetRange()[0] < 0 || !(ids->GetRange()[1] < static_cast<double>(n)))
   {
-    return;
+    return "";
   }
   std::vector<int> pointId(n);
   for (vtkIdType p = 0; p < n; ++p)
   {
     pointId[p] = static_cast<int>(ids->GetTuple1(p));
+  }
+  if (!quadcover::splitPointsCoincide(in.V, pointId))
+  {
+    return std::string("the input's ") + names::SurfacePointId +
+      " joins points that lie apart, so it is not a surface cut open along its seams; it is "
+      "ignored";
   }
   in.V = quadcover::joinSplitPoints(in.V, in.F, pointId);
   in.topo = quadcover::buildTopology(in.F, static_cast<int>(in.V.rows()));
@@ -72,6 +79,7 @@ void JoinSplitSurface(vtkQuadCoverSurface& in)
     throw std::invalid_argument(std::string("the surface joined through ") + names::SurfacePointId +
       " has " + in.topo.describeDefects());
   }
+  return "";
 }
 
 /// The quads as vtkQuad cells with point data Valence and cell data ScaledJacobian.
@@ -154,7 +162,11 @@ void vtkQuadExtractor::Execute(vtkQuadCoverSurface& in, vtkInformationVector* ou
   vtkDataArray* uvArray = this->RequireCellArray(0, in.polyData, 6, names::CornerUV,
     "run vtkQuadCoverSolver first, or name your own with SetInputArrayToProcess");
   const Eigen::MatrixXd uv = vtkQuadCoverEigen::FromArray(uvArray);
-  JoinSplitSurface(in);
+  const std::string ignored = JoinSplitSurface(in);
+  if (!ignored.empty())
+  {
+    this->Warn(ignored);
+  }
   if (!uv.allFinite())
   {
     throw std::invalid_argument(std::string(names::CornerUV) + " has non-finite values");

@@ -71,6 +71,10 @@ void ReadHeader(OffLines& lines, long long fileSize, long long& nv, long long& n
   {
     lines.Fail(keyword + " files are not three-dimensional surfaces");
   }
+  if (prefix.find_first_not_of("STCN") != std::string::npos)
+  {
+    lines.Fail("not an OFF file (" + keyword + " is not OFF, COFF, NOFF, STOFF or the like)");
+  }
   std::string rest;
   std::getline(words, rest);
   if (rest.find("BINARY") != std::string::npos)

@@ -88,14 +88,12 @@ std::string ReadFile(const std::string& path, vtkPolyData* out)
   {
     return error;
   }
-  vtkNew<vtkQuadCoverErrorObserver> errors;
-  errors->Attach(reader);
-  reader->Update();
-  if (errors->GetError().empty())
+  error = vtkQuadCoverErrorObserver::Run(reader);
+  if (error.empty())
   {
     out->ShallowCopy(reader->GetOutputDataObject(0));
   }
-  return errors->GetError();
+  return error;
 }
 }
 

@@ -92,11 +92,7 @@ void vtkQuadCoverWriter::WriteData()
   }
   else
   {
-    vtkSmartPointer<vtkAlgorithm> writer = MakeWriter(path, surface);
-    vtkNew<vtkQuadCoverErrorObserver> errors;
-    errors->Attach(writer);
-    writer->Update();
-    error = errors->GetError();
+    error = vtkQuadCoverErrorObserver::Run(MakeWriter(path, surface));
     if (error.empty() && !std::ifstream(path).good())
     {
       error = "the file was not written";

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <limits>
 #include <ostream>
 #include <type_traits>
 
@@ -68,7 +69,7 @@ Option Ranged(Option o, double low, double high)
 #define QC_BOTH(f, g, Property)                                                                    \
   [f, g]() {                                                                                       \
     return f->Get##Property() == g->Get##Property() ? double(f->Get##Property())                   \
-                                                    : std::nan("the two filters disagree");        \
+                                                    : std::numeric_limits<double>::quiet_NaN();    \
   }
 #define QC_SWITCH2(stage, f, g, Property, meaning)                                                 \
   Bind(                                                                                            \
@@ -124,58 +125,105 @@ bool ReadValue(const Option& o, const std::string& text, double& value)
     (o.kind != Option::Kind::Whole || value == std::floor(value));
 }
 
-/// One "--name", "--name=value" or "--name value" argument at argv[i] (i moves past a value).
-std::string ParseOption(int argc, char* argv[], int& i, const std::vector<Option>& options)
+/// A "--name" or "--name=value" argument: its name and the value after its '=', if any.
+struct Argument
 {
-  std::string name = std::string(argv[i]).substr(2);
+  std::string name;
   std::string value;
-  const auto equals = name.find('=');
-  const bool inlineValue = equals != std::string::npos;
-  if (inlineValue)
+  bool inlineValue = false;
+};
+
+Argument Split(const std::string& a)
+{
+  Argument arg;
+  arg.name = a.substr(2);
+  const auto equals = arg.name.find('=');
+  if (equals != std::string::npos)
   {
-    value = name.substr(equals + 1);
-    name = name.substr(0, equals);
+    arg.value = arg.name.substr(equals + 1);
+    arg.name = arg.name.substr(0, equals);
+    arg.inlineValue = true;
   }
-  const Option* o = Find(options, name);
-  const Option* negated = name.compare(0, 3, "no-") == 0 ? Find(options, name.substr(3)) : nullptr;
-  if (!o && negated && negated->kind == Option::Kind::Switch && !inlineValue)
+  return arg;
+}
+
+/// The argument's value: after its '=', or the next argument (i moves past it); "" and false
+/// when there is none.
+bool TakeValue(int argc, char* argv[], int& i, Argument& arg)
+{
+  if (!arg.inlineValue && i + 1 < argc)
   {
-    negated->set(0.0);
-    return "";
+    arg.value = argv[++i];
+    arg.inlineValue = true;
   }
-  if (!o)
+  return arg.inlineValue;
+}
+
+/// A stage option (i moves past a value that follows it).
+std::string ParseOption(
+  int argc, char* argv[], int& i, Argument arg, const std::vector<Option>& options)
+{
+  const Option* o = Find(options, arg.name);
+  const Option* negated =
+    arg.name.compare(0, 3, "no-") == 0 ? Find(options, arg.name.substr(3)) : nullptr;
+  if (!o && !(negated && negated->kind == Option::Kind::Switch))
   {
-    return "unknown option --" + name;
+    return "unknown option --" + arg.name;
   }
-  if (o->kind == Option::Kind::Switch && !inlineValue)
+  const Option* target = o ? o : negated;
+  if (target->kind == Option::Kind::Switch)
   {
-    o->set(1.0);
-    return "";
-  }
-  if (!inlineValue)
-  {
-    if (i + 1 >= argc)
+    if (arg.inlineValue)
     {
-      return "--" + name + " needs a value";
+      return "--" + arg.name + " takes no value (use --" + target->flag + " or --no-" +
+        target->flag + ")";
     }
-    value = argv[++i];
+    target->set(o ? 1.0 : 0.0);
+    return "";
   }
   double x = 0.0;
-  if (o->kind == Option::Kind::Switch)
+  if (!TakeValue(argc, argv, i, arg))
   {
-    return "--" + name + " takes no value (use --" + name + " or --no-" + name + ")";
+    return "--" + arg.name + " needs a value";
   }
-  if (!ReadValue(*o, value, x))
+  if (!ReadValue(*o, arg.value, x))
   {
     std::string allowed;
     for (const std::string& c : o->choices)
     {
       allowed += (allowed.empty() ? " (" : ", ") + c;
     }
-    return "invalid value '" + value + "' for --" + name + (allowed.empty() ? "" : allowed + ")");
+    return "invalid value '" + arg.value + "' for --" + arg.name +
+      (allowed.empty() ? "" : allowed + ")");
   }
   o->set(x);
   return "";
+}
+
+/// A "--" argument: one of the command line's own, or a stage option.
+std::string ParseLong(
+  int argc, char* argv[], int& i, const std::vector<Option>& options, Request& request)
+{
+  Argument arg = Split(argv[i]);
+  std::string* text = arg.name == "output" ? &request.output
+    : arg.name == "stage"                  ? &request.stage
+    : arg.name == "stats"                  ? &request.stats
+                                           : nullptr;
+  if (text)
+  {
+    if (!TakeValue(argc, argv, i, arg))
+    {
+      return "--" + arg.name + " needs a value";
+    }
+    *text = arg.value;
+    return "";
+  }
+  if (arg.name == "help" || arg.name == "verbose")
+  {
+    (arg.name == "help" ? request.help : request.verbose) = true;
+    return arg.inlineValue ? "--" + arg.name + " takes no value" : "";
+  }
+  return ParseOption(argc, argv, i, arg, options);
 }
 
 /// The checks once every argument is read.
@@ -254,7 +302,8 @@ std::vector<Option> StageOptions(Pipeline& p)
     QC_SWITCH2("smooth", smoother, solver, AlignToBoundary,
       "quads follow the boundary: frames held along it, boundary edges on grid lines"),
     QC_SWITCH("smooth", smoother, GlobalStart, "also start from the globally smoothest fields"),
-    QC_SWITCH("matching", matching, OptimizeBranchPoints, "merge pairs of singularities that cancel (Sect. 4.2)"),
+    QC_SWITCH("matching", matching, OptimizeBranchPoints,
+      "merge pairs of singularities that cancel (Sect. 4.2)"),
     QC_NUMBER("matching", matching, BranchPointWeight,
       "cost of one singular point, in radians of matching angle"),
     QC_SWITCH("matching", matching, LengthScaledCost,
@@ -285,43 +334,32 @@ std::vector<Option> StageOptions(Pipeline& p)
 
 std::string Parse(int argc, char* argv[], const std::vector<Option>& options, Request& request)
 {
-  for (int i = 1; i < argc; ++i)
+  for (int i = 1; i < argc && !request.help; ++i)
   {
     const std::string a = argv[i];
-    const bool takesValue = a == "-o" || a == "--output" || a == "--stage" || a == "--stats";
-    if (takesValue && i + 1 >= argc)
-    {
-      return a + " needs a value";
-    }
-    if (a == "-h" || a == "--help")
-    {
+    std::string problem;
+    if (a == "-h")
       request.help = true;
-      return "";
-    }
-    else if (a == "-v" || a == "--verbose")
+    else if (a == "-v")
       request.verbose = true;
-    else if (a == "-o" || a == "--output")
+    else if (a == "-o" && i + 1 < argc)
       request.output = argv[++i];
-    else if (a == "--stage")
-      request.stage = argv[++i];
-    else if (a == "--stats")
-      request.stats = argv[++i];
+    else if (a == "-o")
+      problem = "-o needs a value";
     else if (a.compare(0, 2, "--") == 0 && a.size() > 2)
-    {
-      const std::string problem = ParseOption(argc, argv, i, options);
-      if (!problem.empty())
-      {
-        return problem;
-      }
-    }
+      problem = ParseLong(argc, argv, i, options, request);
     else if (!a.empty() && a[0] == '-' && a != "-")
-      return "unknown option " + a;
+      problem = "unknown option " + a;
     else if (request.input.empty())
       request.input = a;
     else
-      return "more than one input file given ('" + request.input + "', '" + a + "')";
+      problem = "more than one input file given ('" + request.input + "', '" + a + "')";
+    if (!problem.empty())
+    {
+      return problem;
+    }
   }
-  return CheckRequest(request);
+  return request.help ? "" : CheckRequest(request);
 }
 
 void PrintUsage(std::ostream& os, const std::vector<Option>& options)

@@ -4,6 +4,7 @@
 #include "vtkDataArray.h"
 #include "vtkFieldData.h"
 #include "vtkPolyData.h"
+#include "vtkQuadCoverArrayNames.h"
 
 #include <cctype>
 #include <cmath>
@@ -67,12 +68,15 @@ std::string Snake(const std::string& name)
 }
 
 /// A field array's value: a number (one value), a list of values (one component) or a list
-/// of tuples.
+/// of tuples. Arrays with a tuple per item (a solve, an index) are lists however many there are.
 std::string JsonArray(vtkDataArray* a)
 {
+  namespace names = vtkQuadCoverArrayNames;
   const vtkIdType n = a->GetNumberOfTuples();
   const int comps = a->GetNumberOfComponents();
-  if (n == 1 && comps == 1)
+  const std::string name = a->GetName() ? a->GetName() : "";
+  const bool list = name == names::SolveSeconds || name == names::SingularityHistogram;
+  if (n == 1 && comps == 1 && !list)
   {
     return JsonNumber(a->GetComponent(0, 0));
   }
@@ -146,7 +150,8 @@ std::string StatsJson(const Request& request, vtkPolyData* input, const Pipeline
     if (Pipeline::StageNames()[s] == "quads")
     {
       members = "\"vertices\": " + std::to_string(out->GetNumberOfPoints()) +
-        ", \"faces\": " + std::to_string(out->GetNumberOfPolys()) + ", " + members;
+        ", \"faces\": " + std::to_string(out->GetNumberOfPolys()) + (members.empty() ? "" : ", ") +
+        members;
     }
     js << ",\n  " << JsonString(Pipeline::StageNames()[s]) << ": {" << members << "}";
     previous = out;

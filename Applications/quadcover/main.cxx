@@ -46,15 +46,6 @@ void QuietVTK()
   vtkLogger::SetStderrVerbosity(vtkLogger::VERBOSITY_OFF); // VTK 9 logs errors here too
 }
 
-/// Runs `algorithm`'s Update (or a writer's Write) and returns its first error.
-template<typename Algorithm>
-std::string Run(Algorithm* algorithm)
-{
-  vtkNew<vtkQuadCoverErrorObserver> errors;
-  errors->Attach(algorithm);
-  algorithm->Update();
-  return errors->GetError();
-}
 }
 
 int main(int argc, char* argv[])
@@ -81,7 +72,7 @@ int main(int argc, char* argv[])
   auto start = std::chrono::steady_clock::now();
   vtkNew<vtkQuadCoverReader> reader;
   reader->SetFileName(request.input.c_str());
-  std::string error = Run(reader.Get());
+  std::string error = vtkQuadCoverErrorObserver::Run(reader);
   if (!error.empty())
   {
     return Fail(error);
@@ -100,7 +91,7 @@ int main(int argc, char* argv[])
   vtkNew<vtkQuadCoverWriter> writer;
   writer->SetFileName(request.output.c_str());
   writer->SetInputConnection(pipeline.Filter(last)->GetOutputPort());
-  error = Run(writer.Get());
+  error = vtkQuadCoverErrorObserver::Run(writer);
   if (!error.empty())
   {
     return Fail(error);

@@ -13,8 +13,8 @@
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkQuadCoverArrayNames.h"
-#include "vtkQuadCoverErrorObserver.h"
 #include "vtkQuadCoverEigen.h"
+#include "vtkQuadCoverErrorObserver.h"
 
 #include "MeshTopology.h"
 #include "Surfaces.h"

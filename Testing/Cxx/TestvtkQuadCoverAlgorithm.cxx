@@ -16,6 +16,10 @@
 
 #include <gtest/gtest.h>
 
+#include <functional>
+#include <limits>
+#include <string>
+#include <utility>
 #include <vector>
 
 namespace
@@ -129,6 +133,29 @@ TEST(vtkQuadCoverAlgorithm, AbortStopsAStageWithAnEmptyOutputAndNoError)
     filter->Modified();
     filter->Update();
     EXPECT_GT(vtkPolyData::SafeDownCast(filter->GetOutputDataObject(0))->GetNumberOfCells(), 0);
+  }
+}
+
+TEST(vtkQuadCoverAlgorithm, APropertyThatIsNotANumberIsAnError)
+{
+  // vtkSetClampMacro lets NaN through; each stage refuses it before it computes anything
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  const std::vector<std::pair<std::string, std::function<void(Chain&)>>> cases = {
+    { "Cannot estimate curvature: NeighborhoodRadius is not a number.",
+      [&](Chain& c) { c.curvature->SetNeighborhoodRadius(nan); } },
+    { "Cannot smooth frames: SmoothingWeight is not a number.",
+      [&](Chain& c) { c.smoother->SetSmoothingWeight(nan); } },
+    { "Cannot build matchings: BranchPointWeight is not a number.",
+      [&](Chain& c) { c.matching->SetBranchPointWeight(nan); } },
+    { "Cannot parameterize: TargetEdgeLength is not a number.",
+      [&](Chain& c) { c.solver->SetTargetEdgeLength(nan); } },
+  };
+  for (const auto& [error, spoil] : cases)
+  {
+    Chain chain;
+    spoil(chain);
+    chain.extractor->Update();
+    EXPECT_EQ(chain.errors->GetError(), error);
   }
 }
 

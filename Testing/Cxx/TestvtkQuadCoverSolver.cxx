@@ -14,8 +14,8 @@
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
 #include "vtkQuadCoverArrayNames.h"
-#include "vtkQuadCoverErrorObserver.h"
 #include "vtkQuadCoverEigen.h"
+#include "vtkQuadCoverErrorObserver.h"
 #include "vtkQuadCoverSolver.h"
 
 #include "GridMapChecks.h"
@@ -143,9 +143,10 @@ TEST(vtkQuadCoverSolver, MissingOrBrokenArraysAreErrors)
     errors->Attach(s);
     s->SetInputData(bad);
     s->Update();
-    EXPECT_NE(errors->GetError().find("Cannot parameterize"), std::string::npos) << errors->GetError();
-    EXPECT_NE(
-      errors->GetError().find(broken == 5 ? "must be 0, 1, 2 or 3" : "not inverse"), std::string::npos)
+    EXPECT_NE(errors->GetError().find("Cannot parameterize"), std::string::npos)
+      << errors->GetError();
+    EXPECT_NE(errors->GetError().find(broken == 5 ? "must be 0, 1, 2 or 3" : "not inverse"),
+      std::string::npos)
       << errors->GetError();
   }
 }

@@ -95,6 +95,10 @@ TEST(vtkQuadCoverSurfaceRepair, MergesTriangulatesAndOrientsKeepingTheData)
     label->InsertNextValue(v);
   }
   in->GetCellData()->AddArray(label);
+  vtkNew<vtkDoubleArray> scan;
+  scan->SetName("ScanDate");
+  scan->InsertNextValue(20261201);
+  in->GetFieldData()->AddArray(scan);
   const Repaired r = Repair(in);
   ASSERT_EQ(r.error, "");
   EXPECT_EQ(r.Count(names::MergedPoints), 2);
@@ -118,6 +122,8 @@ TEST(vtkQuadCoverSurfaceRepair, MergesTriangulatesAndOrientsKeepingTheData)
   }
   EXPECT_EQ(sum, 2 * 10 + 2 * 20 + 30);
   EXPECT_EQ(r.output->GetCellData()->GetArray("Normals"), nullptr) << "no by-product";
+  ASSERT_NE(r.output->GetFieldData()->GetArray("ScanDate"), nullptr) << "field data kept";
+  EXPECT_EQ(r.output->GetFieldData()->GetArray("ScanDate")->GetTuple1(0), 20261201);
   // the five stages take it as it is
   vtkNew<vtkCurvatureFrames> curvature;
   vtkNew<vtkQuadCoverErrorObserver> errors;

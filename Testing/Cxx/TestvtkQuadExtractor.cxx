@@ -9,14 +9,15 @@
 #include "vtkDataArray.h"
 #include "vtkFieldData.h"
 #include "vtkFrameSmoother.h"
+#include "vtkIdTypeArray.h"
 #include "vtkMatchingBuilder.h"
 #include "vtkMath.h"
 #include "vtkNew.h"
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
 #include "vtkQuadCoverArrayNames.h"
-#include "vtkQuadCoverErrorObserver.h"
 #include "vtkQuadCoverEigen.h"
+#include "vtkQuadCoverErrorObserver.h"
 #include "vtkQuadCoverSolver.h"
 #include "vtkQuadExtractor.h"
 
@@ -107,6 +108,38 @@ TEST(vtkQuadExtractor, TheSplitSeamsOutputGivesTheSameQuads)
   EXPECT_EQ(p.extractor->GetOutput()->GetNumberOfCells(), quads);
   EXPECT_EQ(Field(p.extractor->GetOutput(), names::EulerCharacteristic), 0);
   EXPECT_EQ(Field(p.extractor->GetOutput(), names::BoundaryLoops), 0);
+}
+
+TEST(vtkQuadExtractor, PointIdsThatJoinPointsApartAreIgnored)
+{
+  // A SurfacePointId array that is not the solver's (every two points share an id): joining by
+  // it would glue distant points together; the extractor warns and cuts the quads as without it.
+  const quadcover::Surface knot =
+    quadcover::makeKnotTube(2, 3, 1.0, 0.4, 0.12, 240, 20, 0.3, 0.03, 7);
+  Pipeline p(vtkQuadCoverEigen::ToPolyData(knot.V, knot.F));
+  p.solver->SetTargetQuadCount(800);
+  p.solver->Update();
+  vtkNew<vtkPolyData> stale;
+  stale->ShallowCopy(p.solver->GetOutput());
+  vtkNew<vtkIdTypeArray> ids;
+  ids->SetName(names::SurfacePointId);
+  for (vtkIdType i = 0; i < stale->GetNumberOfPoints(); ++i)
+  {
+    ids->InsertNextValue(i / 2);
+  }
+  stale->GetPointData()->AddArray(ids);
+  vtkNew<vtkQuadExtractor> extractor;
+  vtkNew<vtkQuadCoverErrorObserver> errors;
+  errors->Attach(extractor);
+  extractor->SetInputData(stale);
+  extractor->Update();
+  ASSERT_EQ(errors->GetError(), "");
+  ASSERT_GE(errors->GetNumberOfWarnings(), 1);
+  EXPECT_NE(errors->GetWarning(0).find("is ignored"), std::string::npos) << errors->GetWarning(0);
+  p.extractor->Update();
+  EXPECT_EQ(
+    extractor->GetOutput()->GetNumberOfCells(), p.extractor->GetOutput()->GetNumberOfCells());
+  EXPECT_EQ(Field(extractor->GetOutput(), names::EulerCharacteristic), 0);
 }
 
 TEST(vtkQuadExtractor, CellCentresOnMeshEdgesGiveOneQuadEach)

@@ -101,7 +101,7 @@ class CommandLine(unittest.TestCase):
             self.assertIsNotNone(pd.GetPointData().GetArray(name), name)
 
     def test_param_stage_options_and_stats(self):
-        # The default stage is param: a seamless map with the sphere's 8 branch points on the
+        # The param stage: a seamless map with the sphere's 8 branch points on the
         # grid, no flips, about --target-quad-count cells; the options reach the solver.
         out = os.path.join(self.dir, "s.vtp")
         stats = os.path.join(self.dir, "s.json")
@@ -143,6 +143,21 @@ class CommandLine(unittest.TestCase):
         pd = reader.GetOutput()
         self.assertIsNotNone(pd.GetPointData().GetTCoords())
         self.assertGreater(pd.GetNumberOfPoints(), 2562)  # cut open along the seams
+
+    def test_built_in_options_take_their_value_after_an_equals_sign(self):
+        # and the figures of one solve are a list all the same (rounding none: one solve)
+        stats = os.path.join(self.dir, "e.json")
+        code, _, err = run(os.path.join(DATA, "sphere.obj"),
+                           "--output=" + os.path.join(self.dir, "e.vtp"), "--stage=param",
+                           "--stats=" + stats, "--rounding-mode=none", "--target-quad-count=300")
+        self.assertEqual(code, 0, err)
+        with open(stats) as f:
+            s = json.load(f)
+        self.assertEqual(s["stage"], "param")
+        self.assertEqual(s["options"]["rounding_mode"], "none")
+        self.assertIsInstance(s["param"]["solve_seconds"], list)
+        self.assertEqual(len(s["param"]["solve_seconds"]), 1)
+        self.assertTrue(os.path.exists(os.path.join(self.dir, "e.vtp")))
 
     def test_quads_by_default_in_every_output_format(self):
         # The default stage: an all-quad, closed, manifold mesh of the sphere with its 8
@@ -191,7 +206,8 @@ class CommandLine(unittest.TestCase):
     def test_boundary_options_reach_both_filters(self):
         # --no-align-to-boundary: the smoother holds no frame along the cylinder's circles and
         # the solver puts no boundary edge on a grid line; --boundary-tolerance reaches the
-        # matching stage and the solver alike (the options read null while two filters differ).
+        # matching stage and the solver alike (the option reads null while the two differ, so 5
+        # here says both have it).
         cylinder = os.path.join(DATA, "cylinder.obj")
         figures = {}
         for flags in ([], ["--no-align-to-boundary"]):
@@ -246,6 +262,7 @@ class CommandLine(unittest.TestCase):
         tri = "0 0 0\n1 0 0\n0 1 0\n"
         cases = {
             "header": ("OFX\n3 1 0\n" + tri + "3 0 1 2\n", r"not an OFF file"),
+            "prefix": ("FOOOFF\n3 1 0\n" + tri + "3 0 1 2\n", r"FOOOFF is not OFF"),
             "4d": ("4OFF\n3 1 0\n" + tri + "3 0 1 2\n", r"not three-dimensional"),
             "binary": ("OFF BINARY\n", r"binary OFF"),
             "no-counts": ("OFF\n", r"ends before the vertex and face counts"),
@@ -499,6 +516,10 @@ class CommandLine(unittest.TestCase):
                  ([knot, "-o", "x.vtp", "--frobnicate"], r"unknown option --frobnicate"),
                  ([knot, "-o", "x.vtp", "--no-smoothing-weight"], r"unknown option"),
                  ([knot, "-o", "x.vtp", "--pure-quads=1"], r"takes no value"),
+                 ([knot, "-o", "x.vtp", "--no-pure-quads=1"], r"--no-pure-quads takes no value"),
+                 ([knot, "-o", "x.vtp", "--verbose=yes"], r"--verbose takes no value"),
+                 ([knot, "-o", "x.vtp", "--stage"], r"--stage needs a value"),
+                 ([knot, "-o", "x.vtp", "--stage=bogus"], r"unknown stage 'bogus'"),
                  ([knot, "-o", "x.vtp", "--rounding-mode", "best"],
                   r"invalid value 'best' for --rounding-mode \(none, simple, greedy\)"),
                  ([knot, "-o", "x.vtp", "--target-quad-count", "0"], r"invalid value"),
