@@ -545,38 +545,19 @@ TEST(Parameterization, NegativeConesKeepTheirIndex)
 
 TEST(Parameterization, NoMergeTwistsATubeBetweenItsBoundaryLoops)
 {
-  // A tube (r = 1, from z = -4 to 4) whose frames follow both boundary circles, with a +1/4 and
-  // a -1/4 point on opposite sides at mid-height: theta = (arg(zeta - zeta_a) - arg(zeta -
-  // zeta_b)) / 4 in zeta = exp(i (s + i z)), the tube's conformal image, plus a slow turn along
-  // the tube that brings both ends back onto the circles. Merging the pair along one side leaves
-  // a field that follows the circles at both ends; along the other side, one that turns a quarter
-  // between them, and then no grid has both circles on grid lines (the map folds). Whichever side
-  // is cheaper, the merge kept must be the first kind.
-  const Surface tube = makeCylinder(1.0, 8.0, 96, 160);
+  // twistTube, and frames that follow both its boundary circles with a +1/4 and a -1/4 point on
+  // opposite sides (twistTubeFrames): merging the pair along one side leaves a field that
+  // follows the circles at both ends; along the other side, one that turns a quarter between
+  // them, and then no grid has both circles on grid lines (the map folds). Whichever side is
+  // cheaper, the merge kept must be the first kind.
+  const Surface tube = twistTube();
   const MeshTopology topo = buildTopology(tube.F, static_cast<int>(tube.V.rows()));
   const FrameGeometry geometry = computeFrameGeometry(tube.V, tube.F, topo);
   int avoided = 0;
   for (const double offset : { 0.3, -0.3 })
   {
     SCOPED_TRACE(offset);
-    const double angleA = 0.0, angleB = Pi + offset;
-    const std::complex<double> zetaA = std::polar(1.0, angleA), zetaB = std::polar(1.0, angleB);
-    Eigen::MatrixX3d U(tube.F.rows(), 3);
-    for (int f = 0; f < tube.F.rows(); ++f)
-    {
-      const Eigen::Vector3d c =
-        (tube.V.row(tube.F(f, 0)) + tube.V.row(tube.F(f, 1)) + tube.V.row(tube.F(f, 2))) / 3.0;
-      const double angle = std::atan2(c.y(), c.x());
-      const std::complex<double> zeta = std::polar(std::exp(-c.z()), angle);
-      const double ramp = 0.5 + 0.5 * std::tanh(c.z());
-      const double theta =
-        0.25 * (std::arg(zeta - zetaA) - std::arg(zeta - zetaB)) + 0.25 * (angleB - angleA) * ramp;
-      const Eigen::Vector3d around(-std::sin(angle), std::cos(angle), 0.0);
-      const Eigen::Vector3d axis(0.0, 0.0, 1.0);
-      const Eigen::Vector3d normal = geometry.bases.normal.row(f);
-      const Eigen::Vector3d u = std::cos(theta) * around + std::sin(theta) * axis;
-      U.row(f) = (u - u.dot(normal) * normal).normalized();
-    }
+    const Eigen::MatrixX3d U = twistTubeFrames(tube, geometry.bases.normal, offset);
     FrameTopology field = computeMatchings(tube.F, topo, geometry, U);
     ASSERT_EQ(field.singularities, 2);
     BranchPointOptions options;
