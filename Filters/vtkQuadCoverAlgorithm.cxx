@@ -24,10 +24,7 @@ vtkQuadCoverSurface LoadSurface(
   s.polyData = vtkSmartPointer<vtkPolyData>::New();
   if (requirement == vtkQuadCoverAlgorithm::ANY_POLYDATA)
   {
-    std::string problem = !input || input->GetNumberOfPoints() == 0
-      ? "the input has no points"
-      : vtkQuadCoverInput::CheckPointIds(input);
-    problem = problem.empty() ? vtkQuadCoverInput::CheckFinitePoints(input) : problem;
+    const std::string problem = vtkQuadCoverInput::CheckPoints(input);
     if (!problem.empty())
     {
       throw std::invalid_argument(problem);

@@ -18,10 +18,8 @@ bool ProperTriangle(vtkIdList* cell)
   return cell->GetNumberOfIds() == 3 && cell->GetId(0) != cell->GetId(1) &&
     cell->GetId(1) != cell->GetId(2) && cell->GetId(2) != cell->GetId(0);
 }
-}
 
-namespace vtkQuadCoverInput
-{
+/// "" when every point id of every cell lies in [0, #points) and #points fits an int.
 std::string CheckPointIds(vtkPolyData* in)
 {
   const vtkIdType n = in->GetNumberOfPoints();
@@ -55,6 +53,7 @@ std::string CheckPointIds(vtkPolyData* in)
   return "";
 }
 
+/// "" when every point coordinate is finite.
 std::string CheckFinitePoints(vtkPolyData* in)
 {
   double p[3];
@@ -67,6 +66,19 @@ std::string CheckFinitePoints(vtkPolyData* in)
     }
   }
   return "";
+}
+}
+
+namespace vtkQuadCoverInput
+{
+std::string CheckPoints(vtkPolyData* in)
+{
+  if (!in || in->GetNumberOfPoints() == 0)
+  {
+    return "the input has no points";
+  }
+  const std::string ids = CheckPointIds(in);
+  return ids.empty() ? CheckFinitePoints(in) : ids;
 }
 
 std::string Triangulate(vtkPolyData* in, vtkPolyData* out, std::string& warning)
@@ -81,11 +93,7 @@ std::string Triangulate(vtkPolyData* in, vtkPolyData* out, std::string& warning)
   {
     return "the input has no polygons (a surface of triangles is needed)";
   }
-  std::string problem = CheckPointIds(in);
-  if (problem.empty())
-  {
-    problem = CheckFinitePoints(in);
-  }
+  const std::string problem = CheckPoints(in);
   if (!problem.empty())
   {
     return problem;

@@ -10,12 +10,10 @@
 
 namespace vtkQuadCoverInput
 {
-/// "" when every point id of every cell lies in [0, #points) and #points fits an int, else a
-/// one-line reason. VTK's own filters do not check ids and crash on bad ones.
-VTKQUADCOVERFILTERS_EXPORT std::string CheckPointIds(vtkPolyData* input);
-
-/// "" when every point coordinate is finite, else a one-line reason naming the first bad point.
-VTKQUADCOVERFILTERS_EXPORT std::string CheckFinitePoints(vtkPolyData* input);
+/// "" when the input has points, every point id of every cell lies in [0, #points), #points fits
+/// an int and every coordinate is finite; else a one-line reason (naming the first bad cell or
+/// point). VTK's own filters do not check ids and crash on bad ones.
+VTKQUADCOVERFILTERS_EXPORT std::string CheckPoints(vtkPolyData* input);
 
 /**
  * Makes `output` a triangle-only surface over `input`: a shallow copy when `input` holds only
