@@ -1,0 +1,104 @@
+#!/usr/bin/python3
+"""Is a quad mesh a valid remesh of its input?  validity.py QUADS INPUT [--json]
+
+Compares the components of QUADS with those of INPUT (the repaired input surface, as
+`quadcover IN -o REF.vtp --stage repair` writes it): per component the Euler characteristic and
+the number of boundary loops, as multisets. Uses ../shared/tools/quadeval.py (the independent
+ruler) for the faces against the input's normal, non-manifold and misoriented edges.
+"""
+import json
+import os
+import subprocess
+import sys
+from collections import defaultdict
+
+import vtk
+from vtk.util.numpy_support import vtk_to_numpy
+
+
+def read(path):
+    r = vtk.vtkXMLPolyDataReader() if path.endswith(".vtp") else vtk.vtkOBJReader()
+    r.SetFileName(path)
+    r.Update()
+    return r.GetOutput()
+
+
+def faces(pd):
+    polys = pd.GetPolys()
+    if polys.GetNumberOfCells() == 0:
+        return []
+    conn = vtk_to_numpy(polys.GetConnectivityArray()).tolist()
+    offs = vtk_to_numpy(polys.GetOffsetsArray()).tolist()
+    return [conn[offs[i]:offs[i + 1]] for i in range(len(offs) - 1)]
+
+
+def components(F):
+    """Per connected component (through shared points): (Euler characteristic, boundary loops)."""
+    parent = {}
+
+    def find(a):
+        while parent.setdefault(a, a) != a:
+            parent[a] = parent[parent[a]]
+            a = parent[a]
+        return a
+
+    for f in F:
+        for v in f[1:]:
+            ra, rb = find(f[0]), find(v)
+            if ra != rb:
+                parent[ra] = rb
+    edges = defaultdict(int)
+    for f in F:
+        for k in range(len(f)):
+            a, b = f[k], f[(k + 1) % len(f)]
+            edges[(min(a, b), max(a, b))] += 1
+    comp = defaultdict(lambda: [0, 0, 0])  # V, E, F
+    for v in parent:
+        comp[find(v)][0] += 1
+    for (a, b) in edges:
+        comp[find(a)][1] += 1
+    for f in F:
+        comp[find(f[0])][2] += 1
+    loops = defaultdict(int)
+    bparent = {}
+
+    def bfind(a):
+        while bparent.setdefault(a, a) != a:
+            bparent[a] = bparent[bparent[a]]
+            a = bparent[a]
+        return a
+
+    for (a, b), n in edges.items():
+        if n == 1:
+            ra, rb = bfind(a), bfind(b)
+            if ra != rb:
+                bparent[ra] = rb
+    for v in bparent:
+        if bfind(v) == v:
+            loops[find(v)] += 1
+    return sorted((c[0] - c[1] + c[2], loops[r]) for r, c in comp.items())
+
+
+def main():
+    out, ref = sys.argv[1], sys.argv[2]
+    quads, surface = faces(read(out)), faces(read(ref))
+    qc, sc = components(quads), components(surface)
+    ruler = os.path.join(os.path.dirname(__file__), "..", "..", "shared", "tools", "quadeval.py")
+    q = json.loads(subprocess.run(["/usr/bin/python3", ruler, out, "--ref", ref, "--json"],
+                                  check=True, capture_output=True, text=True).stdout)
+    res = {
+        "non_quads": q["non_quads"], "faces": q["faces"],
+        "nonmanifold_edges": q["nonmanifold_edges"], "misoriented_edges": q["misoriented_edges"],
+        "against_normal": q["faces_against_ref_normal"], "hausdorff_pct": q["hausdorff_pct_diag"],
+        "components": [len(qc), len(sc)], "chi": [sum(c[0] for c in qc), sum(c[0] for c in sc)],
+        "loops": [sum(c[1] for c in qc), sum(c[1] for c in sc)],
+        "irregular": q["irregular_interior"], "rsd_edge": q["rsd_edge_pct"],
+    }
+    res["valid"] = (q["faces"] > 0 and q["non_quads"] == 0 and q["nonmanifold_edges"] == 0
+                    and q["misoriented_edges"] == 0 and q["faces_against_ref_normal"] == 0
+                    and qc == sc)
+    print(json.dumps(res))
+
+
+if __name__ == "__main__":
+    main()
