@@ -1,5 +1,4 @@
-// MeshTopology.cxx: edges, one-rings, boundary loops and components of a triangle mesh, and the
-// splitting of non-manifold vertices.
+// MeshTopology.cxx: edges, one-rings, boundary loops and components of a triangle mesh.
 #include "MeshTopology.h"
 
 #include "UnionFind.h"
@@ -511,52 +510,6 @@ MeshTopology buildTopology(const Eigen::MatrixX3i& F, int numVertices)
   labelComponents(F, referenced, T);
   describeComponents(T);
   return T;
-}
-
-std::vector<int> splitNonManifoldVertices(Eigen::MatrixX3d& V, Eigen::MatrixX3i& F)
-{
-  const MeshTopology T = buildTopology(F, static_cast<int>(V.rows()));
-  std::vector<char> onNonManifoldEdge(V.rows(), 0);
-  for (int e : T.nonManifoldEdges)
-  {
-    onNonManifoldEdge[T.edges(e, 0)] = onNonManifoldEdge[T.edges(e, 1)] = 1;
-  }
-  std::vector<int> copies;
-  int next = static_cast<int>(V.rows());
-  FanLabeler fans(T.numFaces);
-  std::vector<int> fan;
-  for (int v : T.nonManifoldVertices)
-  {
-    if (onNonManifoldEdge[v])
-    {
-      continue; // splitting here would cut the edge open: left for the caller to refuse
-    }
-    const int begin = T.ringOffsets[v], n = T.valence(v);
-    const int count = fans.Label(T, F, v, T.ringFaces.data() + begin, n, fan);
-    // Fan 0 keeps v; each other fan gets a copy. (Triangles that repeat a vertex are in no fan
-    // and keep v.)
-    std::vector<int> fanVertex(count, v);
-    for (int i = 1; i < count; ++i)
-    {
-      fanVertex[i] = next++;
-      copies.push_back(v);
-    }
-    for (int i = 0; i < n; ++i)
-    {
-      const int f = T.ringFaces[begin + i];
-      F(f, MeshTopology::cornerOf(F, f, v)) = fanVertex[fan[i]];
-    }
-  }
-  if (!copies.empty())
-  {
-    const Eigen::Index old = V.rows();
-    V.conservativeResize(old + static_cast<Eigen::Index>(copies.size()), 3);
-    for (size_t i = 0; i < copies.size(); ++i)
-    {
-      V.row(old + static_cast<Eigen::Index>(i)) = V.row(copies[i]);
-    }
-  }
-  return copies;
 }
 
 }

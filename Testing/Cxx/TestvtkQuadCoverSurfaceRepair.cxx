@@ -73,6 +73,28 @@ Repaired Repair(vtkPolyData* input)
   return { repair->GetOutput(), errors->GetError() };
 }
 
+/// A closed strip of 12 quads with a half turn.
+vtkSmartPointer<vtkPolyData> MoebiusStrip()
+{
+  std::vector<std::vector<double>> points;
+  std::vector<std::vector<vtkIdType>> cells;
+  const int n = 12;
+  for (int i = 0; i < n; ++i)
+  {
+    const double t = 2 * 3.14159265358979323846 * i / n;
+    for (const double w : { -0.3, 0.3 })
+    {
+      points.push_back({ (3 + w * std::cos(t / 2)) * std::cos(t),
+        (3 + w * std::cos(t / 2)) * std::sin(t), w * std::sin(t / 2) });
+    }
+    const vtkIdType a = 2 * i, b = a + 1;
+    const vtkIdType c = i + 1 < n ? a + 2 : 1, d = i + 1 < n ? b + 2 : 0;
+    cells.push_back({ a, c, b });
+    cells.push_back({ b, c, d });
+  }
+  return Make(points, cells);
+}
+
 quadcover::MeshTopology Topology(vtkPolyData* pd)
 {
   return quadcover::buildTopology(
@@ -188,6 +210,34 @@ TEST(vtkQuadCoverSurfaceRepair, StripJoinsVerticesAndLinesAreRemoved)
   EXPECT_EQ(r.Count(names::RemovedCells), 2 + 4); // the line, the vertex, four strip joins
 }
 
+TEST(vtkQuadCoverSurfaceRepair, CutsANonManifoldEdgeApartWithThePointData)
+{
+  // three triangles on the edge 0-1, each with its own height at its third point: the two that
+  // agree in orientation and face each other stay joined, the third is cut off
+  vtkSmartPointer<vtkPolyData> in =
+    Make({ { 0, 0, 0 }, { 1, 0, 0 }, { 0, 1, 0 }, { 0, 0, 1 }, { 0, -1, -1 } },
+      { { 0, 1, 2 }, { 1, 0, 3 }, { 0, 1, 4 } });
+  vtkNew<vtkDoubleArray> height;
+  height->SetName("Height");
+  for (double v : { 7.0, 8.0, 2.0, 3.0, 4.0 })
+  {
+    height->InsertNextValue(v);
+  }
+  in->GetPointData()->AddArray(height);
+  const Repaired r = Repair(in);
+  ASSERT_EQ(r.error, "");
+  EXPECT_EQ(r.Count(names::CutEdges), 1);
+  EXPECT_EQ(r.Count(names::SplitVertices), 2);
+  ASSERT_EQ(r.output->GetNumberOfPoints(), 7);
+  const quadcover::MeshTopology topo = Topology(r.output);
+  EXPECT_TRUE(topo.isManifold());
+  EXPECT_TRUE(topo.isOriented());
+  EXPECT_EQ(topo.numComponents(), 2);
+  vtkDataArray* h = r.output->GetPointData()->GetArray("Height");
+  ASSERT_NE(h, nullptr);
+  EXPECT_EQ(h->GetTuple1(5) + h->GetTuple1(6), 7.0 + 8.0) << "the copies of 0 and 1 carry theirs";
+}
+
 TEST(vtkQuadCoverSurfaceRepair, RefusesWhatItCannotRepair)
 {
   const double nan = std::numeric_limits<double>::quiet_NaN();
@@ -202,9 +252,7 @@ TEST(vtkQuadCoverSurfaceRepair, RefusesWhatItCannotRepair)
     { Make({ { 0, 0, 0 }, { 1, 0, 0 }, { 0, 1, 0 } }, { { 0, 1, 7 } }), "refers to point 7" },
     { Make({ { 0, 0, 0 }, { 1, 0, 0 }, { nan, 1, 0 } }, { { 0, 1, 2 } }), "non-finite" },
     { Make({ { 0, 0, 0 }, { 1, 0, 0 }, { 0, 0, 0 } }, { { 0, 1, 2 } }), "three distinct points" },
-    { Make({ { 0, 0, 0 }, { 1, 0, 0 }, { 0, 1, 0 }, { 0, 0, 1 }, { 0, 0, -1 } },
-        { { 0, 1, 2 }, { 1, 0, 3 }, { 0, 1, 4 } }),
-      "1 non-manifold edges" },
+    { MoebiusStrip(), "component 1 of 1 is not orientable" },
   };
   for (const Case& c : cases)
   {

@@ -405,11 +405,30 @@ class CommandLine(unittest.TestCase):
         p = self.write("p.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\n")
         self.assert_one_line_error([p, "-o", "x.vtp"], 1, r"^quadcover: error: .*no polygons")
 
-    def test_non_manifold_edge(self):
+    def test_non_manifold_edge_is_cut_apart(self):
         p = self.write("m.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nv 0 0 -1\n"
                        "f 1 2 3\nf 2 1 4\nf 1 2 5\n")
+        stats = os.path.join(self.dir, "m.json")
+        code, _, err = run(p, "-o", os.path.join(self.dir, "m.vtp"), "--stage", "repair",
+                           "--stats", stats)
+        self.assertEqual(code, 0, err)
+        with open(stats) as f:
+            self.assertEqual(json.load(f)["repair"]["cut_edges"], 1)
+
+    def test_moebius_strip(self):
+        n, text = 12, ""
+        for i in range(n):
+            t = 2 * math.pi * i / n
+            for w in (-0.3, 0.3):
+                r = 3 + w * math.cos(t / 2)
+                text += "v %r %r %r\n" % (r * math.cos(t), r * math.sin(t), w * math.sin(t / 2))
+        for i in range(n):
+            a, b = 2 * i + 1, 2 * i + 2
+            c, d = (a + 2, b + 2) if i + 1 < n else (2, 1)
+            text += "f %d %d %d\nf %d %d %d\n" % (a, c, b, b, c, d)
+        p = self.write("moebius.obj", text)
         self.assert_one_line_error([p, "-o", os.path.join(self.dir, "x.vtp")], 1,
-                                   r"^quadcover: error: .*non-manifold edges")
+                                   r"^quadcover: error: .*component 1 of 1 is not orientable")
 
     def test_corrupt_vtp(self):
         p = self.write("c.vtp", "this is not xml\n")

@@ -1,0 +1,343 @@
+// SurfaceRepair.cxx: makeManifold, a triangle soup made a manifold, consistently oriented surface.
+#include "SurfaceRepair.h"
+
+#include "UnionFind.h"
+
+#include <Eigen/Geometry>
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+#include <stdexcept>
+#include <string>
+
+namespace quadcover
+{
+namespace
+{
+/// Two triangles joined across an edge: their corners 3f+k (the edge is edge k of face f).
+struct Glue
+{
+  int c0, c1;
+};
+
+/// The corners 3f+k of every edge, grouped: edge k of face f runs F(f,k) -> F(f,k+1).
+struct EdgeGroups
+{
+  std::vector<int> corners; ///< sorted by the edge's point pair, then by corner
+  std::vector<int> offsets; ///< group g is corners[offsets[g] .. offsets[g+1])
+};
+
+int tail(const Eigen::MatrixX3i& F, int c)
+{
+  return F(c / 3, c % 3);
+}
+
+int head(const Eigen::MatrixX3i& F, int c)
+{
+  return F(c / 3, (c % 3 + 1) % 3);
+}
+
+EdgeGroups groupEdges(const Eigen::MatrixX3i& F)
+{
+  const int nc = 3 * static_cast<int>(F.rows());
+  auto key = [&](int c) {
+    const int p = tail(F, c), q = head(F, c);
+    return std::make_pair(std::min(p, q), std::max(p, q));
+  };
+  EdgeGroups groups;
+  groups.corners.resize(nc);
+  std::iota(groups.corners.begin(), groups.corners.end(), 0);
+  std::sort(groups.corners.begin(), groups.corners.end(), [&](int x, int y) {
+    const auto kx = key(x), ky = key(y);
+    return kx != ky ? kx < ky : x < y;
+  });
+  for (int i = 0; i < nc; ++i)
+  {
+    if (i == 0 || key(groups.corners[i]) != key(groups.corners[i - 1]))
+    {
+      groups.offsets.push_back(i);
+    }
+  }
+  groups.offsets.push_back(nc);
+  return groups;
+}
+
+/**
+ * Pairs the n > 2 triangles around one edge (a, b), a < b. Around the edge's axis d = b - a a
+ * triangle running a -> b has its normal on the side of positive rotation, so the solid it bounds
+ * lies on the side of negative rotation: its partner is its neighbour that way, if that one runs
+ * b -> a (agrees in orientation). Two triangles left over are paired with each other (an
+ * orientation that disagrees is put right afterwards).
+ */
+void pairAroundEdge(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F, const int* corners, int n,
+  std::vector<Glue>& glue)
+{
+  const int a = std::min(tail(F, corners[0]), head(F, corners[0]));
+  const int b = std::max(tail(F, corners[0]), head(F, corners[0]));
+  const Eigen::Vector3d d = (V.row(b) - V.row(a)).transpose().normalized();
+  struct Sheet
+  {
+    double angle;
+    int corner;
+    bool forward; // runs a -> b
+  };
+  std::vector<Sheet> sheets;
+  Eigen::Vector3d e1 = Eigen::Vector3d::Zero();
+  for (int i = 0; i < n; ++i)
+  {
+    const int c = corners[i];
+    const Eigen::Vector3d w = (V.row(F(c / 3, (c % 3 + 2) % 3)) - V.row(a)).transpose();
+    const Eigen::Vector3d across = w - w.dot(d) * d;
+    if (e1.squaredNorm() == 0.0 && across.squaredNorm() > 0.0)
+    {
+      e1 = across.normalized();
+    }
+    const Eigen::Vector3d e2 = d.cross(e1);
+    sheets.push_back({ std::atan2(across.dot(e2), across.dot(e1)), c, tail(F, c) == a });
+  }
+  std::sort(sheets.begin(), sheets.end(), [](const Sheet& x, const Sheet& y) {
+    return x.angle != y.angle ? x.angle < y.angle : x.corner < y.corner;
+  });
+  std::vector<char> paired(n, 0);
+  for (int i = 0; i < n; ++i)
+  {
+    const int j = (i + n - 1) % n; // the neighbour on the side of negative rotation
+    if (sheets[i].forward && !sheets[j].forward)
+    {
+      glue.push_back({ sheets[i].corner, sheets[j].corner });
+      paired[i] = paired[j] = 1;
+    }
+  }
+  std::vector<int> left;
+  for (int i = 0; i < n; ++i)
+  {
+    if (!paired[i])
+    {
+      left.push_back(sheets[i].corner);
+    }
+  }
+  if (left.size() == 2)
+  {
+    glue.push_back({ left[0], left[1] });
+  }
+}
+
+/// The glue across every edge with exactly two triangles and, with `cut`, the pairs around the
+/// edges with more (their number in cutEdges).
+std::vector<Glue> glueEdges(
+  const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F, bool cut, int* cutEdges)
+{
+  const EdgeGroups groups = groupEdges(F);
+  std::vector<Glue> glue;
+  for (size_t g = 0; g + 1 < groups.offsets.size(); ++g)
+  {
+    const int begin = groups.offsets[g], n = groups.offsets[g + 1] - begin;
+    if (n == 2)
+    {
+      glue.push_back({ groups.corners[begin], groups.corners[begin + 1] });
+    }
+    else if (n > 2 && cut)
+    {
+      pairAroundEdge(V, F, groups.corners.data() + begin, n, glue);
+      ++*cutEdges;
+    }
+  }
+  return glue;
+}
+
+/**
+ * Which triangles to reverse so that glued neighbours agree: a walk over the glue, per component
+ * (numbered in order of their lowest triangle) the side with more area keeping its orientation.
+ * @param[out] conflict the first component that cannot be oriented (0-based), -1 if none
+ * @param[out] components the number of components
+ */
+std::vector<char> orientation(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F,
+  const std::vector<Glue>& glue, int& conflict, int& components)
+{
+  const int nf = static_cast<int>(F.rows());
+  // adjacency as CSR: for each face, (neighbour, 1 if the two run the edge the same way)
+  std::vector<int> offsets(nf + 1, 0);
+  for (const Glue& g : glue)
+  {
+    ++offsets[g.c0 / 3 + 1];
+    ++offsets[g.c1 / 3 + 1];
+  }
+  std::partial_sum(offsets.begin(), offsets.end(), offsets.begin());
+  std::vector<std::pair<int, char>> adjacent(offsets.back());
+  std::vector<int> fill(offsets.begin(), offsets.end() - 1);
+  for (const Glue& g : glue)
+  {
+    const char same = tail(F, g.c0) == tail(F, g.c1) ? 1 : 0;
+    adjacent[fill[g.c0 / 3]++] = { g.c1 / 3, same };
+    adjacent[fill[g.c1 / 3]++] = { g.c0 / 3, same };
+  }
+  std::vector<char> reverse(nf, 0);
+  std::vector<int> component(nf, -1), stack, members;
+  conflict = -1;
+  components = 0;
+  for (int seed = 0; seed < nf; ++seed)
+  {
+    if (component[seed] >= 0)
+    {
+      continue;
+    }
+    const int c = components++;
+    component[seed] = c;
+    stack.assign(1, seed);
+    members.clear();
+    double areaKept = 0.0, areaReversed = 0.0;
+    while (!stack.empty())
+    {
+      const int f = stack.back();
+      stack.pop_back();
+      members.push_back(f);
+      const Eigen::Vector3d p = V.row(F(f, 0)).transpose();
+      const double area =
+        (V.row(F(f, 1)).transpose() - p).cross(V.row(F(f, 2)).transpose() - p).norm();
+      (reverse[f] ? areaReversed : areaKept) += area;
+      for (int i = offsets[f]; i < offsets[f + 1]; ++i)
+      {
+        const int g = adjacent[i].first;
+        const char wanted = reverse[f] ^ adjacent[i].second;
+        if (component[g] < 0)
+        {
+          component[g] = c;
+          reverse[g] = wanted;
+          stack.push_back(g);
+        }
+        else if (reverse[g] != wanted && conflict < 0)
+        {
+          conflict = c;
+        }
+      }
+    }
+    if (areaReversed > areaKept)
+    {
+      for (const int f : members)
+      {
+        reverse[f] = !reverse[f];
+      }
+    }
+  }
+  return reverse;
+}
+
+void reverseFaces(Eigen::MatrixX3i& F, const std::vector<char>& reverse)
+{
+  for (int f = 0; f < static_cast<int>(F.rows()); ++f)
+  {
+    if (reverse[f])
+    {
+      std::swap(F(f, 1), F(f, 2));
+    }
+  }
+}
+
+/// Gives the corners of each point that no glue joins their own copy of the point (the fan of
+/// the lowest corner keeps it). @return for each copy, the point it copies
+std::vector<int> splitFans(Eigen::MatrixX3d& V, Eigen::MatrixX3i& F, const std::vector<Glue>& glue)
+{
+  const int nc = 3 * static_cast<int>(F.rows());
+  std::vector<int> parent(nc);
+  std::iota(parent.begin(), parent.end(), 0);
+  auto cornerAt = [&](int f, int p) { return 3 * f + (F(f, 0) == p ? 0 : (F(f, 1) == p ? 1 : 2)); };
+  for (const Glue& g : glue)
+  {
+    for (const int p : { tail(F, g.c0), head(F, g.c0) })
+    {
+      unite(parent, cornerAt(g.c0 / 3, p), cornerAt(g.c1 / 3, p));
+    }
+  }
+  // corners are visited in order, so the fan of a point's lowest corner is met first
+  std::vector<int> firstRoot(V.rows(), -1), newPoint(nc, -1), copies;
+  int next = static_cast<int>(V.rows());
+  for (int c = 0; c < nc; ++c)
+  {
+    const int p = F(c / 3, c % 3), r = findRoot(parent, c);
+    if (firstRoot[p] < 0)
+    {
+      firstRoot[p] = r;
+    }
+    if (r != firstRoot[p] && newPoint[r] < 0)
+    {
+      newPoint[r] = next++;
+      copies.push_back(p);
+    }
+  }
+  for (int c = 0; c < nc; ++c)
+  {
+    const int r = findRoot(parent, c);
+    if (newPoint[r] >= 0)
+    {
+      F(c / 3, c % 3) = newPoint[r];
+    }
+  }
+  const Eigen::Index old = V.rows();
+  V.conservativeResize(old + static_cast<Eigen::Index>(copies.size()), 3);
+  for (size_t i = 0; i < copies.size(); ++i)
+  {
+    V.row(old + static_cast<Eigen::Index>(i)) = V.row(copies[i]);
+  }
+  return copies;
+}
+
+/// One pass of makeManifold (its steps 1 to 4); adds to repair.
+void makeManifoldOnce(Eigen::MatrixX3d& V, Eigen::MatrixX3i& F, ManifoldRepair& repair,
+  std::vector<char>& reversed, int& cutEdges)
+{
+  int conflict = -1, components = 0;
+  // 1. patches oriented first, so that the pairing around cut edges can go by orientation
+  const std::vector<char> first =
+    orientation(V, F, glueEdges(V, F, false, nullptr), conflict, components);
+  reverseFaces(F, first);
+  // 2., 3. the edges cut apart, the points split into their fans
+  const std::vector<Glue> glue = glueEdges(V, F, true, &cutEdges);
+  const int old = static_cast<int>(V.rows()) - static_cast<int>(repair.copies.size());
+  for (const int p : splitFans(V, F, glue))
+  {
+    repair.copies.push_back(p < old ? p : repair.copies[p - old]); // a copy of a copy
+  }
+  // 4. each component oriented as a whole
+  const std::vector<char> second = orientation(V, F, glue, conflict, components);
+  if (conflict >= 0)
+  {
+    throw std::invalid_argument("component " + std::to_string(conflict + 1) + " of " +
+      std::to_string(components) +
+      " is not orientable (like a Moebius strip); QuadCover needs an orientable surface");
+  }
+  reverseFaces(F, second);
+  for (size_t f = 0; f < reversed.size(); ++f)
+  {
+    reversed[f] ^= first[f] ^ second[f];
+  }
+}
+}
+
+ManifoldRepair makeManifold(Eigen::MatrixX3d& V, Eigen::MatrixX3i& F)
+{
+  ManifoldRepair repair;
+  std::vector<char> reversed(F.rows(), 0);
+  // A cut edge whose sheets meet again around both its points keeps more than two triangles
+  // after one pass; the next pass cuts what is left.
+  for (int pass = 0; pass < 4; ++pass)
+  {
+    int cut = 0;
+    makeManifoldOnce(V, F, repair, reversed, cut);
+    repair.cutEdges += pass == 0 ? cut : 0;
+    if (cut == 0)
+    {
+      break;
+    }
+  }
+  for (int f = 0; f < static_cast<int>(F.rows()); ++f)
+  {
+    if (reversed[f])
+    {
+      repair.reversed.push_back(f);
+    }
+  }
+  return repair;
+}
+
+}

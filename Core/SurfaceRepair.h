@@ -1,0 +1,46 @@
+// SurfaceRepair.h: a triangle soup made a manifold, consistently oriented surface: non-manifold
+// edges cut apart into sheets, non-manifold points split, components oriented (stage 0).
+#ifndef quadcover_SurfaceRepair_h
+#define quadcover_SurfaceRepair_h
+
+#include <Eigen/Core>
+
+#include <vector>
+
+namespace quadcover
+{
+
+/// What makeManifold changed.
+struct ManifoldRepair
+{
+  /// for each added point (index #V_old + i), the point it copies
+  std::vector<int> copies;
+  /// edges that had more than two triangles, now cut apart into manifold sheets
+  int cutEdges = 0;
+  /// triangles whose corner order was reversed (their normal turned over)
+  std::vector<int> reversed;
+};
+
+/**
+ * Makes a triangle mesh (no triangle repeats a point) manifold and consistently oriented:
+ * 1. each patch of triangles joined through edges with exactly two triangles is oriented so that
+ *    most of its area keeps the input's orientation;
+ * 2. the triangles around an edge with more than two are paired: each with its nearest neighbour
+ *    around the edge on its back side when the two agree in orientation (so the faces of solids
+ *    that touch along an edge stay with their solid), then two left over with each other; the
+ *    rest are cut off there, that edge becoming their boundary;
+ * 3. every point whose triangles fall into several fans (joined only through the point, or only
+ *    through cut edges) gets one copy per fan;
+ * 4. each component is oriented again as a whole, most of its area keeping the input's
+ *    orientation.
+ * A component that cannot be oriented (a Moebius strip) is refused.
+ * @param[in,out] V #V x 3 positions, grown by the copies
+ * @param[in,out] F #F x 3 triangles, renumbered to the copies and reversed where turned
+ * @throws std::invalid_argument naming the first non-orientable component (numbered from 1 in
+ *         order of its lowest triangle) and the number of components
+ */
+ManifoldRepair makeManifold(Eigen::MatrixX3d& V, Eigen::MatrixX3i& F);
+
+}
+
+#endif

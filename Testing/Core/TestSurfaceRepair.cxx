@@ -1,0 +1,228 @@
+// Tests of makeManifold: non-manifold edges cut apart into sheets, fans split, orientation.
+#include "MeshTopology.h"
+#include "SurfaceRepair.h"
+#include "TestSurfaces.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <vector>
+
+using namespace quadcover;
+
+namespace
+{
+/// A closed unit box from corner (x0, y0, z0): 8 points, 12 outward triangles, appended.
+void appendBox(Surface& s, double x0, double y0, double z0)
+{
+  const int base = static_cast<int>(s.V.rows());
+  s.V.conservativeResize(base + 8, 3);
+  for (int i = 0; i < 8; ++i)
+  {
+    s.V.row(base + i) << x0 + (i & 1), y0 + ((i >> 1) & 1), z0 + ((i >> 2) & 1);
+  }
+  const int quads[6][4] = { { 0, 2, 3, 1 }, { 4, 5, 7, 6 }, { 0, 1, 5, 4 }, { 2, 6, 7, 3 },
+    { 0, 4, 6, 2 }, { 1, 3, 7, 5 } };
+  const int f0 = static_cast<int>(s.F.rows());
+  s.F.conservativeResize(f0 + 12, 3);
+  for (int q = 0; q < 6; ++q)
+  {
+    const int* c = quads[q];
+    s.F.row(f0 + 2 * q) << base + c[0], base + c[1], base + c[2];
+    s.F.row(f0 + 2 * q + 1) << base + c[0], base + c[2], base + c[3];
+  }
+}
+
+/// Merges exactly coincident points (as the repair filter's clean step does).
+void weld(Surface& s)
+{
+  std::vector<int> to(s.V.rows());
+  std::vector<Eigen::RowVector3d> kept;
+  for (int i = 0; i < s.V.rows(); ++i)
+  {
+    to[i] = static_cast<int>(kept.size());
+    for (size_t j = 0; j < kept.size(); ++j)
+    {
+      if (kept[j] == s.V.row(i))
+      {
+        to[i] = static_cast<int>(j);
+        break;
+      }
+    }
+    if (to[i] == static_cast<int>(kept.size()))
+    {
+      kept.push_back(s.V.row(i));
+    }
+  }
+  s.V.resize(static_cast<Eigen::Index>(kept.size()), 3);
+  for (size_t j = 0; j < kept.size(); ++j)
+  {
+    s.V.row(static_cast<Eigen::Index>(j)) = kept[j];
+  }
+  for (int f = 0; f < s.F.rows(); ++f)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      s.F(f, k) = to[s.F(f, k)];
+    }
+  }
+}
+
+/// The signed volume the first `faces` triangles (all by default) enclose: positive for a
+/// closed surface facing outwards.
+double signedVolume(const Surface& s, int faces = -1)
+{
+  double v = 0.0;
+  for (int f = 0; f < (faces < 0 ? s.F.rows() : faces); ++f)
+  {
+    v += s.V.row(s.F(f, 0)).dot(s.V.row(s.F(f, 1)).cross(s.V.row(s.F(f, 2)))) / 6.0;
+  }
+  return v;
+}
+
+/// The components' (Euler characteristic, boundary loops), sorted.
+std::vector<std::pair<int, int>> shape(const Surface& s)
+{
+  const MeshTopology T = buildTopology(s.F, static_cast<int>(s.V.rows()));
+  EXPECT_TRUE(T.isManifold()) << T.describeDefects();
+  EXPECT_TRUE(T.isOriented()) << T.describeDefects();
+  std::vector<std::pair<int, int>> out;
+  for (const ComponentInfo& c : T.components)
+  {
+    out.emplace_back(c.eulerCharacteristic, c.numBoundaryLoops);
+  }
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+using Shape = std::vector<std::pair<int, int>>;
+}
+
+TEST(MakeManifold, LeavesAManifoldSurfaceAsItIs)
+{
+  Surface s = testSurface("torus");
+  const Eigen::MatrixX3i before = s.F;
+  const ManifoldRepair r = makeManifold(s.V, s.F);
+  EXPECT_EQ(r.cutEdges, 0);
+  EXPECT_TRUE(r.copies.empty());
+  EXPECT_TRUE(r.reversed.empty());
+  EXPECT_EQ(s.F, before);
+}
+
+TEST(MakeManifold, TwoBoxesSharingAnEdgeBecomeTwoClosedBoxes)
+{
+  Surface s;
+  appendBox(s, 0, 0, 0);
+  appendBox(s, 1, 1, 0); // shares the edge x = y = 1 with the first
+  weld(s);
+  ASSERT_EQ(s.V.rows(), 14);
+  ASSERT_FALSE(buildTopology(s.F, 14).nonManifoldEdges.empty());
+  const ManifoldRepair r = makeManifold(s.V, s.F);
+  EXPECT_EQ(r.cutEdges, 1);
+  EXPECT_EQ(r.copies.size(), 2u); // both points of the edge
+  EXPECT_TRUE(r.reversed.empty());
+  EXPECT_EQ(shape(s), (Shape{ { 2, 0 }, { 2, 0 } }));
+  EXPECT_NEAR(signedVolume(s), 2.0, 1e-12);
+}
+
+TEST(MakeManifold, TwoBoxesOneInsideOutStillSplitIntoBoxes)
+{
+  Surface s;
+  appendBox(s, 0, 0, 0);
+  appendBox(s, 1, 1, 0);
+  for (int f = 12; f < 24; ++f)
+  {
+    std::swap(s.F(f, 1), s.F(f, 2)); // the second box faces inwards
+  }
+  weld(s);
+  const ManifoldRepair r = makeManifold(s.V, s.F);
+  EXPECT_EQ(r.cutEdges, 1);
+  EXPECT_EQ(shape(s), (Shape{ { 2, 0 }, { 2, 0 } }));
+  EXPECT_TRUE(r.reversed.empty()) << "each box keeps its own orientation";
+}
+
+TEST(MakeManifold, AFinIsCutOffTheBox)
+{
+  Surface s;
+  appendBox(s, 0, 0, 0);
+  // a fin of two triangles standing on the top edge from (0,0,1) to (1,0,1), leaning outwards
+  const int base = static_cast<int>(s.V.rows());
+  s.V.conservativeResize(base + 4, 3);
+  s.V.row(base) << 0, 0, 1;
+  s.V.row(base + 1) << 1, 0, 1;
+  s.V.row(base + 2) << 1, -1, 2;
+  s.V.row(base + 3) << 0, -1, 2;
+  s.F.conservativeResize(14, 3);
+  s.F.row(12) << base, base + 1, base + 2;
+  s.F.row(13) << base, base + 2, base + 3;
+  weld(s);
+  const ManifoldRepair r = makeManifold(s.V, s.F);
+  EXPECT_EQ(r.cutEdges, 1);
+  EXPECT_EQ(shape(s), (Shape{ { 1, 1 }, { 2, 0 } })); // the fin a disk, the box closed
+  EXPECT_NEAR(signedVolume(s, 12), 1.0, 1e-12) << "the box still faces outwards";
+}
+
+TEST(MakeManifold, ThreePagesOfABookBecomeASheetAndAPage)
+{
+  Surface s;
+  s.V.resize(5, 3);
+  s.V << 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1, 0, -1, -1;
+  s.F.resize(3, 3);
+  s.F << 0, 1, 2, 1, 0, 3, 0, 1, 4;
+  const ManifoldRepair r = makeManifold(s.V, s.F);
+  EXPECT_EQ(r.cutEdges, 1);
+  EXPECT_EQ(shape(s), (Shape{ { 1, 1 }, { 1, 1 } }));
+}
+
+TEST(MakeManifold, OrientsEachComponentTheWayMostOfItFaces)
+{
+  Surface s = testSurface("sphere");
+  const double volume = signedVolume(s);
+  for (int f = 0; f < 10; ++f)
+  {
+    std::swap(s.F(f, 1), s.F(f, 2));
+  }
+  const ManifoldRepair r = makeManifold(s.V, s.F);
+  EXPECT_EQ(r.reversed.size(), 10u) << "the ten, not the rest";
+  EXPECT_NEAR(signedVolume(s), volume, 1e-9);
+}
+
+TEST(MakeManifold, RefusesAMoebiusStripNamingIt)
+{
+  // a closed strip of 12 quads with a half turn, next to a good sphere
+  Surface s = testSurface("sphere");
+  const int base = static_cast<int>(s.V.rows()), n = 12;
+  s.V.conservativeResize(base + 2 * n, 3);
+  for (int i = 0; i < n; ++i)
+  {
+    const double t = 2 * 3.14159265358979323846 * i / n, half = t / 2;
+    for (int j = 0; j < 2; ++j)
+    {
+      const double w = j == 0 ? -0.3 : 0.3;
+      s.V.row(base + 2 * i + j) << (3 + w * std::cos(half)) * std::cos(t),
+        (3 + w * std::cos(half)) * std::sin(t), w * std::sin(half);
+    }
+  }
+  const int f0 = static_cast<int>(s.F.rows());
+  s.F.conservativeResize(f0 + 2 * n, 3);
+  for (int i = 0; i < n; ++i)
+  {
+    const int a = base + 2 * i, b = a + 1;
+    // the last quad closes the strip onto its start the other way round
+    const int c = i + 1 < n ? a + 2 : base + 1, d = i + 1 < n ? b + 2 : base;
+    s.F.row(f0 + 2 * i) << a, c, b;
+    s.F.row(f0 + 2 * i + 1) << b, c, d;
+  }
+  try
+  {
+    makeManifold(s.V, s.F);
+    FAIL() << "a Moebius strip was accepted";
+  }
+  catch (const std::invalid_argument& e)
+  {
+    EXPECT_NE(std::string(e.what()).find("component 2 of 2 is not orientable"), std::string::npos)
+      << e.what();
+  }
+}
