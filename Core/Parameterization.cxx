@@ -144,6 +144,10 @@ Parameterization computeParameterization(const Eigen::MatrixX3d& V, const Eigen:
   progress.report(0.0);
   const Inputs in{ V, F, topo, geometry, frameU, matching, options };
   checkArguments(in);
+  if (topo.numComponents() > 1)
+  {
+    return mapEachComponent(in, progress);
+  }
   Parameterization out = startMap(in);
 
   // ---- the surface cut open through the singular points, the frames combed off the cut ----

@@ -52,6 +52,10 @@ struct ParameterizationOptions
   /// of their neighbourhood (2 rings, then 4, 8, 16) move to minimize a foldover-free distortion
   /// energy, in at most this many rounds per neighbourhood; 0 leaves flips as they are.
   int maximumUntangleRounds = 30;
+  /// Each component of the surface gets a map of its own, with at least this many quads: its
+  /// share of targetQuadCount by area, or targetEdgeLength made shorter where that would give
+  /// fewer. (A component far smaller than a grid cell would otherwise get no quad at all.)
+  int minimumComponentQuadCount = 24;
 };
 
 /**

@@ -71,6 +71,11 @@ struct Field
   Eigen::VectorXd theta;    ///< #F: the frame's angle in the face basis, before combing
 };
 
+/// The map of a surface of several components: computeParameterization on each, with its own
+/// edge length (ParameterizationOptions::minimumComponentQuadCount), put together
+/// (ComponentMaps.cxx). Parameterization::edgeLength is the largest component's.
+Parameterization mapEachComponent(const Inputs& in, const Progress& progress);
+
 // ---- the surface cut open (CutSurface.cxx) ----
 
 /// The field's layer shifts, indices and angles.

@@ -57,6 +57,8 @@ int main(int argc, char* argv[])
       "open cylinder r = 0.5, h = 2 (two boundary loops)" },
     { "roundedcube.obj", quadcover::makeRoundedCube(0.25, 16),
       "cube [-1,1]^3 with edges rounded at radius 0.25" },
+    { "components.obj", quadcover::makeComponents(50, 0.1, 10.0),
+      "50 spheres and tori in a row, sizes 0.1 to 10 (components of very different sizes)" },
   };
   for (const Item& item : items)
   {

@@ -123,6 +123,7 @@ vtkQuadCoverSolver::vtkQuadCoverSolver()
   this->AlignToBoundary = defaults.alignToBoundary;
   this->BoundaryTolerance = defaults.boundaryTolerance;
   this->MaximumUntangleRounds = defaults.maximumUntangleRounds;
+  this->MinimumComponentQuadCount = defaults.minimumComponentQuadCount;
   this->SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_CELLS, names::FrameU);
   this->SetInputArrayToProcess(1, 0, 0, vtkDataObject::FIELD_ASSOCIATION_CELLS, names::Matching);
 }
@@ -153,6 +154,7 @@ void vtkQuadCoverSolver::Execute(vtkQuadCoverSurface& in, vtkInformationVector* 
   options.alignToBoundary = this->AlignToBoundary;
   options.boundaryTolerance = this->BoundaryTolerance;
   options.maximumUntangleRounds = this->MaximumUntangleRounds;
+  options.minimumComponentQuadCount = this->MinimumComponentQuadCount;
   const quadcover::Parameterization map = quadcover::computeParameterization(in.V, in.F, in.topo,
     geometry, U, matching, options, vtkQuadCoverEigen::CoreProgress(this, 0.15, 0.95));
   if (map.wrongWindings > 0)
@@ -198,5 +200,6 @@ void vtkQuadCoverSolver::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "AlignToBoundary: " << (this->AlignToBoundary ? "On" : "Off") << "\n";
   os << indent << "BoundaryTolerance: " << this->BoundaryTolerance << "\n";
   os << indent << "MaximumUntangleRounds: " << this->MaximumUntangleRounds << "\n";
+  os << indent << "MinimumComponentQuadCount: " << this->MinimumComponentQuadCount << "\n";
   os << indent << "SplitSeams: " << (this->SplitSeams ? "On" : "Off") << "\n";
 }

@@ -109,6 +109,14 @@ public:
   ///@}
 
   ///@{
+  /** Each connected component gets a map of its own with at least this many quads, in
+   * [1, 100000] (default 24): its share of TargetQuadCount by area, or TargetEdgeLength made
+   * shorter where that would give fewer, so that small components keep a coarse quad mesh. */
+  vtkSetClampMacro(MinimumComponentQuadCount, int, 1, 100000);
+  vtkGetMacro(MinimumComponentQuadCount, int);
+  ///@}
+
+  ///@{
   /** Cut the output open along the seams, with point texture coordinates (default off). */
   vtkSetMacro(SplitSeams, bool);
   vtkGetMacro(SplitSeams, bool);
@@ -129,6 +137,7 @@ protected:
   bool AlignToBoundary;
   double BoundaryTolerance;
   int MaximumUntangleRounds;
+  int MinimumComponentQuadCount;
   bool SplitSeams = false;
 
 private:

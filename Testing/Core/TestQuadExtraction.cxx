@@ -136,6 +136,27 @@ TEST(QuadExtraction, ClosedSurfacesGiveClosedManifoldQuadMeshes)
   }
 }
 
+TEST(QuadExtraction, EveryComponentGetsAQuadMeshOfItsOwn)
+{
+  // Six spheres and tori of sizes 0.1 to 10: at 1,500 quads over the whole, the smallest would
+  // be far smaller than one grid cell.
+  const Surface s = makeComponents(6, 0.1, 10.0);
+  ParameterizationOptions options;
+  options.minimumComponentQuadCount = 40;
+  const Chain c = runChain(s, 1500, options);
+  ASSERT_EQ(c.topo.numComponents(), 6);
+  ASSERT_EQ(c.map.flipped, 0);
+  const QuadMesh q = extractQuads(c.s.V, c.s.F, c.topo, c.map.cornerUV);
+  expectClosedQuadMesh(c, q, "components");
+  // the smallest sphere (1 / 10^4 of the largest's area) keeps at least about 40 quads
+  int smallest = 0;
+  for (Eigen::Index i = 0; i < q.Q.rows(); ++i)
+  {
+    smallest += q.V(q.Q(i, 0), 0) < 0.25 ? 1 : 0;
+  }
+  EXPECT_GE(smallest, 30);
+}
+
 TEST(QuadExtraction, CellCentresOnEdgesAndPointsGiveOneQuad)
 {
   // On these regular meshes at 6,500 quads many cell centres and grid points fall exactly on

@@ -375,4 +375,26 @@ Surface makeRoundedCube(double round, int n)
   return s;
 }
 
+Surface makeComponents(int count, double rMin, double rMax)
+{
+  Surface all;
+  all.name = "components";
+  double x = 0.0;
+  for (int i = 0; i < count; ++i)
+  {
+    const double size = rMin * std::pow(rMax / rMin, count > 1 ? i / (count - 1.0) : 0.0);
+    Surface part = i % 2 == 0 ? makeIcosphere(size, 2) : makeTorus(size, 0.35 * size, 20, 10);
+    const double extent = i % 2 == 0 ? size : 1.35 * size;
+    x += extent;
+    part.V.col(0).array() += x;
+    x += extent + 0.1 + 0.1 * size;
+    const Eigen::Index v0 = all.V.rows(), f0 = all.F.rows();
+    all.V.conservativeResize(v0 + part.V.rows(), 3);
+    all.V.bottomRows(part.V.rows()) = part.V;
+    all.F.conservativeResize(f0 + part.F.rows(), 3);
+    all.F.bottomRows(part.F.rows()) = part.F.array() + static_cast<int>(v0);
+  }
+  return all;
+}
+
 }

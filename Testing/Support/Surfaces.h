@@ -47,6 +47,11 @@ Surface makeKnotTube(int p, int q, double R, double rKnot, double tube, int nAlo
 /// grid on each face of the cube onto the rounded surface.
 Surface makeRoundedCube(double round, int n);
 
+/// `count` separate closed surfaces in a row along x, spheres (icosphere level 2) and tori
+/// (R = size, r = 0.35 size, 20 x 10) in turn, their sizes growing geometrically from rMin to
+/// rMax, each 0.1 + 0.1 size away from the last: one file of components of very different sizes.
+Surface makeComponents(int count, double rMin, double rMax);
+
 }
 
 #endif
