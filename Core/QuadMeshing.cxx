@@ -21,6 +21,10 @@ QuadMeshResult buildQuadMesh(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& 
   {
     r.invertedExtracted = countInvertedQuads(r.mesh.V, r.mesh.Q);
   }
+  if (options.fillHoles)
+  {
+    r.patch = patchQuadMesh(V, F, topo, r.mesh);
+  }
   progress.report(0.7);
   if (options.relaxationIterations > 0)
   {

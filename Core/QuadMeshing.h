@@ -7,6 +7,7 @@
 #include "MeshTopology.h"
 #include "Progress.h"
 #include "QuadExtraction.h"
+#include "QuadPatching.h"
 
 #include <Eigen/Core>
 
@@ -21,6 +22,9 @@ struct QuadMeshOptions
   QuadExtractionOptions extraction;
   /// Relax the quads around every quad with a corner turned inside out (repairInvertedQuads).
   bool repairInvertedQuads = true;
+  /// Fill the holes that cells without a quad leave inside the surface with quads
+  /// (patchQuadMesh), where the map could not be repaired.
+  bool fillHoles = true;
   /// Sweeps of tangential relaxation of the whole mesh afterwards (relaxQuads); 0: none.
   int relaxationIterations = 0;
   /// Measure the two-sided Hausdorff distance to the surface (hausdorffSamples); the filter
@@ -34,6 +38,7 @@ struct QuadMeshResult
   QuadQuality quality;       ///< measureQuads of the final mesh
   int invertedExtracted = 0; ///< quads with a corner turned inside out as extracted
   int invertedFinal = 0;     ///< and in the final mesh
+  QuadPatchResult patch;     ///< what patchQuadMesh did
   int droppedCells() const
   {
     return mesh.cellsOffSurface + mesh.cellsDegenerate + mesh.cellsConflicting;
@@ -41,8 +46,8 @@ struct QuadMeshResult
 };
 
 /**
- * extractQuads, then repairInvertedQuads (or only countInvertedQuads), then relaxQuads with
- * options.relaxationIterations sweeps, then measureQuads.
+ * extractQuads, then repairInvertedQuads (or only countInvertedQuads), patchQuadMesh, relaxQuads
+ * with options.relaxationIterations sweeps, then measureQuads.
  * @throws std::invalid_argument as extractQuads does
  */
 QuadMeshResult buildQuadMesh(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F,

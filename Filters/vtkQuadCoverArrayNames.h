@@ -154,6 +154,11 @@ constexpr const char* InvertedQuads = "InvertedQuads";
 /// field, 1 x int, 3 tuples: grid cells that gave no quad: a corner off the surface, two corners
 /// at one grid point, overlapping others.
 constexpr const char* DroppedCells = "DroppedCells";
+/// field, 1 x int, 3 tuples: holes inside the surface filled with quads (FillHoles), holes left,
+/// quads added
+constexpr const char* FilledHoles = "FilledHoles";
+/// field, 1 x int: quads that face against the input triangle closest to their centre
+constexpr const char* TurnedQuads = "TurnedQuads";
 }
 
 #endif

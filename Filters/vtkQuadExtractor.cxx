@@ -129,6 +129,9 @@ void AddFigures(vtkFieldData* fd, const quadcover::QuadMeshResult& r)
   AddField<vtkIntArray>(fd, names::DroppedCells,
     { double(quads.cellsOffSurface), double(quads.cellsDegenerate),
       double(quads.cellsConflicting) });
+  AddField<vtkIntArray>(fd, names::FilledHoles,
+    { double(r.patch.holesFilled), double(r.patch.holesLeft), double(r.patch.quadsAdded) });
+  AddField<vtkIntArray>(fd, names::TurnedQuads, { double(r.patch.turnedQuads) });
 }
 
 /// Field data HausdorffDistance: two-sided, surface to quads, quads to surface, in % of the
@@ -153,6 +156,7 @@ vtkQuadExtractor::vtkQuadExtractor()
   this->ComputeHausdorffDistance = defaults.computeHausdorffDistance;
   this->RelaxationIterations = defaults.relaxationIterations;
   this->RepairInvertedQuads = defaults.repairInvertedQuads;
+  this->FillHoles = defaults.fillHoles;
   this->SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_CELLS, names::CornerUV);
 }
 
@@ -175,6 +179,7 @@ void vtkQuadExtractor::Execute(vtkQuadCoverSurface& in, vtkInformationVector* ou
 
   quadcover::QuadMeshOptions options;
   options.repairInvertedQuads = this->RepairInvertedQuads;
+  options.fillHoles = this->FillHoles;
   options.relaxationIterations = this->RelaxationIterations;
   const quadcover::QuadMeshResult r = quadcover::buildQuadMesh(
     in.V, in.F, in.topo, uv, options, vtkQuadCoverEigen::CoreProgress(this, 0.1, 0.7));
@@ -187,6 +192,11 @@ void vtkQuadExtractor::Execute(vtkQuadCoverSurface& in, vtkInformationVector* ou
       std::to_string(quads.cellsConflicting) + " overlapping) and " +
       std::to_string(quads.nonIntegerTransitions) +
       " edges have a non-integer translation: the map is not seamless or flip-free there");
+  }
+  if (r.patch.holesLeft > 0)
+  {
+    this->Warn(std::to_string(r.patch.holesLeft) +
+      " holes inside the surface are left open (their loops are odd or pinched)");
   }
   if (quads.Q.rows() == 0)
   {
@@ -213,6 +223,7 @@ void vtkQuadExtractor::PrintSelf(ostream& os, vtkIndent indent)
   this->Superclass::PrintSelf(os, indent);
   os << indent << "RelaxationIterations: " << this->RelaxationIterations << "\n";
   os << indent << "RepairInvertedQuads: " << (this->RepairInvertedQuads ? "On" : "Off") << "\n";
+  os << indent << "FillHoles: " << (this->FillHoles ? "On" : "Off") << "\n";
   os << indent << "ComputeHausdorffDistance: " << (this->ComputeHausdorffDistance ? "On" : "Off")
      << "\n";
 }

@@ -24,7 +24,7 @@
  * IrregularVertices (inner, boundary), EdgeLengthRSD, AngleRSD, ScaledJacobianStatistics (min,
  * mean), NonManifoldEdges, EulerCharacteristic, BoundaryLoops, HausdorffDistance (two-sided, and
  * each way, in % of the input's bounding-box diagonal), InvertedQuads (before and after
- * RepairInvertedQuads) and DroppedCells.
+ * RepairInvertedQuads), DroppedCells, FilledHoles and TurnedQuads.
  * @sa vtkQuadCoverSolver
  */
 #ifndef vtkQuadExtractor_h
@@ -60,6 +60,16 @@ public:
   ///@}
 
   ///@{
+  /** Fill the holes that grid cells without a quad leave inside the surface with quads (default
+   * on): a loop of four edges with one quad, a longer even loop with a fan of quads around a new
+   * point on the surface (quadcover::patchQuadMesh), so the output keeps the input's Euler
+   * characteristic where the map could not be repaired. FilledHoles reports what it did. */
+  vtkSetMacro(FillHoles, bool);
+  vtkGetMacro(FillHoles, bool);
+  vtkBooleanMacro(FillHoles, bool);
+  ///@}
+
+  ///@{
   /** Sweeps of tangential relaxation after extraction, in [0, 1000] (default 0: the quads as
    * the map cuts them). Each free vertex moves halfway towards the area-weighted mean of its
    * quads' centres, in the input's tangent plane, and back onto the input surface; vertices on
@@ -83,6 +93,7 @@ protected:
   bool ComputeHausdorffDistance;
   int RelaxationIterations;
   bool RepairInvertedQuads;
+  bool FillHoles;
 
 private:
   vtkQuadExtractor(const vtkQuadExtractor&) = delete;

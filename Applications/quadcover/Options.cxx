@@ -327,6 +327,8 @@ std::vector<Option> StageOptions(Pipeline& p)
       "write the surface cut open along the seams, with UV texture coordinates"),
     QC_SWITCH(
       "quads", extractor, RepairInvertedQuads, "relax the quads around corners turned inside out"),
+    QC_SWITCH(
+      "quads", extractor, FillHoles, "fill holes the map leaves inside the surface with quads"),
     QC_NUMBER(
       "quads", extractor, RelaxationIterations, "sweeps of tangential relaxation of all quads"),
     QC_SWITCH(

@@ -4,6 +4,7 @@
 // valid mesh.
 #include "GridMapChecks.h"
 #include "QuadExtraction.h"
+#include "QuadPatching.h"
 #include "TestChain.h"
 #include "TestSurfaces.h"
 
@@ -155,6 +156,60 @@ TEST(QuadExtraction, EveryComponentGetsAQuadMeshOfItsOwn)
     smallest += q.V(q.Q(i, 0), 0) < 0.25 ? 1 : 0;
   }
   EXPECT_GE(smallest, 30);
+}
+
+TEST(QuadPatching, FillsHolesInsideTheSurfaceWithQuads)
+{
+  const Chain c = runChain(testSurface("sphere"), 1500);
+  QuadMesh q = extractQuads(c.s.V, c.s.F, c.topo, c.map.cornerUV);
+  const int before = static_cast<int>(q.Q.rows());
+  // holes: one quad out, and the quads around one vertex (a loop of eight edges) elsewhere
+  std::vector<char> drop(before, 0);
+  drop[0] = 1;
+  const int far = q.Q(before / 2, 0);
+  for (int i = 0; i < before; ++i)
+  {
+    for (int k = 0; k < 4; ++k)
+    {
+      drop[i] = drop[i] || q.Q(i, k) == far;
+    }
+  }
+  Eigen::MatrixX4i kept(before, 4);
+  std::vector<int> keptTriangle;
+  int n = 0;
+  for (int i = 0; i < before; ++i)
+  {
+    if (!drop[i])
+    {
+      kept.row(n++) = q.Q.row(i);
+      keptTriangle.push_back(q.quadTriangle[i]);
+    }
+  }
+  q.Q = kept.topRows(n);
+  q.quadTriangle = keptTriangle;
+  ASSERT_EQ(measureQuads(q.V, q.Q).boundaryLoops, 2);
+  const QuadPatchResult r = patchQuadMesh(c.s.V, c.s.F, c.topo, q);
+  EXPECT_EQ(r.holesFilled, 2);
+  EXPECT_EQ(r.holesLeft, 0);
+  EXPECT_EQ(r.turnedQuads, 0);
+  const QuadQuality m = measureQuads(q.V, q.Q);
+  EXPECT_EQ(m.quads, m.faces);
+  EXPECT_EQ(m.boundaryEdges, 0);
+  EXPECT_EQ(m.nonManifoldEdges, 0);
+  EXPECT_EQ(m.eulerCharacteristic, 2);
+  EXPECT_EQ(m.vertices, static_cast<int>(q.V.rows())) << "no unused vertex";
+  EXPECT_GT(m.minScaledJacobian, 0.0);
+}
+
+TEST(QuadPatching, LeavesTheSurfaceBoundaryOpen)
+{
+  const Chain c = runChain(testSurface("cylinder"), 800);
+  QuadMesh q = extractQuads(c.s.V, c.s.F, c.topo, c.map.cornerUV);
+  const QuadMesh before = q;
+  const QuadPatchResult r = patchQuadMesh(c.s.V, c.s.F, c.topo, q);
+  EXPECT_EQ(r.holesFilled, 0);
+  EXPECT_EQ(q.Q, before.Q);
+  EXPECT_EQ(measureQuads(q.V, q.Q).boundaryLoops, 2);
 }
 
 TEST(QuadExtraction, CellCentresOnEdgesAndPointsGiveOneQuad)

@@ -1,0 +1,41 @@
+// QuadPatching.h: the last line of defence of the quad stage: the holes inside the surface
+// filled with quads, and the quads that face against the surface counted.
+#ifndef quadcover_QuadPatching_h
+#define quadcover_QuadPatching_h
+
+#include "MeshTopology.h"
+#include "QuadMesh.h"
+
+#include <Eigen/Core>
+
+namespace quadcover
+{
+
+/// What patchQuadMesh did.
+struct QuadPatchResult
+{
+  int turnedQuads = 0; ///< quads facing against the surface triangle closest to their centre
+  int holesFilled = 0; ///< holes inside the surface filled with quads
+  int holesLeft = 0;   ///< holes it could not fill (odd or pinched loops, or every fill turned)
+  int quadsAdded = 0;
+};
+
+/**
+ * Where the map could not be repaired, the quad mesh can have holes (grid cells that gave no
+ * quad). This fills every hole whose boundary loop lies inside the surface (none of its points
+ * on the surface's boundary), is simple and has an even number of edges: four edges with one
+ * quad, more with a fan of quads around a new point on the surface (of the two fans, the one
+ * with the better corners), so that the mesh keeps all quads, its manifold orientation and the
+ * surface's Euler characteristic. A fill that would face against the surface first takes in
+ * another ring of quads, up to three times. Then it counts the quads that face against the
+ * surface (cutting them out and filling their hole measured worse: the fill of a region the map
+ * folded over is far from the surface).
+ * @param[in]     V, F, topo the surface the quads lie on
+ * @param[in,out] q          the quad mesh; unused vertices are removed
+ */
+QuadPatchResult patchQuadMesh(
+  const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F, const MeshTopology& topo, QuadMesh& q);
+
+}
+
+#endif
