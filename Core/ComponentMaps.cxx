@@ -130,6 +130,7 @@ void addComponent(const Inputs& in, const Component& part, const MeshTopology& t
   out.wrongWindings += map.wrongWindings;
   out.untangleRegions += map.untangleRegions;
   out.untangleSeconds += map.untangleSeconds;
+  out.untangleBudgetSpent = out.untangleBudgetSpent || map.untangleBudgetSpent;
   out.maxSeamError = std::max(out.maxSeamError, map.maxSeamError);
   out.solveSeconds.insert(out.solveSeconds.end(), map.solveSeconds.begin(), map.solveSeconds.end());
   out.solver = map.solver;

@@ -50,7 +50,8 @@ public:
     , out_(out)
     , Dr_(sys.D)
     , sqrtArea_(areaRoots(sys.faceArea))
-    , untangler_{ Dr_, sys.D, sqrtArea_, out.edgeLength, sys.numReal }
+    , work_(static_cast<long long>(in.options.untangleWork) * in.numFaces())
+    , untangler_{ Dr_, sys.D, sqrtArea_, out.edgeLength, sys.numReal, &work_ }
     , progress_(progress)
   {}
 
@@ -60,7 +61,7 @@ public:
   void attempts(Eigen::VectorXd& x, Defects& defects, int& regions)
   {
     Eigen::VectorXd xs = sys_.P * x;
-    for (int attempt = 0; attempt < 3 && defects.count() > 0; ++attempt)
+    for (int attempt = 0; attempt < 3 && defects.count() > 0 && !untangler_.spent(); ++attempt)
     {
       // cones first: a point wound twice is usually the neighbour of a cone closed up into
       // 90 degrees, and comes right with it
@@ -90,6 +91,7 @@ public:
     }
   }
 
+  bool spent() const { return untangler_.spent(); }
   /// Freed, a fan laid out again can close up once more as its surroundings untangle (on fine
   /// meshes a cone's fan is small against a grid cell); held, it cannot, though its
   /// surroundings may then keep folds. This runs the first attempt again with its fans held
@@ -135,7 +137,7 @@ private:
     std::vector<int>& flipped, const std::vector<char>& frozen)
   {
     int regions = 0;
-    for (int rings = 2; rings <= maxRings && !flipped.empty(); rings *= 2)
+    for (int rings = 2; rings <= maxRings && !flipped.empty() && !untangler_.spent(); rings *= 2)
     {
       untangler_.run(in_.topo, in_.F, flipped, rings, in_.options.maximumUntangleRounds, xs, frozen,
         halving(progress_, runs_++));
@@ -242,6 +244,7 @@ private:
   const Parameterization& out_;
   const Eigen::SparseMatrix<double, Eigen::RowMajor> Dr_;
   const Eigen::VectorXd sqrtArea_;
+  long long work_;            // what the untangling may still spend, in triangle energy evaluations
   const Untangler untangler_; // in symbols: only the real ones move, and they are the real columns
   Snapshot firstHeld_;
   /// How many untangling runs there will be is not known beforehand: run k of the repair gets
@@ -309,6 +312,7 @@ void repairMap(const Inputs& in, const Field& field, const SeamlessSystem& sys, 
     defects = found;
   }
   out.untangleSeconds = seconds(started);
+  out.untangleBudgetSpent = repair.spent();
   progress.report(1.0);
 }
 }

@@ -52,6 +52,11 @@ struct ParameterizationOptions
   /// of their neighbourhood (2 rings, then 4, 8, 16) move to minimize a foldover-free distortion
   /// energy, in at most this many rounds per neighbourhood; 0 leaves flips as they are.
   int maximumUntangleRounds = 30;
+  /// The untangling's budget, so that its time stays bounded by a multiple of the solve's: at
+  /// most this many energy evaluations per triangle of the surface, in all (counted as work, not
+  /// time, so that every machine gives the same map). The shared meshes' maps that untangle
+  /// spend 100 to 8,000 (the teapot's body); maps that do not can spend 60,000 for nothing.
+  int untangleWork = 10000;
   /// Each component of the surface gets a map of its own, with at least this many quads: its
   /// share of targetQuadCount by area, or targetEdgeLength made shorter where that would give
   /// fewer. (A component far smaller than a grid cell would otherwise get no quad at all.)
@@ -104,7 +109,8 @@ struct Parameterization
   int flipped = 0; ///< in the final map
   /// inner points whose (u, v) angles do not add up to 2 pi (1 - index) in the final map
   int wrongWindings = 0;
-  int untangleRegions = 0; ///< neighbourhoods untangled (each growing the last)
+  int untangleRegions = 0;          ///< neighbourhoods untangled (each growing the last)
+  bool untangleBudgetSpent = false; ///< the untangling stopped at options.untangleWork
   double untangleSeconds = 0.0;
   double maxSeamError = 0.0; ///< largest distance of a seam translation from Z^2, in grid units
   std::vector<double> solveSeconds; ///< factorization + solve, one entry per sparse solve

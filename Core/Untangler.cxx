@@ -68,6 +68,7 @@ public:
   int size() const { return static_cast<int>(columns_.size()); }
   /// How often evaluate was called: the measure of the work done.
   int evaluations() const { return evaluations_; }
+  bool spent() const { return untangler_.spent(); }
 
   /// The free unknowns of a full map.
   Eigen::VectorXd restrictTo(const Eigen::VectorXd& full) const
@@ -93,6 +94,10 @@ public:
   double evaluate(const Eigen::VectorXd& y, double eps, Eigen::VectorXd& g)
   {
     ++evaluations_;
+    if (untangler_.work)
+    {
+      *untangler_.work -= static_cast<long long>(faces_.size());
+    }
     scatter(y, full_);
     for (const int c : columns_)
     {
@@ -155,7 +160,7 @@ double minimize(LocalEnergy& energy, Eigen::VectorXd& y, double eps, const Progr
   std::vector<Eigen::VectorXd> S, Y;
   Eigen::VectorXd g;
   double e = energy.evaluate(y, eps, g);
-  for (int it = 0; it < Iterations; ++it)
+  for (int it = 0; it < Iterations && !energy.spent(); ++it)
   {
     // how many rounds and iterations it takes is not known beforehand: a fraction that
     // approaches 1 with the evaluations done
@@ -318,7 +323,7 @@ void Untangler::run(const MeshTopology& topo, const Eigen::MatrixX3i& F,
   const int m = energy.size();
   Eigen::VectorXd y = energy.restrictTo(x);
   double previous = std::numeric_limits<double>::max();
-  for (int round = 0; round < maxRounds && m > 0; ++round)
+  for (int round = 0; round < maxRounds && m > 0 && !spent(); ++round)
   {
     const double lowest = energy.minDet(y);
     const double eps = lowest < 0 ? std::sqrt(1e-8 + 0.04 * lowest * lowest) : 1e-8;

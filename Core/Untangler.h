@@ -33,7 +33,13 @@ struct Untangler
   const Eigen::VectorXd& sqrtArea;                        // per triangle, 0 if skipped
   double edgeLength;                                      // h: J relative to the unit cell
   int numReal;
+  /// Work left, in triangle energy evaluations, shared by every run of one repair: runs stop
+  /// when it is spent (nullptr: no limit). Counting work, not seconds, keeps the result the same
+  /// on every machine.
+  long long* work = nullptr;
   double theta = 0.25;
+
+  bool spent() const { return work && *work <= 0; }
 
   /// The Jacobian of triangle f in the map x (symbols) relative to the unit cell.
   Eigen::Matrix2d jacobian(int f, const Eigen::VectorXd& x) const;

@@ -123,6 +123,7 @@ vtkQuadCoverSolver::vtkQuadCoverSolver()
   this->AlignToBoundary = defaults.alignToBoundary;
   this->BoundaryTolerance = defaults.boundaryTolerance;
   this->MaximumUntangleRounds = defaults.maximumUntangleRounds;
+  this->UntangleWork = defaults.untangleWork;
   this->MinimumComponentQuadCount = defaults.minimumComponentQuadCount;
   this->SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_CELLS, names::FrameU);
   this->SetInputArrayToProcess(1, 0, 0, vtkDataObject::FIELD_ASSOCIATION_CELLS, names::Matching);
@@ -154,6 +155,7 @@ void vtkQuadCoverSolver::Execute(vtkQuadCoverSurface& in, vtkInformationVector* 
   options.alignToBoundary = this->AlignToBoundary;
   options.boundaryTolerance = this->BoundaryTolerance;
   options.maximumUntangleRounds = this->MaximumUntangleRounds;
+  options.untangleWork = this->UntangleWork;
   options.minimumComponentQuadCount = this->MinimumComponentQuadCount;
   const quadcover::Parameterization map = quadcover::computeParameterization(in.V, in.F, in.topo,
     geometry, U, matching, options, vtkQuadCoverEigen::CoreProgress(this, 0.15, 0.95));
@@ -167,7 +169,9 @@ void vtkQuadCoverSolver::Execute(vtkQuadCoverSurface& in, vtkInformationVector* 
   {
     this->Warn(std::to_string(map.flipped) +
       " triangles keep a flipped (u, v) image after untangling; the quads there may be "
-      "irregular (a finer or coarser grid may help)");
+      "irregular (a finer or coarser grid may help)" +
+      std::string(
+        map.untangleBudgetSpent ? "; the untangling stopped at its budget (UntangleWork)" : ""));
   }
 
   vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
@@ -200,6 +204,7 @@ void vtkQuadCoverSolver::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "AlignToBoundary: " << (this->AlignToBoundary ? "On" : "Off") << "\n";
   os << indent << "BoundaryTolerance: " << this->BoundaryTolerance << "\n";
   os << indent << "MaximumUntangleRounds: " << this->MaximumUntangleRounds << "\n";
+  os << indent << "UntangleWork: " << this->UntangleWork << "\n";
   os << indent << "MinimumComponentQuadCount: " << this->MinimumComponentQuadCount << "\n";
   os << indent << "SplitSeams: " << (this->SplitSeams ? "On" : "Off") << "\n";
 }

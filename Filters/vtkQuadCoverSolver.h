@@ -109,6 +109,14 @@ public:
   ///@}
 
   ///@{
+  /** The untangling's budget, in energy evaluations per triangle, in [1, 1000000] (default
+   * 10000): it stops there (with a warning), so its time stays bounded by a multiple of the
+   * solve's; counted as work, not seconds, so every machine gives the same map. */
+  vtkSetClampMacro(UntangleWork, int, 1, 1000000);
+  vtkGetMacro(UntangleWork, int);
+  ///@}
+
+  ///@{
   /** Each connected component gets a map of its own with at least this many quads, in
    * [1, 100000] (default 24): its share of TargetQuadCount by area, or TargetEdgeLength made
    * shorter where that would give fewer, so that small components keep a coarse quad mesh. */
@@ -137,6 +145,7 @@ protected:
   bool AlignToBoundary;
   double BoundaryTolerance;
   int MaximumUntangleRounds;
+  int UntangleWork;
   int MinimumComponentQuadCount;
   bool SplitSeams = false;
 

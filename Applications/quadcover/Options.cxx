@@ -321,6 +321,8 @@ std::vector<Option> StageOptions(Pipeline& p)
     rounding,
     QC_NUMBER("param", solver, MaximumUntangleRounds,
       "rounds of untangling per neighbourhood of flipped triangles"),
+    QC_NUMBER(
+      "param", solver, UntangleWork, "the untangling's budget, in energy evaluations per triangle"),
     QC_NUMBER("param", solver, MinimumComponentQuadCount,
       "quads at least on each connected component (its own grid where needed)"),
     QC_SWITCH("param", solver, SplitSeams,

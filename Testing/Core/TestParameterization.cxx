@@ -382,6 +382,14 @@ TEST(Parameterization, TwistedFramesFoldTheMapAndUntanglingUnfoldsIt)
   expectIntegerGridMap(c, "twisted sphere", false);
   std::cout << "flipped " << folded.flipped << " -> " << c.map.flipped << ", energy "
             << folded.energyFinal << " -> " << c.map.energyFinal << "\n";
+  EXPECT_FALSE(c.map.untangleBudgetSpent);
+  // with almost no budget the untangling stops early (another map than the converged one) and
+  // says so
+  options.untangleWork = 1;
+  const Parameterization stopped =
+    computeParameterization(c.s.V, c.s.F, c.topo, c.geometry, U, c.field.matching, options);
+  EXPECT_TRUE(stopped.untangleBudgetSpent);
+  EXPECT_NE(stopped.energyFinal, c.map.energyFinal);
 }
 
 TEST(Parameterization, BranchPointsOfOneTriangleNeverShareAGridPoint)
