@@ -8,13 +8,14 @@ shared=${1:-../shared/data}
 quads=${2:-6500}
 shift $(( $# < 2 ? $# : 2 ))
 source "$(dirname "$0")/common.sh"
+qc=${QUADCOVER:-build/bin/quadcover} # another build: QUADCOVER=/path/bin/quadcover
 echo "| surface | triangles | quads | valid | components (input) | χ (input) | boundary loops (input) | against normal | Hausdorff % | irregular | edge RSD % | seconds |"
 echo "|---|---:|---:|---|---|---|---|---:|---:|---:|---:|---:|"
 for mesh in $(surfaces "$shared" and-generated all); do
   name=$(basename "$mesh" .obj)
-  build/bin/quadcover "$mesh" -o "$tmp/ref.vtp" --stage repair 2>/dev/null || { echo "| $name | refused: $(build/bin/quadcover "$mesh" -o "$tmp/ref.vtp" --stage repair 2>&1 | head -1) |"; continue; }
+  "$qc" "$mesh" -o "$tmp/ref.vtp" --stage repair 2>/dev/null || { echo "| $name | refused: $("$qc" "$mesh" -o "$tmp/ref.vtp" --stage repair 2>&1 | head -1) |"; continue; }
   start=$(date +%s.%N)
-  if ! err=$(timeout 600 build/bin/quadcover "$mesh" -o "$tmp/out.vtp" --target-quad-count "$quads" "$@" 2>&1); then
+  if ! err=$(timeout 600 "$qc" "$mesh" -o "$tmp/out.vtp" --target-quad-count "$quads" "$@" 2>&1); then
     echo "| $name | failed: ${err%%$'\n'*} |"; continue
   fi
   seconds=$(echo "$(date +%s.%N) - $start" | bc)
