@@ -48,6 +48,12 @@ std::string Extension(const std::string& path)
   return ext;
 }
 
+long long FileSize(const std::string& path)
+{
+  std::ifstream in(path, std::ios::binary | std::ios::ate);
+  return in ? static_cast<long long>(in.tellg()) : -1;
+}
+
 std::string CheckObjText(const std::string& path)
 {
   std::ifstream in(path);

@@ -54,7 +54,7 @@ vtkSmartPointer<vtkAlgorithm> MakeReader(const std::string& path, std::string& e
   }
   if (ext == ".ply")
   {
-    error = checks::CheckPlyFaces(path);
+    error = checks::CheckPly(path);
     return error.empty() ? make(vtkSmartPointer<vtkPLYReader>::New()) : nullptr;
   }
   if (ext == ".stl")
