@@ -1,4 +1,4 @@
-// vtkQuadCoverFileChecks.h (private): what VTK 9.1's OBJ and PLY readers get wrong on bad
+// vtkQuadCoverFileChecks.h (private): what VTK 9.1's OBJ, PLY and STL readers get wrong on bad
 // files, checked before they read them.
 #ifndef vtkQuadCoverFileChecks_h
 #define vtkQuadCoverFileChecks_h
@@ -33,6 +33,12 @@ std::string CheckObjText(const std::string& path);
  * A property type it does not know is left to the reader to judge.
  */
 std::string CheckPly(const std::string& path);
+
+/// VTK 9.1's STL reader reads a binary file to its end whatever its header's triangle count
+/// says, but allocates for that count first, and reads one cut short without a word. For a
+/// binary file (as VTK decides it) the header's count must fit in the file, and a file whose
+/// count is not its own (often 0) must end on a triangle. Returns "" or a one-line reason.
+std::string CheckStl(const std::string& path);
 }
 
 #endif

@@ -59,7 +59,8 @@ vtkSmartPointer<vtkAlgorithm> MakeReader(const std::string& path, std::string& e
   }
   if (ext == ".stl")
   {
-    return make(vtkSmartPointer<vtkSTLReader>::New());
+    error = checks::CheckStl(path);
+    return error.empty() ? make(vtkSmartPointer<vtkSTLReader>::New()) : nullptr;
   }
   if (ext == ".vtp")
   {
