@@ -6,16 +6,20 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <cstdint>
 #include <cstdlib>
+#include <cstring>
 #include <fstream>
+#include <limits>
 #include <sstream>
 
 namespace vtkQuadCoverFileChecks
 {
 namespace
 {
-/// "" or the reason why an OBJ "v" line's coordinates are not all finite.
-std::string CheckObjVertex(const std::string& line, long long number)
+/// "" or the reason why an OBJ "v" line's coordinates cannot be read; `largest` grows to the
+/// largest magnitude seen.
+std::string CheckObjVertex(const std::string& line, long long number, double& largest)
 {
   const char* p = line.c_str() + 1;
   for (int k = 0; k < 3; ++k)
@@ -30,7 +34,58 @@ std::string CheckObjVertex(const std::string& line, long long number)
     {
       return "line " + std::to_string(number) + " has a non-finite (NaN or infinite) coordinate";
     }
+    if (std::abs(x) > FloatMax)
+    {
+      return "line " + std::to_string(number) + " has a coordinate beyond single precision " +
+        "(1e38); VTK reads OBJ files in single precision, so write it as .vtp";
+    }
+    largest = std::max(largest, std::abs(x));
     p = end;
+  }
+  return "";
+}
+
+/// What the face lines of an OBJ file refer to, for the checks after the last line.
+struct ObjFaces
+{
+  long long vertices = 0;
+  long long maxIndex = 0;
+  long long maxIndexLine = 0;
+};
+
+/// "" or the reason why an OBJ "f" line is wrong; `cut` when it is the last line and has no
+/// newline (a file cut short ends like that).
+std::string CheckObjFace(const std::string& line, long long number, bool cut, ObjFaces& faces)
+{
+  // Tokens "i", "i/t", "i//n" or "i/t/n"; negative i counts back from the last vertex.
+  std::istringstream tokens(line.substr(2));
+  std::string token;
+  int count = 0;
+  while (tokens >> token)
+  {
+    char* end = nullptr;
+    const long long i = std::strtoll(token.c_str(), &end, 10);
+    if (end == token.c_str())
+    {
+      break;
+    }
+    if (i == 0 || (i < 0 && -i > faces.vertices))
+    {
+      return "line " + std::to_string(number) + " refers to vertex " + std::to_string(i) +
+        ", which does not exist";
+    }
+    if (i > faces.maxIndex)
+    {
+      faces.maxIndex = i;
+      faces.maxIndexLine = number;
+    }
+    ++count;
+  }
+  if (count < 3)
+  {
+    // VTK's reader refuses these too, but says only "Error reading file near line N".
+    return "line " + std::to_string(number) + " has a face of fewer than three vertices" +
+      (cut ? " (the file ends in the middle of it: cut short?)" : "");
   }
   return "";
 }
@@ -88,56 +143,66 @@ long long FileSize(const std::string& path)
   return in ? static_cast<long long>(in.tellg()) : -1;
 }
 
+bool LooksBinary(const std::string& path)
+{
+  std::ifstream in(path, std::ios::binary);
+  char head[4096];
+  in.read(head, sizeof head);
+  const std::streamsize n = in.gcount();
+  long long control = 0;
+  for (std::streamsize i = 0; i < n; ++i)
+  {
+    const unsigned char c = static_cast<unsigned char>(head[i]);
+    if (c == 0)
+    {
+      return true;
+    }
+    // bytes of 128 and more are left alone: UTF-8 comments are text
+    control += (c < 32 && !std::isspace(c)) || c == 127;
+  }
+  return control * 100 > n;
+}
+
 std::string CheckObjText(const std::string& path)
 {
+  if (LooksBinary(path))
+  {
+    return "not a text OBJ file (it holds binary data)";
+  }
   std::ifstream in(path);
   std::string line;
-  long long vertices = 0, maxIndex = 0, maxIndexLine = 0;
+  ObjFaces faces;
+  double largest = 0.0;
   for (long long number = 1; std::getline(in, line); ++number)
   {
     if (line.size() < 2 || (line[1] != ' ' && line[1] != '\t'))
     {
       continue;
     }
+    std::string bad;
     if (line[0] == 'v')
     {
-      ++vertices;
-      const std::string bad = CheckObjVertex(line, number);
-      if (!bad.empty())
-      {
-        return bad;
-      }
+      ++faces.vertices;
+      bad = CheckObjVertex(line, number, largest);
     }
     else if (line[0] == 'f')
     {
-      // Tokens "i", "i/t", "i//n" or "i/t/n"; negative i counts back from the last vertex.
-      std::istringstream tokens(line.substr(2));
-      std::string token;
-      while (tokens >> token)
-      {
-        char* end = nullptr;
-        const long long i = std::strtoll(token.c_str(), &end, 10);
-        if (end == token.c_str())
-        {
-          break;
-        }
-        if (i == 0 || (i < 0 && -i > vertices))
-        {
-          return "line " + std::to_string(number) + " refers to vertex " + std::to_string(i) +
-            ", which does not exist";
-        }
-        if (i > maxIndex)
-        {
-          maxIndex = i;
-          maxIndexLine = number;
-        }
-      }
+      bad = CheckObjFace(line, number, in.eof(), faces);
+    }
+    if (!bad.empty())
+    {
+      return bad;
     }
   }
-  if (maxIndex > vertices)
+  if (faces.maxIndex > faces.vertices)
   {
-    return "line " + std::to_string(maxIndexLine) + " refers to vertex " +
-      std::to_string(maxIndex) + ", but the file has only " + std::to_string(vertices);
+    return "line " + std::to_string(faces.maxIndexLine) + " refers to vertex " +
+      std::to_string(faces.maxIndex) + ", but the file has only " + std::to_string(faces.vertices);
+  }
+  if (largest > 0.0 && largest < FloatMin)
+  {
+    return "every coordinate is below single precision (1e-38); VTK reads OBJ files in single "
+           "precision, so write it as .vtp";
   }
   return "";
 }

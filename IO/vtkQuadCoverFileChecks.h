@@ -8,7 +8,7 @@
 
 namespace vtkQuadCoverFileChecks
 {
-/// The range of the single-precision coordinates VTK's PLY reader stores.
+/// The range of the single-precision coordinates VTK's OBJ, PLY and STL readers store.
 constexpr double FloatMax = std::numeric_limits<float>::max();
 constexpr double FloatMin = std::numeric_limits<float>::min();
 
@@ -18,8 +18,15 @@ std::string Extension(const std::string& path);
 /// The file's size in bytes, -1 when it cannot be opened.
 long long FileSize(const std::string& path);
 
-/// VTK 9.1's OBJ reader reads "nan" and "inf" as 0, and a face index past the vertices reads
-/// memory it does not own. Returns "" or a one-line reason naming the first offending line.
+/// True when the file's first 4 KB hold a NUL byte or more than 1% control characters (bytes
+/// from 128 up count as text, for UTF-8).
+bool LooksBinary(const std::string& path);
+
+/// VTK 9.1's OBJ reader reads "nan" and "inf" as 0, coordinates beyond single precision as
+/// infinite, and a face index past the vertices reads memory it does not own; it reads binary
+/// data as lines of garbage. Returns "" or a one-line reason (naming the first offending line):
+/// binary data, a non-finite coordinate or one beyond single precision, every coordinate below
+/// it, a face index that is not a vertex, a face of fewer than three vertices.
 std::string CheckObjText(const std::string& path);
 
 /**

@@ -6,7 +6,9 @@
  * a missing, unreadable or empty file, an unknown extension, a file with no points (and, for
  * OFF, one that ends early).
  * It checks what VTK 9.1's own readers get wrong before they read: OBJ files with NaN or
- * infinite coordinates (read as 0) or face indices past the vertices; PLY files with face
+ * infinite coordinates (read as 0), coordinates beyond single precision (read as infinite) or
+ * all below it (read as 0), face indices past the vertices, faces of fewer than three vertices,
+ * or binary data (read as lines of garbage, which its error echoed); PLY files with face
  * indices past the vertices, cut short, or whose header claims more elements than the file
  * holds (which crash its reader or make it allocate without bound), and PLY coordinates beyond
  * single precision (which it stores as infinite); binary STL files whose header counts more
