@@ -173,23 +173,23 @@ def _normal(a, b, c):
 def stl_binary(mesh, claimed=None):
     """A binary STL; `claimed` puts another triangle count in its header."""
     points, faces = mesh
-    out = b"hostile binary STL".ljust(80, b"\0")
-    out += struct.pack("<I", len(faces) if claimed is None else claimed)
+    out = [b"hostile binary STL".ljust(80, b"\0")]
+    out.append(struct.pack("<I", len(faces) if claimed is None else claimed))
     for face in faces:
         p = [points[i] for i in face]
-        out += struct.pack("<12fH", *_normal(*p), *p[0], *p[1], *p[2], 0)
-    return out
+        out.append(struct.pack("<12fH", *_normal(*p), *p[0], *p[1], *p[2], 0))
+    return b"".join(out)
 
 
 def stl_ascii(mesh):
     points, faces = mesh
-    text = "solid hostile\n"
+    text = ["solid hostile\n"]
     for face in faces:
         p = [points[i] for i in face]
-        text += "  facet normal %.6g %.6g %.6g\n    outer loop\n" % _normal(*p)
-        text += "".join("      vertex %.9g %.9g %.9g\n" % q for q in p)
-        text += "    endloop\n  endfacet\n"
-    return text + "endsolid hostile\n"
+        text.append("  facet normal %.6g %.6g %.6g\n    outer loop\n" % _normal(*p))
+        text += ["      vertex %.9g %.9g %.9g\n" % q for q in p]
+        text.append("    endloop\n  endfacet\n")
+    return "".join(text) + "endsolid hostile\n"
 
 
 def write_vtp(path, mesh, binary=True):
