@@ -324,8 +324,8 @@ std::vector<Option> StageOptions(Pipeline& p)
       "turn the frames to agree with changed matchings"),
     QC_NUMBER2("matching", matching, solver, BoundaryTolerance,
       "degrees a boundary edge may turn from its frame and still follow it"),
-    QC_NUMBER(
-      "param", solver, TargetQuadCount, "about this many quads (when --target-edge-length is 0)"),
+    QC_NUMBER("param", solver, TargetQuadCount,
+      "about this many quads (at most 2000000, or 50 a triangle)"),
     QC_NUMBER("param", solver, TargetEdgeLength,
       "quad edge length in world units, 0 for --target-quad-count"),
     QC_SWITCH("param", solver, PureQuads, "branch points on grid points, so only quads"),
