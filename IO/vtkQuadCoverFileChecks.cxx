@@ -6,11 +6,8 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
-#include <cstdint>
 #include <cstdlib>
-#include <cstring>
 #include <fstream>
-#include <limits>
 #include <sstream>
 
 namespace vtkQuadCoverFileChecks
