@@ -288,10 +288,49 @@ private:
           const size_t slot = std::min(taken[p]++, next[p].size() - 1);
           p = next[p][slot];
         } while (p != start && loop.points.size() <= halfEdges.size());
-        loops.push_back(std::move(loop));
+        if (loop.pinched && p == start)
+        {
+          splitAtRepeats(loop, loops);
+        }
+        else
+        {
+          loops.push_back(std::move(loop));
+        }
       }
     }
     return loops;
+  }
+
+  /// Splits a closed loop that passes points more than once into simple loops (each filled on
+  /// its own; together they close the pinch).
+  static void splitAtRepeats(const Loop& loop, std::vector<Loop>& loops)
+  {
+    std::vector<int> stack;
+    std::map<int, size_t> position; // of a point on the stack
+    for (const int p : loop.points)
+    {
+      const auto found = position.find(p);
+      if (found != position.end())
+      {
+        Loop simple;
+        simple.points.assign(
+          stack.begin() + static_cast<std::ptrdiff_t>(found->second), stack.end());
+        simple.inside = loop.inside;
+        for (size_t i = found->second + 1; i < stack.size(); ++i)
+        {
+          position.erase(stack[i]);
+        }
+        stack.resize(found->second + 1);
+        loops.push_back(std::move(simple));
+        continue;
+      }
+      position[p] = stack.size();
+      stack.push_back(p);
+    }
+    Loop rest;
+    rest.points = stack;
+    rest.inside = loop.inside;
+    loops.push_back(std::move(rest));
   }
 
   /// The surface triangles near the points: theirs, and two rings of neighbours.

@@ -6,6 +6,7 @@
 #include <Eigen/Geometry>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <numeric>
 #include <stdexcept>
@@ -338,6 +339,50 @@ ManifoldRepair makeManifold(Eigen::MatrixX3d& V, Eigen::MatrixX3i& F)
     }
   }
   return repair;
+}
+
+std::vector<char> redundantTriangles(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F)
+{
+  const int nf = static_cast<int>(F.rows());
+  std::vector<char> remove(nf, 0);
+  std::vector<std::array<int, 4>> sorted(nf); // the three points sorted, then the face
+  for (int f = 0; f < nf; ++f)
+  {
+    sorted[f] = { F(f, 0), F(f, 1), F(f, 2), f };
+    std::sort(sorted[f].begin(), sorted[f].begin() + 3);
+  }
+  std::sort(sorted.begin(), sorted.end());
+  for (int i = 1; i < nf; ++i)
+  {
+    if (std::equal(sorted[i].begin(), sorted[i].begin() + 3, sorted[i - 1].begin()))
+    {
+      remove[sorted[i][3]] = 1;
+    }
+  }
+  if (V.rows() == 0)
+  {
+    return remove;
+  }
+  std::vector<int> parent(V.rows());
+  std::iota(parent.begin(), parent.end(), 0);
+  for (int f = 0; f < nf; ++f)
+  {
+    unite(parent, F(f, 0), F(f, 1));
+    unite(parent, F(f, 0), F(f, 2));
+  }
+  std::vector<double> area(V.rows(), 0.0);
+  for (int f = 0; f < nf; ++f)
+  {
+    const Eigen::Vector3d a = V.row(F(f, 0)).transpose();
+    area[findRoot(parent, F(f, 0))] +=
+      (V.row(F(f, 1)).transpose() - a).cross(V.row(F(f, 2)).transpose() - a).norm() / 2;
+  }
+  const double diagonal = (V.colwise().maxCoeff() - V.colwise().minCoeff()).norm();
+  for (int f = 0; f < nf; ++f)
+  {
+    remove[f] = remove[f] || !(area[findRoot(parent, F(f, 0))] > 1e-24 * diagonal * diagonal);
+  }
+  return remove;
 }
 
 }

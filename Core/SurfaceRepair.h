@@ -10,6 +10,15 @@
 namespace quadcover
 {
 
+/**
+ * The triangles a repair removes before makeManifold: each repeat of a triangle (the same three
+ * points, in either orientation, as an earlier one) and every triangle of a component (joined
+ * through shared points) whose area is zero next to the surface's size (1e-24 of its bounding
+ * box diagonal squared): such a component is no surface, and no map can be solved on it.
+ * @return #F, 1 for a triangle to remove
+ */
+std::vector<char> redundantTriangles(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F);
+
 /// What makeManifold changed.
 struct ManifoldRepair
 {

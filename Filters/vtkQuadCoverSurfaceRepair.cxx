@@ -64,6 +64,36 @@ vtkIdType UsedPoints(vtkPolyData* pd)
   return used;
 }
 
+/// Removes the repeated triangles and the components of zero area (quadcover::
+/// redundantTriangles), with their cell data; returns how many.
+vtkIdType RemoveRedundantTriangles(vtkPolyData* surface)
+{
+  const std::vector<char> remove = quadcover::redundantTriangles(
+    vtkQuadCoverEigen::Points(surface), vtkQuadCoverEigen::Triangles(surface));
+  vtkNew<vtkIdList> kept;
+  for (vtkIdType c = 0; c < static_cast<vtkIdType>(remove.size()); ++c)
+  {
+    if (!remove[c])
+    {
+      kept->InsertNextId(c);
+    }
+  }
+  const vtkIdType removed = static_cast<vtkIdType>(remove.size()) - kept->GetNumberOfIds();
+  if (kept->GetNumberOfIds() == 0)
+  {
+    throw std::invalid_argument("every triangle of the input is degenerate (zero area)");
+  }
+  if (removed > 0)
+  {
+    vtkNew<vtkPolyData> copy;
+    copy->GetFieldData()->ShallowCopy(surface->GetFieldData());
+    copy->AllocateExact(kept->GetNumberOfIds(), 3 * kept->GetNumberOfIds());
+    copy->CopyCells(surface, kept);
+    surface->ShallowCopy(copy);
+  }
+  return removed;
+}
+
 /// Makes `surface` manifold and consistently oriented (quadcover::makeManifold): points copied
 /// with their point data, triangles reversed with their cell normals. Counts go to `counts`.
 void MakeManifold(vtkPolyData* surface, Counts& counts)
@@ -155,9 +185,11 @@ void vtkQuadCoverSurfaceRepair::Execute(vtkQuadCoverSurface& in, vtkInformationV
   }
   this->UpdateProgress(0.5);
 
-  // Non-manifold edges cut apart, bowties split, each component oriented.
+  // Repeated triangles and components of zero area removed; non-manifold edges cut apart,
+  // bowties split, each component oriented.
   vtkPolyData* output = vtkPolyData::GetData(outputVector);
   output->ShallowCopy(cleaned);
+  counts.removedCells += RemoveRedundantTriangles(output);
   MakeManifold(output, counts);
 
   namespace names = vtkQuadCoverArrayNames;

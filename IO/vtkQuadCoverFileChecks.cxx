@@ -1,22 +1,22 @@
 // VTK-HeaderTest-Exclude: vtkQuadCoverFileChecks.cxx
 #include "vtkQuadCoverFileChecks.h"
 
+#include <vtksys/SystemTools.hxx>
+
 #include <algorithm>
 #include <cctype>
 #include <cmath>
-#include <cstdint>
 #include <cstdlib>
-#include <cstring>
 #include <fstream>
 #include <sstream>
-#include <vector>
 
 namespace vtkQuadCoverFileChecks
 {
 namespace
 {
-/// "" or the reason why an OBJ "v" line's coordinates are not all finite.
-std::string CheckObjVertex(const std::string& line, long long number)
+/// "" or the reason why an OBJ "v" line's coordinates cannot be read; `largest` grows to the
+/// largest magnitude seen.
+std::string CheckObjVertex(const std::string& line, long long number, double& largest)
 {
   const char* p = line.c_str() + 1;
   for (int k = 0; k < 3; ++k)
@@ -31,183 +31,90 @@ std::string CheckObjVertex(const std::string& line, long long number)
     {
       return "line " + std::to_string(number) + " has a non-finite (NaN or infinite) coordinate";
     }
+    if (std::abs(x) > FloatMax)
+    {
+      return "line " + std::to_string(number) + " has a coordinate beyond single precision " +
+        "(1e38); VTK reads OBJ files in single precision, so write it as .vtp";
+    }
+    largest = std::max(largest, std::abs(x));
     p = end;
   }
   return "";
 }
 
-struct PlyProperty
+/// What the face lines of an OBJ file refer to, for the checks after the last line.
+struct ObjFaces
 {
-  std::string name;
-  std::string type;      // scalar type, or the item type of a list
-  std::string countType; // empty for scalars
+  long long vertices = 0;
+  long long maxIndex = 0;
+  long long maxIndexLine = 0;
 };
 
-struct PlyElement
+/// "" or the reason why an OBJ "f" line is wrong; `cut` when it is the last line and has no
+/// newline (a file cut short ends like that).
+std::string CheckObjFace(const std::string& line, long long number, bool cut, ObjFaces& faces)
 {
-  std::string name;
-  long long count = 0;
-  std::vector<PlyProperty> properties;
-};
-
-/// The header up to end_header: the format and the elements with their properties.
-std::vector<PlyElement> ReadPlyHeader(std::istream& in, std::string& format)
-{
-  std::vector<PlyElement> elements;
-  std::string line;
-  while (std::getline(in, line))
+  // Tokens "i", "i/t", "i//n" or "i/t/n"; negative i counts back from the last vertex.
+  std::istringstream tokens(line.substr(2));
+  std::string token;
+  int count = 0;
+  while (tokens >> token)
   {
-    if (!line.empty() && line.back() == '\r')
-    {
-      line.pop_back();
-    }
-    std::istringstream words(line);
-    std::string word;
-    words >> word;
-    if (word == "format")
-    {
-      words >> format;
-    }
-    else if (word == "element")
-    {
-      PlyElement e;
-      words >> e.name >> e.count;
-      elements.push_back(e);
-    }
-    else if (word == "property" && !elements.empty())
-    {
-      PlyProperty p;
-      words >> p.type;
-      if (p.type == "list")
-      {
-        words >> p.countType >> p.type;
-      }
-      words >> p.name;
-      elements.back().properties.push_back(p);
-    }
-    else if (word == "end_header")
+    char* end = nullptr;
+    const long long i = std::strtoll(token.c_str(), &end, 10);
+    if (end == token.c_str())
     {
       break;
     }
+    if (i == 0 || (i < 0 && -i > faces.vertices))
+    {
+      return "line " + std::to_string(number) + " refers to vertex " + std::to_string(i) +
+        ", which does not exist";
+    }
+    if (i > faces.maxIndex)
+    {
+      faces.maxIndex = i;
+      faces.maxIndexLine = number;
+    }
+    ++count;
   }
-  return elements;
+  if (count < 3)
+  {
+    // VTK's reader refuses these too, but says only "Error reading file near line N".
+    return "line " + std::to_string(number) + " has a face of fewer than three vertices" +
+      (cut ? " (the file ends in the middle of it: cut short?)" : "");
+  }
+  return "";
 }
 
-/// Bytes of a PLY scalar type, 0 for one it does not know.
-int PlySize(const std::string& t)
+/// The binary STL's size against its header: 80 bytes, a triangle count, 50 bytes a triangle.
+std::string CheckBinaryStl(const std::string& path, long long size)
 {
-  if (t == "char" || t == "uchar" || t == "int8" || t == "uint8")
-    return 1;
-  if (t == "short" || t == "ushort" || t == "int16" || t == "uint16")
-    return 2;
-  if (t == "int" || t == "uint" || t == "int32" || t == "uint32" || t == "float" || t == "float32")
-    return 4;
-  if (t == "double" || t == "float64")
-    return 8;
-  return 0;
-}
-
-/// Reads one value of PLY type t (exact for every integer type up to 32 bits).
-class PlyValues
-{
-public:
-  PlyValues(std::istream& in, const std::string& format)
-    : In(in)
-    , Ascii(format == "ascii")
-    , Swap(format == "binary_big_endian")
-  {}
-
-  bool Read(const std::string& t, double& value)
+  if (size < 84)
   {
-    if (this->Ascii)
-    {
-      return static_cast<bool>(this->In >> value);
-    }
-    const int n = PlySize(t);
-    unsigned char b[8];
-    if (n == 0 || !this->In.read(reinterpret_cast<char*>(b), n))
-    {
-      return false;
-    }
-    if (this->Swap)
-    {
-      std::reverse(b, b + n);
-    }
-    value = Decode(t, b);
-    return true;
+    return "a binary STL file needs 84 bytes for its header, this one has " + std::to_string(size);
   }
-
-private:
-  static double Decode(const std::string& t, const unsigned char* b)
+  std::ifstream in(path, std::ios::binary);
+  unsigned char b[4] = { 0, 0, 0, 0 };
+  in.seekg(80);
+  in.read(reinterpret_cast<char*>(b), 4);
+  const long long claimed = static_cast<long long>(b[0]) | (static_cast<long long>(b[1]) << 8) |
+    (static_cast<long long>(b[2]) << 16) | (static_cast<long long>(b[3]) << 24);
+  const long long present = (size - 84) / 50;
+  // VTK's reader allocates for the header's count, and reads on to the end of the file (many
+  // writers put 0 there): so a count larger than the file is refused, a smaller one is not.
+  if (claimed > present)
   {
-    if (t == "char" || t == "int8")
-      return static_cast<signed char>(b[0]);
-    if (t == "uchar" || t == "uint8")
-      return b[0];
-    if (PlySize(t) == 2)
-    {
-      std::uint16_t u;
-      std::memcpy(&u, b, 2);
-      return (t == "short" || t == "int16") ? static_cast<std::int16_t>(u) : u;
-    }
-    if (t == "float" || t == "float32")
-    {
-      float f;
-      std::memcpy(&f, b, 4);
-      return f;
-    }
-    if (PlySize(t) == 4)
-    {
-      std::uint32_t u;
-      std::memcpy(&u, b, 4);
-      return (t == "int" || t == "int32") ? static_cast<std::int32_t>(u) : u;
-    }
-    double d;
-    std::memcpy(&d, b, 8);
-    return d;
+    return "the binary STL header says " + std::to_string(claimed) + " triangles (" +
+      std::to_string(84 + 50 * claimed) + " bytes), but the file has " + std::to_string(size) +
+      " bytes, " + std::to_string(present) + " triangles (cut short?)";
   }
-
-  std::istream& In;
-  bool Ascii;
-  bool Swap;
-};
-
-/// "" or the first face index of element e (count items) that is not one of `vertices` points;
-/// `readable` turns false when the file ends early or holds a type it does not know.
-std::string CheckPlyElement(
-  PlyValues& values, const PlyElement& e, long long vertices, bool& readable)
-{
-  for (long long i = 0; i < e.count; ++i)
+  // With a count that is not the file's (often 0), only the file's length tells whether it was
+  // cut in the middle of a triangle; bytes after as many triangles as the header says are left.
+  if (claimed != present && (size - 84) % 50 != 0)
   {
-    for (const PlyProperty& p : e.properties)
-    {
-      double value = 0;
-      if (p.countType.empty())
-      {
-        readable = values.Read(p.type, value);
-        if (!readable)
-          return "";
-        continue;
-      }
-      double count = 0;
-      readable = values.Read(p.countType, count) && count >= 0;
-      if (!readable)
-        return "";
-      const bool indices = e.name == "face" &&
-        (p.name == "vertex_indices" || p.name == "vertex_index") && vertices >= 0;
-      for (long long k = 0; k < static_cast<long long>(count); ++k)
-      {
-        readable = values.Read(p.type, value);
-        if (!readable)
-          return "";
-        if (indices && !(value >= 0 && value < static_cast<double>(vertices)))
-        {
-          return "face " + std::to_string(i) + " refers to point " +
-            std::to_string(static_cast<long long>(value)) + ", but there are only " +
-            std::to_string(vertices) + " points";
-        }
-      }
-    }
+    return "the binary STL file ends in the middle of a triangle (" + std::to_string(size) +
+      " bytes is not 84 and 50 a triangle; cut short?)";
   }
   return "";
 }
@@ -227,89 +134,82 @@ std::string Extension(const std::string& path)
   return ext;
 }
 
+long long FileSize(const std::string& path)
+{
+  std::ifstream in(path, std::ios::binary | std::ios::ate);
+  return in ? static_cast<long long>(in.tellg()) : -1;
+}
+
+bool LooksBinary(const std::string& path)
+{
+  std::ifstream in(path, std::ios::binary);
+  char head[4096];
+  in.read(head, sizeof head);
+  const std::streamsize n = in.gcount();
+  long long control = 0;
+  for (std::streamsize i = 0; i < n; ++i)
+  {
+    const unsigned char c = static_cast<unsigned char>(head[i]);
+    if (c == 0)
+    {
+      return true;
+    }
+    // bytes of 128 and more are left alone: UTF-8 comments are text
+    control += (c < 32 && !std::isspace(c)) || c == 127;
+  }
+  return control * 100 > n;
+}
+
 std::string CheckObjText(const std::string& path)
 {
+  if (LooksBinary(path))
+  {
+    return "not a text OBJ file (it holds binary data)";
+  }
   std::ifstream in(path);
   std::string line;
-  long long vertices = 0, maxIndex = 0, maxIndexLine = 0;
+  ObjFaces faces;
+  double largest = 0.0;
   for (long long number = 1; std::getline(in, line); ++number)
   {
     if (line.size() < 2 || (line[1] != ' ' && line[1] != '\t'))
     {
       continue;
     }
+    std::string bad;
     if (line[0] == 'v')
     {
-      ++vertices;
-      const std::string bad = CheckObjVertex(line, number);
-      if (!bad.empty())
-      {
-        return bad;
-      }
+      ++faces.vertices;
+      bad = CheckObjVertex(line, number, largest);
     }
     else if (line[0] == 'f')
     {
-      // Tokens "i", "i/t", "i//n" or "i/t/n"; negative i counts back from the last vertex.
-      std::istringstream tokens(line.substr(2));
-      std::string token;
-      while (tokens >> token)
-      {
-        char* end = nullptr;
-        const long long i = std::strtoll(token.c_str(), &end, 10);
-        if (end == token.c_str())
-        {
-          break;
-        }
-        if (i == 0 || (i < 0 && -i > vertices))
-        {
-          return "line " + std::to_string(number) + " refers to vertex " + std::to_string(i) +
-            ", which does not exist";
-        }
-        if (i > maxIndex)
-        {
-          maxIndex = i;
-          maxIndexLine = number;
-        }
-      }
+      bad = CheckObjFace(line, number, in.eof(), faces);
     }
-  }
-  if (maxIndex > vertices)
-  {
-    return "line " + std::to_string(maxIndexLine) + " refers to vertex " +
-      std::to_string(maxIndex) + ", but the file has only " + std::to_string(vertices);
-  }
-  return "";
-}
-
-std::string CheckPlyFaces(const std::string& path)
-{
-  std::ifstream in(path, std::ios::binary);
-  std::string line;
-  if (!std::getline(in, line) || line.compare(0, 3, "ply") != 0)
-  {
-    return "";
-  }
-  std::string format;
-  const std::vector<PlyElement> elements = ReadPlyHeader(in, format);
-  if (format != "ascii" && format != "binary_big_endian" && format != "binary_little_endian")
-  {
-    return "";
-  }
-  PlyValues values(in, format);
-  long long vertices = -1;
-  for (const PlyElement& e : elements)
-  {
-    if (e.name == "vertex")
-    {
-      vertices = e.count;
-    }
-    bool readable = true;
-    const std::string bad = CheckPlyElement(values, e, vertices, readable);
-    if (!bad.empty() || !readable)
+    if (!bad.empty())
     {
       return bad;
     }
   }
+  if (faces.maxIndex > faces.vertices)
+  {
+    return "line " + std::to_string(faces.maxIndexLine) + " refers to vertex " +
+      std::to_string(faces.maxIndex) + ", but the file has only " + std::to_string(faces.vertices);
+  }
+  if (largest > 0.0 && largest < FloatMin)
+  {
+    return "every coordinate is below single precision (1e-38); VTK reads OBJ files in single "
+           "precision, so write it as .vtp";
+  }
   return "";
+}
+
+std::string CheckStl(const std::string& path)
+{
+  // VTK's reader tells binary from ASCII by this test; the check follows its choice. (It
+  // reports an ASCII file cut short itself, with the line.)
+  const bool binary =
+    vtksys::SystemTools::DetectFileType(path.c_str()) != vtksys::SystemTools::FileTypeText;
+  return binary ? CheckBinaryStl(path, FileSize(path)) : "";
 }
 }

@@ -1,23 +1,51 @@
-// vtkQuadCoverFileChecks.h (private): what VTK 9.1's OBJ and PLY readers get wrong on bad
+// vtkQuadCoverFileChecks.h (private): what VTK 9.1's OBJ, PLY and STL readers get wrong on bad
 // files, checked before they read them.
 #ifndef vtkQuadCoverFileChecks_h
 #define vtkQuadCoverFileChecks_h
 
+#include <limits>
 #include <string>
 
 namespace vtkQuadCoverFileChecks
 {
+/// The range of the single-precision coordinates VTK's OBJ, PLY and STL readers store.
+constexpr double FloatMax = std::numeric_limits<float>::max();
+constexpr double FloatMin = std::numeric_limits<float>::min();
+
 /// The file's extension in lower case, with its dot ("" when there is none).
 std::string Extension(const std::string& path);
 
-/// VTK 9.1's OBJ reader reads "nan" and "inf" as 0, and a face index past the vertices reads
-/// memory it does not own. Returns "" or a one-line reason naming the first offending line.
+/// The file's size in bytes, -1 when it cannot be opened.
+long long FileSize(const std::string& path);
+
+/// True when the file's first 4 KB hold a NUL byte or more than 1% control characters (bytes
+/// from 128 up count as text, for UTF-8).
+bool LooksBinary(const std::string& path);
+
+/// VTK 9.1's OBJ reader reads "nan" and "inf" as 0, coordinates beyond single precision as
+/// infinite, and a face index past the vertices reads memory it does not own; it reads binary
+/// data as lines of garbage. Returns "" or a one-line reason (naming the first offending line):
+/// binary data, a non-finite coordinate or one beyond single precision, every coordinate below
+/// it, a face index that is not a vertex, a face of fewer than three vertices.
 std::string CheckObjText(const std::string& path);
 
-/// VTK 9.1's PLY reader dereferences face indices without checking them. Streams through the
-/// file (ASCII or binary) and returns "" or a one-line reason for the first face index that is
-/// not a vertex. A header it cannot follow is left to the reader to judge.
-std::string CheckPlyFaces(const std::string& path);
+/**
+ * VTK 9.1's PLY reader dereferences face indices without checking them, crashes on a file cut
+ * short, allocates whatever the header's element counts say and stores single precision. Checks
+ * the header (the "ply" line, a known format, end_header), that the file could hold the elements
+ * it claims (before anything is allocated), then streams through the elements (ASCII: one line
+ * each, the last one ended by a newline; binary: to the byte): a file that ends early, a face
+ * index that is not a vertex, a vertex coordinate beyond single precision or all of them below
+ * it. Returns "" or a one-line reason.
+ * A property type it does not know is left to the reader to judge.
+ */
+std::string CheckPly(const std::string& path);
+
+/// VTK 9.1's STL reader reads a binary file to its end whatever its header's triangle count
+/// says, but allocates for that count first, and reads one cut short without a word. For a
+/// binary file (as VTK decides it) the header's count must fit in the file, and a file whose
+/// count is not its own (often 0) must end on a triangle. Returns "" or a one-line reason.
+std::string CheckStl(const std::string& path);
 }
 
 #endif

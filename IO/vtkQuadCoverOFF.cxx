@@ -1,6 +1,8 @@
 // VTK-HeaderTest-Exclude: vtkQuadCoverOFF.cxx
 #include "vtkQuadCoverOFF.h"
 
+#include "vtkQuadCoverFileChecks.h"
+
 #include "vtkCellArray.h"
 #include "vtkNew.h"
 #include "vtkPoints.h"
@@ -180,6 +182,17 @@ std::string Read(const std::string& path, vtkPolyData* output)
   {
     return "cannot open the file";
   }
+  char head[256];
+  in.read(head, sizeof head);
+  const std::string start(head, static_cast<std::size_t>(in.gcount()));
+  // Binary data would be read as a header of garbage and echoed in the error; a binary OFF
+  // file (its header line says BINARY) gets its own message below.
+  if (vtkQuadCoverFileChecks::LooksBinary(path) &&
+    start.substr(0, start.find('\n')).find("BINARY") == std::string::npos)
+  {
+    return "not a text OFF file (it holds binary data)";
+  }
+  in.clear();
   in.seekg(0, std::ios::end);
   const long long size = static_cast<long long>(in.tellg());
   in.seekg(0);

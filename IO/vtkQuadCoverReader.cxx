@@ -54,12 +54,13 @@ vtkSmartPointer<vtkAlgorithm> MakeReader(const std::string& path, std::string& e
   }
   if (ext == ".ply")
   {
-    error = checks::CheckPlyFaces(path);
+    error = checks::CheckPly(path);
     return error.empty() ? make(vtkSmartPointer<vtkPLYReader>::New()) : nullptr;
   }
   if (ext == ".stl")
   {
-    return make(vtkSmartPointer<vtkSTLReader>::New());
+    error = checks::CheckStl(path);
+    return error.empty() ? make(vtkSmartPointer<vtkSTLReader>::New()) : nullptr;
   }
   if (ext == ".vtp")
   {

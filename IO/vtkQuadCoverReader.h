@@ -6,10 +6,16 @@
  * a missing, unreadable or empty file, an unknown extension, a file with no points (and, for
  * OFF, one that ends early).
  * It checks what VTK 9.1's own readers get wrong before they read: OBJ files with NaN or
- * infinite coordinates (read as 0) or face indices past the vertices, PLY files with face
- * indices past the vertices (which crash its reader). It also reads ASCII OFF files, which VTK
- * has no reader for (the header keyword with the usual prefixes ST, C and N, comments, counts on
- * the header line or the next; binary, 4D and nOFF files are refused).
+ * infinite coordinates (read as 0), coordinates beyond single precision (read as infinite) or
+ * all below it (read as 0), face indices past the vertices, faces of fewer than three vertices,
+ * or binary data (read as lines of garbage, which its error echoed); PLY files with face
+ * indices past the vertices, cut short, or whose header claims more elements than the file
+ * holds (which crash its reader or make it allocate without bound), and PLY coordinates beyond
+ * single precision (which it stores as infinite); binary STL files whose header counts more
+ * triangles than the file holds (cut short; its reader allocates for the count). It also reads
+ * ASCII OFF files, which VTK has no reader for (the header keyword with the usual prefixes ST, C
+ * and N, comments, counts on the header line or the next; binary, 4D and nOFF files are
+ * refused).
  * The output is whatever the file holds (polygons, strips, lines, vertices, point and cell
  * data); vtkQuadCoverSurfaceRepair makes a triangle surface of it.
  * @sa vtkQuadCoverWriter vtkQuadCoverSurfaceRepair

@@ -4,6 +4,7 @@
 
 #include "vtkQuadCoverWriter.h"
 
+#include <algorithm>
 #include <cctype>
 #include <cmath>
 #include <cstdio>
@@ -223,12 +224,22 @@ std::string ParseLong(
     (arg.name == "help" ? request.help : request.verbose) = true;
     return arg.inlineValue ? "--" + arg.name + " takes no value" : "";
   }
+  request.given.push_back(arg.name);
   return ParseOption(argc, argv, i, arg, options);
 }
 
 /// The checks once every argument is read.
-std::string CheckRequest(const Request& request)
+std::string CheckRequest(const Request& request, const std::vector<Option>& options)
 {
+  const bool count = std::find(request.given.begin(), request.given.end(), "target-quad-count") !=
+    request.given.end();
+  const Option* length = Find(options, "target-edge-length");
+  // A nonzero edge length decides the number of quads; a count beside it would be ignored.
+  if (count && length && length->get() != 0.0)
+  {
+    return "--target-quad-count and a nonzero --target-edge-length cannot both be given (the edge "
+           "length sets the number of quads)";
+  }
   if (request.input.empty())
   {
     return "no input file given";
@@ -313,8 +324,8 @@ std::vector<Option> StageOptions(Pipeline& p)
       "turn the frames to agree with changed matchings"),
     QC_NUMBER2("matching", matching, solver, BoundaryTolerance,
       "degrees a boundary edge may turn from its frame and still follow it"),
-    QC_NUMBER(
-      "param", solver, TargetQuadCount, "about this many quads (when --target-edge-length is 0)"),
+    QC_NUMBER("param", solver, TargetQuadCount,
+      "about this many quads (at most 2000000, or 50 a triangle)"),
     QC_NUMBER("param", solver, TargetEdgeLength,
       "quad edge length in world units, 0 for --target-quad-count"),
     QC_SWITCH("param", solver, PureQuads, "branch points on grid points, so only quads"),
@@ -365,7 +376,7 @@ std::string Parse(int argc, char* argv[], const std::vector<Option>& options, Re
       return problem;
     }
   }
-  return request.help ? "" : CheckRequest(request);
+  return request.help ? "" : CheckRequest(request, options);
 }
 
 void PrintUsage(std::ostream& os, const std::vector<Option>& options)

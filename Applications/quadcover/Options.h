@@ -50,6 +50,7 @@ struct Request
   std::string stats;
   bool verbose = false;
   bool help = false;
+  std::vector<std::string> given; ///< the stage options given, by flag (without the dashes)
 };
 
 /**

@@ -1,17 +1,56 @@
 #include "Pipeline.h"
 
+#include "vtkCellArray.h"
 #include "vtkCommand.h"
 #include "vtkPolyData.h"
 #include "vtkQuadCoverErrorObserver.h"
+#include "vtkTriangle.h"
 
+#include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <iostream>
+#include <new>
 
 namespace quadcover_app
 {
 namespace
 {
+/// The sum of the areas of the surface's polygons (triangles after the repair).
+double SurfaceArea(vtkPolyData* surface)
+{
+  double area = 0.0;
+  vtkCellArray* polys = surface->GetPolys();
+  vtkIdType n = 0;
+  const vtkIdType* ids = nullptr;
+  double a[3], b[3], c[3];
+  for (polys->InitTraversal(); polys->GetNextCell(n, ids);)
+  {
+    if (n == 3)
+    {
+      surface->GetPoint(ids[0], a);
+      surface->GetPoint(ids[1], b);
+      surface->GetPoint(ids[2], c);
+      area += vtkTriangle::TriangleArea(a, b, c);
+    }
+  }
+  return area;
+}
+
+/// "Cannot ...: std::bad_alloc." (a filter's message for the exception, by its what()) as
+/// "Cannot ...: out of memory."
+std::string SayOutOfMemory(std::string error)
+{
+  const std::string what = ": std::bad_alloc.";
+  if (error.size() >= what.size() &&
+    error.compare(error.size() - what.size(), what.size(), what) == 0)
+  {
+    error.replace(error.size() - what.size(), what.size(), ": out of memory.");
+  }
+  return error;
+}
+
 /// Prints "stage  NN%" on one line of stderr while a filter runs.
 class ProgressPrinter : public vtkCommand
 {
@@ -68,6 +107,37 @@ Pipeline::Pipeline()
   this->Extractor->SetInputConnection(this->Solver->GetOutputPort());
 }
 
+double Pipeline::MaximumQuadCount(long long triangles)
+{
+  return std::max(2e6, 50.0 * static_cast<double>(triangles));
+}
+
+std::string Pipeline::CheckQuadCount() const
+{
+  vtkPolyData* surface = this->Repair->GetOutput();
+  const long long triangles = surface->GetNumberOfPolys();
+  const double length = this->Solver->GetTargetEdgeLength();
+  const double quads = length > 0.0 ? SurfaceArea(surface) / (length * length)
+                                    : static_cast<double>(this->Solver->GetTargetQuadCount());
+  const double most = MaximumQuadCount(triangles);
+  if (!(quads > most)) // NaN (a zero-area surface) is for the solver to refuse
+  {
+    return "";
+  }
+  char asked[96];
+  if (length > 0.0)
+    std::snprintf(asked, sizeof asked, "--target-edge-length %g gives about %.3g quads, which is",
+      length, quads);
+  else
+    std::snprintf(asked, sizeof asked, "--target-quad-count %.0f is", quads);
+  char text[320];
+  std::snprintf(text, sizeof text,
+    "%s too many for this surface (about %.0f GB of memory); at most %.0f quads are taken "
+    "(2000000, or 50 for each of its %lld triangles)",
+    asked, std::ceil(quads * 0.6e3 / 1e9), most, triangles);
+  return text;
+}
+
 vtkQuadCoverAlgorithm* Pipeline::Filter(int stage) const
 {
   vtkQuadCoverAlgorithm* const filters[] = { this->Repair, this->Curvature, this->Smoother,
@@ -92,7 +162,16 @@ std::string Pipeline::Run(
       observer = filter->AddObserver(vtkCommand::ProgressEvent, printer);
     }
     const auto start = std::chrono::steady_clock::now();
-    filter->Update();
+    try
+    {
+      filter->Update();
+    }
+    catch (const std::bad_alloc&)
+    {
+      // the filters catch their own; this is VTK's pipeline (copying the data between them)
+      printer->Finish();
+      return "Cannot run the " + StageNames()[s] + " stage: out of memory.";
+    }
     printer->Finish();
     if (progress)
     {
@@ -106,7 +185,12 @@ std::string Pipeline::Run(
     }
     if (!errors->GetError().empty())
     {
-      return errors->GetError();
+      return SayOutOfMemory(errors->GetError());
+    }
+    const std::string tooMany = s == 0 && last >= StageIndex("param") ? this->CheckQuadCount() : "";
+    if (!tooMany.empty())
+    {
+      return tooMany;
     }
   }
   return "";

@@ -46,9 +46,25 @@ public:
   vtkQuadCoverAlgorithm* Filter(int stage) const;
 
   /**
+   * The most quads the param stage may be asked for on a surface of `triangles` triangles:
+   * 2,000,000, or 50 a triangle for larger surfaces. The quads stage takes about 0.6 KB a quad
+   * whatever the surface (1.2 GB at 2,000,000 quads); quads finer than a fiftieth of a triangle
+   * only resample flat triangles, so a larger target is almost surely a slip, which would
+   * allocate for minutes and end out of memory.
+   */
+  static double MaximumQuadCount(long long triangles);
+
+  /**
+   * "" or why the solver's target (TargetQuadCount, or the repaired surface's area over
+   * TargetEdgeLength squared) is more quads than MaximumQuadCount allows; run after the repair.
+   */
+  std::string CheckQuadCount() const;
+
+  /**
    * Runs the stages 0..last on `surface`: each stage's warnings go to stderr as
    * "quadcover: warning: ...", its seconds to `timings`; with `progress`, a percentage line on
-   * stderr while a stage runs.
+   * stderr while a stage runs. CheckQuadCount runs after the repair when the param stage is to
+   * run. A std::bad_alloc in a stage is reported as "Cannot ...: out of memory."
    * @return "" or the first error
    */
   std::string Run(vtkPolyData* surface, int last, bool progress, std::vector<Timing>& timings);

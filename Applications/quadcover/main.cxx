@@ -2,7 +2,8 @@
 //
 //   quadcover INPUT -o OUTPUT [--stage NAME] [--stats FILE.json] [-v] [stage options]
 //
-// Exit status: 0 done, 1 the input or a stage failed (one line on stderr), 2 bad usage.
+// Exit status: 0 done, 1 the input or a stage failed (one line on stderr, out of memory too),
+// 2 bad usage.
 #include "Options.h"
 #include "Pipeline.h"
 #include "Stats.h"
@@ -20,6 +21,7 @@
 #include <cstdio>
 #include <fstream>
 #include <iostream>
+#include <new>
 #include <unistd.h>
 
 namespace
@@ -46,30 +48,14 @@ void QuietVTK()
   vtkLogger::SetStderrVerbosity(vtkLogger::VERBOSITY_OFF); // VTK 9 logs errors here too
 }
 
-}
-
-int main(int argc, char* argv[])
+/// The run after the arguments: read, run the stages, write. `doing` says what it is doing,
+/// for the message if memory runs out.
+int Run(const quadcover_app::Request& request, quadcover_app::Pipeline& pipeline,
+  const std::vector<quadcover_app::Option>& options, std::string& doing)
 {
-  quadcover_app::Pipeline pipeline;
-  const std::vector<quadcover_app::Option> options = quadcover_app::StageOptions(pipeline);
-  quadcover_app::Request request;
-  const std::string usage = quadcover_app::Parse(argc, argv, options, request);
-  if (request.help)
-  {
-    quadcover_app::PrintUsage(std::cout, options);
-    return 0;
-  }
-  if (!usage.empty())
-  {
-    std::cerr << "quadcover: " << usage << " (see quadcover --help)\n";
-    return 2;
-  }
-  if (!request.verbose)
-  {
-    QuietVTK();
-  }
   std::vector<Timing> timings;
   auto start = std::chrono::steady_clock::now();
+  doing = "read '" + request.input + "'";
   vtkNew<vtkQuadCoverReader> reader;
   reader->SetFileName(request.input.c_str());
   std::string error = vtkQuadCoverErrorObserver::Run(reader);
@@ -79,6 +65,7 @@ int main(int argc, char* argv[])
   }
   timings.push_back({ "read", Since(start) });
 
+  doing = "run the stages on '" + request.input + "'";
   const int last = quadcover_app::Pipeline::StageIndex(request.stage);
   const bool progress = isatty(STDERR_FILENO) != 0; // a log file gets no \r updates
   error = pipeline.Run(reader->GetOutput(), last, progress, timings);
@@ -88,6 +75,7 @@ int main(int argc, char* argv[])
   }
 
   start = std::chrono::steady_clock::now();
+  doing = "write '" + request.output + "'";
   vtkNew<vtkQuadCoverWriter> writer;
   writer->SetFileName(request.output.c_str());
   writer->SetInputConnection(pipeline.Filter(last)->GetOutputPort());
@@ -111,6 +99,7 @@ int main(int argc, char* argv[])
   }
   if (!request.stats.empty())
   {
+    doing = "write '" + request.stats + "'";
     std::ofstream out(request.stats);
     out << quadcover_app::StatsJson(request, reader->GetOutput(), pipeline, last, timings, options);
     if (!out.good())
@@ -119,4 +108,42 @@ int main(int argc, char* argv[])
     }
   }
   return 0;
+}
+}
+
+int main(int argc, char* argv[])
+{
+  quadcover_app::Pipeline pipeline;
+  const std::vector<quadcover_app::Option> options = quadcover_app::StageOptions(pipeline);
+  quadcover_app::Request request;
+  const std::string usage = quadcover_app::Parse(argc, argv, options, request);
+  if (request.help)
+  {
+    quadcover_app::PrintUsage(std::cout, options);
+    return 0;
+  }
+  if (!usage.empty())
+  {
+    std::cerr << "quadcover: " << usage << " (see quadcover --help)\n";
+    return 2;
+  }
+  if (!request.verbose)
+  {
+    QuietVTK();
+  }
+  // The filters turn their exceptions into errors; what escapes is VTK's own readers, writers
+  // and pipeline, or the --stats text: one line, not std::terminate's abort.
+  std::string doing = "start";
+  try
+  {
+    return Run(request, pipeline, options, doing);
+  }
+  catch (const std::bad_alloc&)
+  {
+    return Fail("cannot " + doing + ": out of memory");
+  }
+  catch (const std::exception& e)
+  {
+    return Fail("cannot " + doing + ": " + e.what());
+  }
 }

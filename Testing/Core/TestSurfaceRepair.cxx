@@ -226,3 +226,27 @@ TEST(MakeManifold, RefusesAMoebiusStripNamingIt)
       << e.what();
   }
 }
+
+TEST(RedundantTriangles, RepeatsAndComponentsWithoutAreaGo)
+{
+  Surface s = testSurface("sphere");
+  const int nf = static_cast<int>(s.F.rows()), nv = static_cast<int>(s.V.rows());
+  s.F.conservativeResize(nf + 3, 3);
+  s.F.row(nf) = s.F.row(5);                           // a repeat
+  s.F.row(nf + 1) << s.F(7, 0), s.F(7, 2), s.F(7, 1); // a repeat the other way round
+  s.V.conservativeResize(nv + 3, 3);
+  s.V.row(nv) << 5, 0, 0;
+  s.V.row(nv + 1) << 6, 0, 0;
+  s.V.row(nv + 2) << 7, 0, 0;
+  s.F.row(nf + 2) << nv, nv + 1, nv + 2; // a collinear triangle on its own
+  const std::vector<char> remove = redundantTriangles(s.V, s.F);
+  std::vector<int> removed;
+  for (int f = 0; f < static_cast<int>(remove.size()); ++f)
+  {
+    if (remove[f])
+    {
+      removed.push_back(f);
+    }
+  }
+  EXPECT_EQ(removed, (std::vector<int>{ nf, nf + 1, nf + 2 }));
+}
