@@ -1,5 +1,8 @@
 #include "QuadMeshing.h"
 
+#include "QuadRelaxation.h"
+#include "ScaledJacobian.h"
+
 #include <algorithm>
 #include <stdexcept>
 
@@ -24,6 +27,19 @@ QuadMeshResult buildQuadMesh(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& 
   if (options.fillHoles)
   {
     r.patch = patchQuadMesh(V, F, topo, r.mesh);
+  }
+  if (options.repairInvertedQuads && r.patch.turnedQuads > 0)
+  {
+    // quads facing against the surface (or turned inside out): their neighbourhoods relaxed
+    auto bad = [&](const QuadMesh& m) {
+      std::vector<int> list = turnedQuads(V, F, topo, m), inverted = invertedQuads(m.V, m.Q);
+      list.insert(list.end(), inverted.begin(), inverted.end());
+      std::sort(list.begin(), list.end());
+      list.erase(std::unique(list.begin(), list.end()), list.end());
+      return list;
+    };
+    repairQuads(V, F, topo, r.mesh, bad, 2, 10, 3, progress.part(0.7, 0.75));
+    r.patch.turnedQuads = static_cast<int>(turnedQuads(V, F, topo, r.mesh).size());
   }
   progress.report(0.7);
   if (options.relaxationIterations > 0)

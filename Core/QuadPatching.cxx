@@ -88,15 +88,18 @@ public:
     }
   }
 
-  /// Counts the quads that face against the surface.
-  int countTurned() const
+  /// The quads that face against the surface.
+  std::vector<int> turnedQuads() const
   {
-    int count = 0;
+    std::vector<int> list;
     for (size_t i = 0; i < quads_.size(); ++i)
     {
-      count += !removed_[i] && turned(quads_[i].corners) ? 1 : 0;
+      if (!removed_[i] && turned(quads_[i].corners))
+      {
+        list.push_back(static_cast<int>(i));
+      }
     }
-    return count;
+    return list;
   }
 
   /// Fills the holes, taking in a ring of quads around a fill that would face against the
@@ -481,9 +484,16 @@ QuadPatchResult patchQuadMesh(
   QuadPatchResult r;
   Patcher patcher(V, F, topo, q);
   patcher.fillHoles(r);
-  r.turnedQuads = patcher.countTurned();
   patcher.finish();
+  r.turnedQuads = static_cast<int>(turnedQuads(V, F, topo, q).size());
   return r;
+}
+
+std::vector<int> turnedQuads(
+  const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F, const MeshTopology& topo, const QuadMesh& q)
+{
+  QuadMesh copy = q;
+  return Patcher(V, F, topo, copy).turnedQuads();
 }
 
 }

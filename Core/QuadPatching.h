@@ -8,6 +8,8 @@
 
 #include <Eigen/Core>
 
+#include <vector>
+
 namespace quadcover
 {
 
@@ -35,6 +37,11 @@ struct QuadPatchResult
  */
 QuadPatchResult patchQuadMesh(
   const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F, const MeshTopology& topo, QuadMesh& q);
+
+/// The quads of q whose normal (the sum of its corners' cross products about its centre)
+/// opposes the normal of the surface triangle closest to its centre, in index order.
+std::vector<int> turnedQuads(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F,
+  const MeshTopology& topo, const QuadMesh& q);
 
 }
 

@@ -503,8 +503,18 @@ std::pair<int, int> repairInvertedQuads(const Eigen::MatrixX3d& V, const Eigen::
   const MeshTopology& topo, QuadMesh& mesh, int rings, int iterations, int rounds,
   const Progress& progress)
 {
+  return repairQuads(
+    V, F, topo, mesh, [](const QuadMesh& m) { return invertedQuads(m.V, m.Q); }, rings, iterations,
+    rounds, progress);
+}
+
+std::pair<int, int> repairQuads(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F,
+  const MeshTopology& topo, QuadMesh& mesh,
+  const std::function<std::vector<int>(const QuadMesh&)>& findBad, int rings, int iterations,
+  int rounds, const Progress& progress)
+{
   progress.report(0.0);
-  std::vector<int> bad = invertedQuads(mesh.V, mesh.Q);
+  std::vector<int> bad = findBad(mesh);
   const int before = static_cast<int>(bad.size());
   for (int round = 0; round < rounds && !bad.empty(); ++round)
   {
@@ -515,7 +525,7 @@ std::pair<int, int> repairInvertedQuads(const Eigen::MatrixX3d& V, const Eigen::
     const std::vector<int> keptTriangle = mesh.vertexTriangle, keptPoint = mesh.vertexPoint;
     relaxQuads(V, F, topo, mesh, options,
       progress.part(static_cast<double>(round) / rounds, static_cast<double>(round + 1) / rounds));
-    const std::vector<int> now = invertedQuads(mesh.V, mesh.Q);
+    const std::vector<int> now = findBad(mesh);
     if (now.size() > bad.size())
     {
       // the guard counts corners against two normals, measureQuads quads against one: rare

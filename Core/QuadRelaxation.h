@@ -9,6 +9,8 @@
 
 #include <Eigen/Core>
 
+#include <functional>
+
 #include <utility>
 #include <vector>
 
@@ -64,6 +66,13 @@ QuadRelaxReport relaxQuads(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F,
 std::pair<int, int> repairInvertedQuads(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F,
   const MeshTopology& topo, QuadMesh& mesh, int rings = 2, int iterations = 10, int rounds = 3,
   const Progress& progress = Progress());
+
+/// repairInvertedQuads for the quads findBad lists (a mesh's quads that are wrong in some way;
+/// a round that makes the list longer is undone).
+std::pair<int, int> repairQuads(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F,
+  const MeshTopology& topo, QuadMesh& mesh,
+  const std::function<std::vector<int>(const QuadMesh&)>& findBad, int rings, int iterations,
+  int rounds, const Progress& progress = Progress());
 
 }
 

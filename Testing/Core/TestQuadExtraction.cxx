@@ -201,6 +201,16 @@ TEST(QuadPatching, FillsHolesInsideTheSurfaceWithQuads)
   EXPECT_GT(m.minScaledJacobian, 0.0);
 }
 
+TEST(QuadPatching, FindsTheQuadsThatFaceAgainstTheSurface)
+{
+  const Chain c = runChain(testSurface("sphere"), 800);
+  QuadMesh q = extractQuads(c.s.V, c.s.F, c.topo, c.map.cornerUV);
+  EXPECT_TRUE(turnedQuads(c.s.V, c.s.F, c.topo, q).empty());
+  const Eigen::RowVector4i reversed(q.Q(9, 3), q.Q(9, 2), q.Q(9, 1), q.Q(9, 0));
+  q.Q.row(9) = reversed;
+  EXPECT_EQ(turnedQuads(c.s.V, c.s.F, c.topo, q), std::vector<int>{ 9 });
+}
+
 TEST(QuadPatching, LeavesTheSurfaceBoundaryOpen)
 {
   const Chain c = runChain(testSurface("cylinder"), 800);
