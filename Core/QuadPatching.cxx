@@ -110,9 +110,11 @@ public:
     {
       std::vector<char> grow(q_.V.rows(), 0);
       bool growing = false;
-      for (const Loop& loop : boundaryLoops())
+      const std::vector<Loop> loops = boundaryLoops();
+      const std::vector<char> fillable = disksMissing(loops);
+      for (const Loop& loop : loops)
       {
-        if (!loop.inside)
+        if (!loop.inside || !fillable[componentOf(loop)])
         {
           continue;
         }
@@ -302,6 +304,55 @@ private:
       }
     }
     return loops;
+  }
+
+  /// The surface's component a loop lies on.
+  int componentOf(const Loop& loop) const
+  {
+    return topo_.faceComponent[q_.vertexTriangle[loop.points.front()]];
+  }
+
+  /// Per component of the surface, whether its holes are all disks that went missing: its quads'
+  /// Euler characteristic plus one per hole is the component's own. (Where a band around a
+  /// torus's tube went missing, its two loops are no disks: filling them would make a sphere.)
+  std::vector<char> disksMissing(const std::vector<Loop>& loops) const
+  {
+    const int nc = topo_.numComponents();
+    std::vector<long long> chi(nc, 0);
+    std::vector<int> vertexComponent(q_.V.rows(), -1);
+    std::map<std::pair<int, int>, int> edges;
+    for (size_t i = 0; i < quads_.size(); ++i)
+    {
+      if (removed_[i] || quads_[i].triangle < 0)
+      {
+        continue;
+      }
+      const int c = topo_.faceComponent[quads_[i].triangle];
+      ++chi[c];
+      for (int k = 0; k < 4; ++k)
+      {
+        const int a = quads_[i].corners[k], b = quads_[i].corners[(k + 1) % 4];
+        if (vertexComponent[a] < 0)
+        {
+          vertexComponent[a] = c;
+          ++chi[c];
+        }
+        if (edges.emplace(std::make_pair(std::min(a, b), std::max(a, b)), c).second)
+        {
+          --chi[c];
+        }
+      }
+    }
+    for (const Loop& loop : loops)
+    {
+      chi[componentOf(loop)] += loop.inside ? 1 : 0;
+    }
+    std::vector<char> fillable(nc, 0);
+    for (int c = 0; c < nc; ++c)
+    {
+      fillable[c] = chi[c] == topo_.components[c].eulerCharacteristic ? 1 : 0;
+    }
+    return fillable;
   }
 
   /// Splits a closed loop that passes points more than once into simple loops (each filled on

@@ -18,14 +18,16 @@ struct QuadPatchResult
 {
   int turnedQuads = 0; ///< quads facing against the surface triangle closest to their centre
   int holesFilled = 0; ///< holes inside the surface filled with quads
-  int holesLeft = 0;   ///< holes it could not fill (odd or pinched loops, or every fill turned)
+  int holesLeft = 0;   ///< holes left open: odd loops, or a component whose holes are no disks
   int quadsAdded = 0;
 };
 
 /**
  * Where the map could not be repaired, the quad mesh can have holes (grid cells that gave no
  * quad). This fills every hole whose boundary loop lies inside the surface (none of its points
- * on the surface's boundary), is simple and has an even number of edges: four edges with one
+ * on the surface's boundary) and has an even number of edges (a loop through a point twice is
+ * split there), on components whose holes are all missing disks (their quads' Euler
+ * characteristic plus one per hole is the component's): four edges with one
  * quad, more with a fan of quads around a new point on the surface (of the two fans, the one
  * with the better corners), so that the mesh keeps all quads, its manifold orientation and the
  * surface's Euler characteristic. A fill that would face against the surface first takes in

@@ -196,7 +196,7 @@ void vtkQuadExtractor::Execute(vtkQuadCoverSurface& in, vtkInformationVector* ou
   if (r.patch.holesLeft > 0)
   {
     this->Warn(std::to_string(r.patch.holesLeft) +
-      " holes inside the surface are left open (their loops are odd or pinched)");
+      " holes inside the surface are left open (odd or pinched loops, or a band around a handle)");
   }
   if (quads.Q.rows() == 0)
   {
