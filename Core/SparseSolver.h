@@ -9,14 +9,62 @@
 #include <Eigen/SparseCholesky>
 
 #ifdef QUADCOVER_HAVE_CHOLMOD
+#include "BlasThreads.h"
+
 #include <Eigen/CholmodSupport>
 #endif
 
 namespace quadcover
 {
 #ifdef QUADCOVER_HAVE_CHOLMOD
+/**
+ * Eigen's CholmodSupernodalLLT with the BLAS on one thread wherever CHOLMOD calls it (the
+ * numeric factorization and the solves; the analysis uses no BLAS), so that the result does not
+ * depend on the BLAS thread count (BlasThreads.h). compute() and solve() are used as Eigen's;
+ * the solves run when the solve() expression is assigned, which calls _solve_impl below.
+ */
+template<typename MatrixType>
+class CholmodLLT : public Eigen::CholmodBase<MatrixType, Eigen::Lower, CholmodLLT<MatrixType>>
+{
+  using Base = Eigen::CholmodBase<MatrixType, Eigen::Lower, CholmodLLT<MatrixType>>;
+
+public:
+  CholmodLLT()
+  {
+    this->m_cholmod.final_asis = 1;
+    this->m_cholmod.supernodal = CHOLMOD_SUPERNODAL;
+  }
+
+  CholmodLLT& compute(const MatrixType& matrix)
+  {
+    this->analyzePattern(matrix);
+    this->factorize(matrix);
+    return *this;
+  }
+
+  void factorize(const MatrixType& matrix)
+  {
+    const OneBlasThread one;
+    Base::factorize(matrix);
+  }
+
+  template<typename Rhs, typename Dest>
+  void _solve_impl(const Eigen::MatrixBase<Rhs>& b, Eigen::MatrixBase<Dest>& dest) const
+  {
+    const OneBlasThread one;
+    Base::_solve_impl(b, dest);
+  }
+
+  template<typename Rhs, typename Dest>
+  void _solve_impl(const Eigen::SparseMatrixBase<Rhs>& b, Eigen::SparseMatrixBase<Dest>& dest) const
+  {
+    const OneBlasThread one;
+    Base::_solve_impl(b, dest);
+  }
+};
+
 template<typename Scalar>
-using SpdSolver = Eigen::CholmodSupernodalLLT<Eigen::SparseMatrix<Scalar>>;
+using SpdSolver = CholmodLLT<Eigen::SparseMatrix<Scalar>>;
 #else
 template<typename Scalar>
 using SpdSolver = Eigen::SimplicialLDLT<Eigen::SparseMatrix<Scalar>>;

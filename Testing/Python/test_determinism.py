@@ -1,0 +1,175 @@
+"""The same input gives the same output whatever the thread counts.
+
+Runs the command line on a few surfaces with OPENBLAS_NUM_THREADS and OMP_NUM_THREADS 1 and 2
+(the BLAS under CHOLMOD, CHOLMOD's own OpenMP) and --number-of-threads 1, 2 and 0 (the curvature
+stage's workers), writes .vtp, and requires every array of every output to be byte-identical to
+the first run's: the XML (every attribute but the byte offsets into the appended data) and the
+bytes of each array. The one exception is SolveSeconds, wall-clock time by definition
+(Documentation/Arrays.md); that it exists and has the same shape is still checked.
+
+Needs QUADCOVER_CLI (the binary) and QUADCOVER_DATA (Data/); QUADCOVER_SHARED_DATA is optional
+(spot.obj is skipped with a message when absent).
+"""
+import base64
+import os
+import struct
+import subprocess
+import tempfile
+import unittest
+import xml.etree.ElementTree as ET
+import zlib
+
+import vtk
+from vtk.util.numpy_support import vtk_to_numpy
+
+CLI = os.environ["QUADCOVER_CLI"]
+DATA = os.environ["QUADCOVER_DATA"]
+SHARED = os.environ.get("QUADCOVER_SHARED_DATA", "")
+
+# Field arrays that hold wall-clock seconds: their values differ from run to run.
+TIMING_ARRAYS = {"SolveSeconds"}
+
+# (OPENBLAS_NUM_THREADS and OMP_NUM_THREADS, --number-of-threads); the first is the reference.
+RUNS = [(1, 1), (1, 2), (1, 0), (2, 1), (2, 2), (2, 0)]
+
+
+def b64_length(n):
+    """Characters of base64 text for n bytes."""
+    return 4 * ((n + 2) // 3)
+
+
+def read_vtp(path):
+    """{element path: (attributes without the offset, bytes)} of a VTK XML file in appended
+    base64 mode, zlib-compressed, as vtkQuadCoverWriter writes .vtp."""
+    with open(path, "rb") as f:
+        text = f.read()
+    start = text.index(b"<AppendedData")
+    blob_start = text.index(b"_", start) + 1
+    blob = text[blob_start:text.index(b"</AppendedData>", blob_start)].rstrip()
+    root = ET.fromstring(text[:start] + b"</VTKFile>")
+    uint = {"UInt32": ("I", 4), "UInt64": ("Q", 8)}[root.get("header_type", "UInt32")]
+    if root.get("compressor") != "vtkZLibDataCompressor":  # what vtkQuadCoverWriter writes
+        raise ValueError("%s: compressor %s" % (path, root.get("compressor")))
+
+    def decode(offset):
+        # The header (block count, block size, last block size, compressed sizes), then the
+        # compressed blocks, each encoded on its own.
+        first = base64.b64decode(blob[offset:offset + b64_length(uint[1])])
+        blocks = struct.unpack("<" + uint[0], first[:uint[1]])[0]
+        header_bytes = (3 + blocks) * uint[1]
+        header = base64.b64decode(blob[offset:offset + b64_length(header_bytes)])
+        sizes = struct.unpack("<%d%s" % (blocks, uint[0]), header[3 * uint[1]:header_bytes])
+        offset += b64_length(header_bytes)
+        data = base64.b64decode(blob[offset:offset + b64_length(sum(sizes))])
+        out, at = [], 0
+        for size in sizes:
+            out.append(zlib.decompress(data[at:at + size]))
+            at += size
+        return b"".join(out)
+
+    arrays = {}
+
+    def walk(element, where):
+        for index, child in enumerate(element):
+            name = child.get("Name")
+            key = "%s/%s[%d]%s" % (where, child.tag, index, ":" + name if name else "")
+            attributes = {k: v for k, v in child.attrib.items() if k != "offset"}
+            if child.tag == "DataArray":
+                appended = child.get("format") == "appended"
+                raw = decode(int(child.get("offset"))) if appended else (child.text or "").encode()
+                arrays[key] = (attributes, raw)
+            else:
+                arrays[key] = (attributes, b"")
+                walk(child, key)
+
+    arrays["VTKFile"] = ({k: v for k, v in root.attrib.items()}, b"")
+    walk(root, "")
+    return arrays
+
+
+def differences(reference, other):
+    """The array paths whose attributes or bytes differ (timing arrays: only their shape)."""
+    out = []
+    for key in sorted(set(reference) | set(other)):
+        if key not in reference or key not in other:
+            out.append(key + " (missing in one)")
+            continue
+        (ra, rb), (oa, ob) = reference[key], other[key]
+        if ra.get("Name") in TIMING_ARRAYS:
+            shape = lambda a: {k: v for k, v in a.items() if k not in ("RangeMin", "RangeMax")}
+            if shape(ra) != shape(oa) or len(rb) != len(ob):
+                out.append(key + " (shape)")
+        elif ra != oa or rb != ob:
+            out.append(key)
+    return out
+
+
+class Determinism(unittest.TestCase):
+    def setUp(self):
+        self.tmp = tempfile.TemporaryDirectory()
+
+    def tearDown(self):
+        self.tmp.cleanup()
+
+    def run_cli(self, surface, blas, threads):
+        out = os.path.join(self.tmp.name, "%s-blas%d-threads%d.vtp" % (
+            os.path.splitext(os.path.basename(surface))[0], blas, threads))
+        env = dict(os.environ, OPENBLAS_NUM_THREADS=str(blas), OMP_NUM_THREADS=str(blas))
+        # --number-of-threads 0 means all cores unless this says otherwise.
+        env.pop("QUADCOVER_NUM_THREADS", None)
+        env.pop("GOTO_NUM_THREADS", None)
+        p = subprocess.run([CLI, surface, "-o", out, "--number-of-threads", str(threads)],
+                           capture_output=True, text=True, env=env, timeout=600)
+        self.assertEqual(p.returncode, 0, p.stderr)
+        return out
+
+    def check_surface(self, surface):
+        reference = None
+        for blas, threads in RUNS:
+            contents = read_vtp(self.run_cli(surface, blas, threads))
+            if reference is None:
+                reference = contents
+                self.assertTrue(any(k.endswith(":Points") for k in contents), "no points read")
+                continue
+            with self.subTest(blas=blas, threads=threads):
+                self.assertEqual(differences(reference, contents), [],
+                                 "%s: OPENBLAS/OMP_NUM_THREADS=%d --number-of-threads %d differs "
+                                 "from OPENBLAS/OMP_NUM_THREADS=1 --number-of-threads 1"
+                                 % (os.path.basename(surface), blas, threads))
+
+    def test_knot(self):
+        self.check_surface(os.path.join(DATA, "knot.obj"))
+
+    def test_torus(self):
+        self.check_surface(os.path.join(DATA, "torus.obj"))
+
+    def test_spot(self):
+        spot = os.path.join(SHARED, "spot.obj") if SHARED else ""
+        if not spot or not os.path.exists(spot):
+            self.skipTest("no shared spot.obj (QUADCOVER_SHARED_DATA=%s)" % SHARED)
+        self.check_surface(spot)
+
+    def test_reader_sees_differences(self):
+        """The comparison itself: a changed coordinate is seen, a changed timing is not."""
+        out = self.run_cli(os.path.join(DATA, "torus.obj"), 1, 1)
+        reference = read_vtp(out)
+        points = next(k for k in reference if k.endswith(":Points"))
+        changed = dict(reference)
+        attributes, raw_points = reference[points]
+        changed[points] = (attributes, bytes([raw_points[0] ^ 1]) + raw_points[1:])
+        self.assertEqual(differences(reference, changed), [points])
+        timing = next(k for k in reference if k.endswith(":SolveSeconds"))
+        attributes, raw = reference[timing]
+        changed = dict(reference)
+        changed[timing] = (dict(attributes, RangeMin="12345"), bytes(len(raw)))
+        self.assertEqual(differences(reference, changed), [])
+        # The decoded points are what VTK's own reader reads.
+        reader = vtk.vtkXMLPolyDataReader()
+        reader.SetFileName(out)
+        reader.Update()
+        read = vtk_to_numpy(reader.GetOutput().GetPoints().GetData())
+        self.assertEqual(read.tobytes(), raw_points)
+
+
+if __name__ == "__main__":
+    unittest.main(verbosity=2)
