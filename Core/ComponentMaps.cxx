@@ -85,7 +85,8 @@ ParameterizationOptions componentOptions(
   return own;
 }
 
-/// Adds the map of component `part` to out (per face, per sector, the cut per edge, figures).
+/// Adds the map of component `part` to out (per face, per sector but sectorUV, the cut per edge,
+/// figures).
 void addComponent(const Inputs& in, const Component& part, const MeshTopology& topo,
   const Parameterization& map, Parameterization& out)
 {
@@ -111,8 +112,6 @@ void addComponent(const Inputs& in, const Component& part, const MeshTopology& t
   {
     out.sectorPoint.push_back(part.points[p]);
   }
-  out.sectorUV.conservativeResize(out.sectorPoint.size(), 2);
-  out.sectorUV.bottomRows(map.sectorUV.rows()) = map.sectorUV;
   out.cut.numCutEdges += map.cut.numCutEdges;
   out.cut.cutEuler.insert(out.cut.cutEuler.end(), map.cut.cutEuler.begin(), map.cut.cutEuler.end());
   out.branchPoints += map.branchPoints;
@@ -153,7 +152,7 @@ Parameterization mapEachComponent(const Inputs& in, const Progress& progress)
   out.cornerSector.assign(3 * static_cast<size_t>(in.numFaces()), -1);
   out.cut.onCut.assign(in.topo.numEdges(), 0);
   out.cut.copies.assign(in.numVertices(), 0);
-  out.sectorUV.resize(0, 2);
+  std::vector<Eigen::MatrixX2d> sectorUV; // per component, put together once at the end
   double done = 0.0;
   for (const Component& part : parts)
   {
@@ -165,6 +164,7 @@ Parameterization mapEachComponent(const Inputs& in, const Progress& progress)
       part.frameU, part.matching, options, progress.part(done, done + share));
     done += share;
     addComponent(in, part, topo, map, out);
+    sectorUV.push_back(map.sectorUV);
     // energies are per unit area: the whole surface's is the area-weighted mean
     const double weight = part.area / totalArea;
     out.energyContinuous += weight * map.energyContinuous;
@@ -175,6 +175,13 @@ Parameterization mapEachComponent(const Inputs& in, const Progress& progress)
       largest = part.area;
       out.edgeLength = map.edgeLength;
     }
+  }
+  out.sectorUV.resize(static_cast<Eigen::Index>(out.sectorPoint.size()), 2);
+  Eigen::Index row = 0;
+  for (const Eigen::MatrixX2d& uv : sectorUV)
+  {
+    out.sectorUV.middleRows(row, uv.rows()) = uv;
+    row += uv.rows();
   }
   progress.report(1.0);
   return out;

@@ -28,7 +28,7 @@ QuadMeshResult buildQuadMesh(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& 
   {
     r.patch = patchQuadMesh(V, F, topo, r.mesh);
   }
-  if (options.repairInvertedQuads && r.patch.turnedQuads > 0)
+  if (options.repairInvertedQuads && !turnedQuads(V, F, topo, r.mesh).empty())
   {
     // quads facing against the surface (or turned inside out): their neighbourhoods relaxed
     auto bad = [&](const QuadMesh& m) {
@@ -39,15 +39,15 @@ QuadMeshResult buildQuadMesh(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& 
       return list;
     };
     repairQuads(V, F, topo, r.mesh, bad, 2, 10, 3, progress.part(0.7, 0.75));
-    r.patch.turnedQuads = static_cast<int>(turnedQuads(V, F, topo, r.mesh).size());
   }
-  progress.report(0.7);
+  progress.report(0.75);
   if (options.relaxationIterations > 0)
   {
     QuadRelaxOptions relax;
     relax.relaxationIterations = options.relaxationIterations;
-    relaxQuads(V, F, topo, r.mesh, relax, progress.part(0.7, 0.95));
+    relaxQuads(V, F, topo, r.mesh, relax, progress.part(0.75, 0.95));
   }
+  r.patch.turnedQuads = static_cast<int>(turnedQuads(V, F, topo, r.mesh).size());
   r.quality = measureQuads(r.mesh.V, r.mesh.Q);
   for (Eigen::Index i = 0; i < r.quality.scaledJacobian.size(); ++i)
   {

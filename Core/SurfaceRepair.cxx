@@ -68,7 +68,8 @@ EdgeGroups groupEdges(const Eigen::MatrixX3i& F)
  * Pairs the n > 2 triangles around one edge (a, b), a < b. Around the edge's axis d = b - a a
  * triangle running a -> b has its normal on the side of positive rotation, so the solid it bounds
  * lies on the side of negative rotation: its partner is its neighbour that way, if that one runs
- * b -> a (agrees in orientation). Two triangles left over are paired with each other (an
+ * b -> a (agrees in orientation). A triangle of zero area has no side: it only counts among the
+ * left over. Two triangles left over are paired with each other (an
  * orientation that disagrees is put right afterwards).
  */
 void pairAroundEdge(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F, const int* corners, int n,
@@ -84,6 +85,7 @@ void pairAroundEdge(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F, const 
     bool forward; // runs a -> b
   };
   std::vector<Sheet> sheets;
+  std::vector<int> flat; // zero-area triangles
   Eigen::Vector3d e1 = Eigen::Vector3d::Zero();
   for (int i = 0; i < n; ++i)
   {
@@ -94,9 +96,15 @@ void pairAroundEdge(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F, const 
     {
       e1 = across.normalized();
     }
+    if (across.squaredNorm() == 0.0)
+    {
+      flat.push_back(c); // no direction around the edge: only paired with what is left over
+      continue;
+    }
     const Eigen::Vector3d e2 = d.cross(e1);
     sheets.push_back({ std::atan2(across.dot(e2), across.dot(e1)), c, tail(F, c) == a });
   }
+  n = static_cast<int>(sheets.size()); // from here on, the triangles with a side
   std::sort(sheets.begin(), sheets.end(), [](const Sheet& x, const Sheet& y) {
     return x.angle != y.angle ? x.angle < y.angle : x.corner < y.corner;
   });
@@ -118,6 +126,7 @@ void pairAroundEdge(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F, const 
       left.push_back(sheets[i].corner);
     }
   }
+  left.insert(left.end(), flat.begin(), flat.end());
   if (left.size() == 2)
   {
     glue.push_back({ left[0], left[1] });
@@ -149,12 +158,14 @@ std::vector<Glue> glueEdges(
 
 /**
  * Which triangles to reverse so that glued neighbours agree: a walk over the glue, per component
- * (numbered in order of their lowest triangle) the side with more area keeping its orientation.
+ * (numbered in order of their lowest triangle) the side with more area keeping the input's
+ * orientation.
+ * @param[in]  turned   #F, 1 for a triangle already reversed against the input
  * @param[out] conflict the first component that cannot be oriented (0-based), -1 if none
  * @param[out] components the number of components
  */
 std::vector<char> orientation(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F,
-  const std::vector<Glue>& glue, int& conflict, int& components)
+  const std::vector<Glue>& glue, const std::vector<char>& turned, int& conflict, int& components)
 {
   const int nf = static_cast<int>(F.rows());
   // adjacency as CSR: for each face, (neighbour, 1 if the two run the edge the same way)
@@ -196,7 +207,7 @@ std::vector<char> orientation(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i&
       const Eigen::Vector3d p = V.row(F(f, 0)).transpose();
       const double area =
         (V.row(F(f, 1)).transpose() - p).cross(V.row(F(f, 2)).transpose() - p).norm();
-      (reverse[f] ? areaReversed : areaKept) += area;
+      (reverse[f] != turned[f] ? areaReversed : areaKept) += area;
       for (int i = offsets[f]; i < offsets[f + 1]; ++i)
       {
         const int g = adjacent[i].first;
@@ -290,8 +301,13 @@ void makeManifoldOnce(Eigen::MatrixX3d& V, Eigen::MatrixX3i& F, ManifoldRepair& 
   int conflict = -1, components = 0;
   // 1. patches oriented first, so that the pairing around cut edges can go by orientation
   const std::vector<char> first =
-    orientation(V, F, glueEdges(V, F, false, nullptr), conflict, components);
+    orientation(V, F, glueEdges(V, F, false, nullptr), reversed, conflict, components);
   reverseFaces(F, first);
+  std::vector<char> turned = reversed;
+  for (size_t f = 0; f < turned.size(); ++f)
+  {
+    turned[f] ^= first[f];
+  }
   // 2., 3. the edges cut apart, the points split into their fans
   const std::vector<Glue> glue = glueEdges(V, F, true, &cutEdges);
   const int old = static_cast<int>(V.rows()) - static_cast<int>(repair.copies.size());
@@ -300,7 +316,7 @@ void makeManifoldOnce(Eigen::MatrixX3d& V, Eigen::MatrixX3i& F, ManifoldRepair& 
     repair.copies.push_back(p < old ? p : repair.copies[p - old]); // a copy of a copy
   }
   // 4. each component oriented as a whole
-  const std::vector<char> second = orientation(V, F, glue, conflict, components);
+  const std::vector<char> second = orientation(V, F, glue, turned, conflict, components);
   if (conflict >= 0)
   {
     throw std::invalid_argument("component " + std::to_string(conflict + 1) + " of " +

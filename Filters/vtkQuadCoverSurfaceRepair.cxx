@@ -85,11 +85,30 @@ vtkIdType RemoveRedundantTriangles(vtkPolyData* surface)
   }
   if (removed > 0)
   {
-    vtkNew<vtkPolyData> copy;
-    copy->GetFieldData()->ShallowCopy(surface->GetFieldData());
-    copy->AllocateExact(kept->GetNumberOfIds(), 3 * kept->GetNumberOfIds());
-    copy->CopyCells(surface, kept);
-    surface->ShallowCopy(copy);
+    // the kept triangles with their cell data, then the points no triangle uses dropped (the
+    // points keep their precision and their data)
+    vtkNew<vtkCellArray> polys;
+    polys->AllocateExact(kept->GetNumberOfIds(), 3 * kept->GetNumberOfIds());
+    vtkNew<vtkCellData> cellData;
+    cellData->CopyAllocate(surface->GetCellData(), kept->GetNumberOfIds());
+    vtkNew<vtkIdList> ids;
+    for (vtkIdType i = 0; i < kept->GetNumberOfIds(); ++i)
+    {
+      surface->GetPolys()->GetCellAtId(kept->GetId(i), ids);
+      polys->InsertNextCell(ids);
+      cellData->CopyData(surface->GetCellData(), kept->GetId(i), i);
+    }
+    vtkNew<vtkPolyData> fewer;
+    fewer->ShallowCopy(surface);
+    fewer->SetPolys(polys);
+    fewer->GetCellData()->ShallowCopy(cellData);
+    vtkNew<vtkCleanPolyData> unused;
+    unused->PointMergingOff();
+    unused->ConvertPolysToLinesOff();
+    unused->ConvertLinesToPointsOff();
+    unused->ConvertStripsToPolysOff();
+    Run(unused.Get(), fewer);
+    surface->ShallowCopy(unused->GetOutput());
   }
   return removed;
 }

@@ -164,6 +164,29 @@ TEST(MakeManifold, AFinIsCutOffTheBox)
   EXPECT_NEAR(signedVolume(s, 12), 1.0, 1e-12) << "the box still faces outwards";
 }
 
+TEST(MakeManifold, AZeroAreaSliverOnAnEdgeDoesNotStealItsPair)
+{
+  // a collinear triangle on the box's edge (0,0,1)-(1,0,1), listed before the box
+  Surface box;
+  appendBox(box, 0, 0, 0);
+  Surface s;
+  s.V.resize(3, 3);
+  s.V << 0, 0, 1, 1, 0, 1, 2, 0, 1;
+  s.F.resize(1, 3);
+  s.F << 0, 1, 2;
+  const int base = 3;
+  s.V.conservativeResize(base + 8, 3);
+  s.V.bottomRows(8) = box.V;
+  s.F.conservativeResize(13, 3);
+  s.F.bottomRows(12) = box.F.array() + base;
+  weld(s);
+  const ManifoldRepair r = makeManifold(s.V, s.F);
+  EXPECT_EQ(r.cutEdges, 1);
+  const MeshTopology T = buildTopology(s.F, static_cast<int>(s.V.rows()));
+  EXPECT_TRUE(T.nonManifoldEdges.empty());
+  EXPECT_NEAR(signedVolume(s), 1.0, 1e-12) << "the box closed and facing outwards";
+}
+
 TEST(MakeManifold, ThreePagesOfABookBecomeASheetAndAPage)
 {
   Surface s;

@@ -238,6 +238,46 @@ TEST(vtkQuadCoverSurfaceRepair, CutsANonManifoldEdgeApartWithThePointData)
   EXPECT_EQ(h->GetTuple1(5) + h->GetTuple1(6), 7.0 + 8.0) << "the copies of 0 and 1 carry theirs";
 }
 
+TEST(vtkQuadCoverSurfaceRepair, RemovesARepeatedTriangleKeepingTheData)
+{
+  // an octahedron in double precision, one triangle listed twice, a point and a cell array
+  const double x = 1.0 + 1e-12; // not a float
+  vtkSmartPointer<vtkPolyData> in =
+    Make({ { x, 0, 0 }, { -1, 0, 0 }, { 0, 1, 0 }, { 0, -1, 0 }, { 0, 0, 1 }, { 0, 0, -1 } },
+      { { 0, 2, 4 }, { 2, 1, 4 }, { 1, 3, 4 }, { 3, 0, 4 }, { 2, 0, 5 }, { 1, 2, 5 }, { 3, 1, 5 },
+        { 0, 3, 5 }, { 0, 2, 4 } });
+  vtkNew<vtkPoints> precise;
+  precise->SetDataTypeToDouble();
+  precise->DeepCopy(in->GetPoints());
+  precise->SetPoint(0, x, 0, 0);
+  in->SetPoints(precise);
+  vtkNew<vtkDoubleArray> height, tag;
+  height->SetName("Height");
+  tag->SetName("Tag");
+  for (int p = 0; p < 6; ++p)
+  {
+    height->InsertNextValue(10 + p);
+  }
+  for (int c = 0; c < 9; ++c)
+  {
+    tag->InsertNextValue(c);
+  }
+  in->GetPointData()->AddArray(height);
+  in->GetCellData()->AddArray(tag);
+  const Repaired r = Repair(in);
+  ASSERT_EQ(r.error, "");
+  EXPECT_EQ(r.Count(names::RemovedCells), 1);
+  ASSERT_EQ(r.output->GetNumberOfPolys(), 8);
+  ASSERT_NE(r.output->GetPointData()->GetArray("Height"), nullptr);
+  ASSERT_NE(r.output->GetCellData()->GetArray("Tag"), nullptr);
+  EXPECT_EQ(r.output->GetCellData()->GetArray("Tag")->GetTuple1(7), 7.0) << "the first eight";
+  double p0[3];
+  r.output->GetPoint(0, p0);
+  EXPECT_EQ(p0[0], x) << "double precision kept";
+  EXPECT_EQ(r.output->GetPointData()->GetArray("Height")->GetTuple1(0), 10.0);
+  EXPECT_EQ(Topology(r.output).eulerCharacteristic(), 2);
+}
+
 TEST(vtkQuadCoverSurfaceRepair, RefusesWhatItCannotRepair)
 {
   const double nan = std::numeric_limits<double>::quiet_NaN();
