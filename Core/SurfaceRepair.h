@@ -31,7 +31,9 @@ struct ManifoldRepair
 };
 
 /**
- * Makes a triangle mesh (no triangle repeats a point) manifold and consistently oriented:
+ * Makes a triangle mesh manifold and consistently oriented. The mesh must have no triangle that
+ * repeats a point and no repeated triangle (redundantTriangles; a repeat facing the same way would
+ * read as a Moebius strip):
  * 1. each patch of triangles joined through edges with exactly two triangles is oriented so that
  *    most of its area keeps the input's orientation;
  * 2. the triangles around an edge with more than two are paired: each with its nearest neighbour
