@@ -211,6 +211,10 @@ private:
   /// Whether quad vertex v lies on a boundary edge of the surface.
   bool onSurfaceBoundary(int v) const
   {
+    if (q_.vertexPoint[v] >= 0)
+    {
+      return topo_.boundaryVertex[q_.vertexPoint[v]] != 0; // on a point of the surface
+    }
     const int t = q_.vertexTriangle[v];
     if (t < 0)
     {

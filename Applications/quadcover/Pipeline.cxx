@@ -12,6 +12,8 @@
 #include <cstdio>
 #include <iostream>
 #include <new>
+#include <numeric>
+#include <vector>
 
 namespace quadcover_app
 {
@@ -36,6 +38,39 @@ double SurfaceArea(vtkPolyData* surface)
     }
   }
   return area;
+}
+
+/// The number of connected components of the surface's polygons (joined through shared points).
+long long ComponentCount(vtkPolyData* surface)
+{
+  std::vector<vtkIdType> parent(surface->GetNumberOfPoints());
+  std::iota(parent.begin(), parent.end(), 0);
+  auto root = [&](vtkIdType x) {
+    while (parent[x] != x)
+    {
+      x = parent[x] = parent[parent[x]];
+    }
+    return x;
+  };
+  std::vector<char> used(parent.size(), 0);
+  vtkCellArray* polys = surface->GetPolys();
+  vtkIdType n = 0;
+  const vtkIdType* ids = nullptr;
+  for (polys->InitTraversal(); polys->GetNextCell(n, ids);)
+  {
+    for (vtkIdType k = 0; k < n; ++k)
+    {
+      used[ids[k]] = 1;
+      const vtkIdType a = root(ids[0]), b = root(ids[k]);
+      parent[std::max(a, b)] = std::min(a, b);
+    }
+  }
+  long long count = 0;
+  for (vtkIdType p = 0; p < static_cast<vtkIdType>(parent.size()); ++p)
+  {
+    count += used[p] && root(p) == p ? 1 : 0;
+  }
+  return count;
 }
 
 /// "Cannot ...: std::bad_alloc." (a filter's message for the exception, by its what()) as
@@ -117,8 +152,11 @@ std::string Pipeline::CheckQuadCount() const
   vtkPolyData* surface = this->Repair->GetOutput();
   const long long triangles = surface->GetNumberOfPolys();
   const double length = this->Solver->GetTargetEdgeLength();
-  const double quads = length > 0.0 ? SurfaceArea(surface) / (length * length)
-                                    : static_cast<double>(this->Solver->GetTargetQuadCount());
+  // each component's minimum comes on top of its share, at most
+  const double quads = (length > 0.0 ? SurfaceArea(surface) / (length * length)
+                                     : static_cast<double>(this->Solver->GetTargetQuadCount())) +
+    static_cast<double>(this->Solver->GetMinimumComponentQuadCount()) *
+      static_cast<double>(ComponentCount(surface));
   const double most = MaximumQuadCount(triangles);
   if (!(quads > most)) // NaN (a zero-area surface) is for the solver to refuse
   {
@@ -126,10 +164,11 @@ std::string Pipeline::CheckQuadCount() const
   }
   char asked[96];
   if (length > 0.0)
-    std::snprintf(asked, sizeof asked, "--target-edge-length %g gives about %.3g quads, which is",
+    std::snprintf(asked, sizeof asked, "--target-edge-length %g gives up to %.3g quads, which is",
       length, quads);
   else
-    std::snprintf(asked, sizeof asked, "--target-quad-count %.0f is", quads);
+    std::snprintf(asked, sizeof asked, "--target-quad-count %d gives up to %.3g quads, which is",
+      this->Solver->GetTargetQuadCount(), quads);
   char text[320];
   std::snprintf(text, sizeof text,
     "%s too many for this surface (about %.0f GB of memory); at most %.0f quads are taken "
