@@ -293,30 +293,22 @@ std::vector<int> splitFans(Eigen::MatrixX3d& V, Eigen::MatrixX3i& F, const std::
   }
   return copies;
 }
+}
 
-/// One pass of makeManifold (its steps 1 to 4); adds to repair.
-void makeManifoldOnce(Eigen::MatrixX3d& V, Eigen::MatrixX3i& F, ManifoldRepair& repair,
-  std::vector<char>& reversed, int& cutEdges)
+ManifoldRepair makeManifold(Eigen::MatrixX3d& V, Eigen::MatrixX3i& F)
 {
+  ManifoldRepair repair;
   int conflict = -1, components = 0;
   // 1. patches oriented first, so that the pairing around cut edges can go by orientation
-  const std::vector<char> first =
-    orientation(V, F, glueEdges(V, F, false, nullptr), reversed, conflict, components);
+  const std::vector<char> first = orientation(
+    V, F, glueEdges(V, F, false, nullptr), std::vector<char>(F.rows(), 0), conflict, components);
   reverseFaces(F, first);
-  std::vector<char> turned = reversed;
-  for (size_t f = 0; f < turned.size(); ++f)
-  {
-    turned[f] ^= first[f];
-  }
-  // 2., 3. the edges cut apart, the points split into their fans
-  const std::vector<Glue> glue = glueEdges(V, F, true, &cutEdges);
-  const int old = static_cast<int>(V.rows()) - static_cast<int>(repair.copies.size());
-  for (const int p : splitFans(V, F, glue))
-  {
-    repair.copies.push_back(p < old ? p : repair.copies[p - old]); // a copy of a copy
-  }
-  // 4. each component oriented as a whole
-  const std::vector<char> second = orientation(V, F, glue, turned, conflict, components);
+  // 2., 3. the edges cut apart, the points split into their fans (a cut edge whose sheets meet
+  // again around both its points keeps more than two triangles: the caller checks and refuses)
+  const std::vector<Glue> glue = glueEdges(V, F, true, &repair.cutEdges);
+  repair.copies = splitFans(V, F, glue);
+  // 4. each component oriented as a whole, against the input's orientation
+  const std::vector<char> second = orientation(V, F, glue, first, conflict, components);
   if (conflict >= 0)
   {
     throw std::invalid_argument("component " + std::to_string(conflict + 1) + " of " +
@@ -324,32 +316,9 @@ void makeManifoldOnce(Eigen::MatrixX3d& V, Eigen::MatrixX3i& F, ManifoldRepair& 
       " is not orientable (like a Moebius strip); QuadCover needs an orientable surface");
   }
   reverseFaces(F, second);
-  for (size_t f = 0; f < reversed.size(); ++f)
-  {
-    reversed[f] ^= first[f] ^ second[f];
-  }
-}
-}
-
-ManifoldRepair makeManifold(Eigen::MatrixX3d& V, Eigen::MatrixX3i& F)
-{
-  ManifoldRepair repair;
-  std::vector<char> reversed(F.rows(), 0);
-  // A cut edge whose sheets meet again around both its points keeps more than two triangles
-  // after one pass; the next pass cuts what is left.
-  for (int pass = 0; pass < 4; ++pass)
-  {
-    int cut = 0;
-    makeManifoldOnce(V, F, repair, reversed, cut);
-    repair.cutEdges += pass == 0 ? cut : 0;
-    if (cut == 0)
-    {
-      break;
-    }
-  }
   for (int f = 0; f < static_cast<int>(F.rows()); ++f)
   {
-    if (reversed[f])
+    if (first[f] != second[f])
     {
       repair.reversed.push_back(f);
     }
