@@ -47,7 +47,7 @@ QuadMeshResult buildQuadMesh(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& 
     relax.relaxationIterations = options.relaxationIterations;
     relaxQuads(V, F, topo, r.mesh, relax, progress.part(0.75, 0.95));
   }
-  r.patch.turnedQuads = static_cast<int>(turnedQuads(V, F, topo, r.mesh).size());
+  r.turnedQuads = static_cast<int>(turnedQuads(V, F, topo, r.mesh).size());
   r.quality = measureQuads(r.mesh.V, r.mesh.Q);
   for (Eigen::Index i = 0; i < r.quality.scaledJacobian.size(); ++i)
   {

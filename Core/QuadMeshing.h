@@ -39,6 +39,7 @@ struct QuadMeshResult
   int invertedExtracted = 0; ///< quads with a corner turned inside out as extracted
   int invertedFinal = 0;     ///< and in the final mesh
   QuadPatchResult patch;     ///< what patchQuadMesh did
+  int turnedQuads = 0;       ///< turnedQuads of the final mesh
   int droppedCells() const
   {
     return mesh.cellsOffSurface + mesh.cellsDegenerate + mesh.cellsConflicting;

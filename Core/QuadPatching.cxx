@@ -540,7 +540,6 @@ QuadPatchResult patchQuadMesh(
   Patcher patcher(V, F, topo, q);
   patcher.fillHoles(r);
   patcher.finish();
-  r.turnedQuads = static_cast<int>(turnedQuads(V, F, topo, q).size());
   return r;
 }
 

@@ -16,7 +16,6 @@ namespace quadcover
 /// What patchQuadMesh did.
 struct QuadPatchResult
 {
-  int turnedQuads = 0; ///< quads facing against the surface triangle closest to their centre
   int holesFilled = 0; ///< holes inside the surface filled with quads
   int holesLeft = 0;   ///< holes left open: odd loops, or a component whose holes are no disks
   int quadsAdded = 0;
@@ -31,9 +30,9 @@ struct QuadPatchResult
  * quad, more with a fan of quads around a new point on the surface (of the two fans, the one
  * with the better corners), so that the mesh keeps all quads, its manifold orientation and the
  * surface's Euler characteristic. A fill that would face against the surface first takes in
- * another ring of quads, up to three times. Then it counts the quads that face against the
- * surface (cutting them out and filling their hole measured worse: the fill of a region the map
- * folded over is far from the surface).
+ * another ring of quads, up to three times. Quads that face against the surface are left to
+ * turnedQuads (cutting them out and filling their hole measured worse: the fill of a region the
+ * map folded over is far from the surface).
  * @param[in]     V, F, topo the surface the quads lie on
  * @param[in,out] q          the quad mesh; unused vertices are removed
  */
