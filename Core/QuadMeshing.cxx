@@ -1,5 +1,6 @@
 #include "QuadMeshing.h"
 
+#include "QuadFacing.h"
 #include "QuadRelaxation.h"
 #include "ScaledJacobian.h"
 
@@ -28,17 +29,19 @@ QuadMeshResult buildQuadMesh(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& 
   {
     r.patch = patchQuadMesh(V, F, topo, r.mesh);
   }
-  if (options.repairInvertedQuads && !turnedQuads(V, F, topo, r.mesh).empty())
+  const SurfaceLocator surface(V, F);
+  r.turnedExtracted = static_cast<int>(turnedQuads(surface, r.mesh).size());
+  if (options.repairInvertedQuads && r.turnedExtracted > 0)
   {
     // quads facing against the surface (or turned inside out): their neighbourhoods relaxed
     auto bad = [&](const QuadMesh& m) {
-      std::vector<int> list = turnedQuads(V, F, topo, m), inverted = invertedQuads(m.V, m.Q);
+      std::vector<int> list = turnedQuads(surface, m), inverted = invertedQuads(m.V, m.Q);
       list.insert(list.end(), inverted.begin(), inverted.end());
       std::sort(list.begin(), list.end());
       list.erase(std::unique(list.begin(), list.end()), list.end());
       return list;
     };
-    repairQuads(V, F, topo, r.mesh, bad, 2, 10, 3, progress.part(0.7, 0.75));
+    repairQuads(V, F, topo, r.mesh, bad, 2, 10, 3, progress.part(0.7, 0.73));
   }
   progress.report(0.75);
   if (options.relaxationIterations > 0)
@@ -47,7 +50,11 @@ QuadMeshResult buildQuadMesh(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& 
     relax.relaxationIterations = options.relaxationIterations;
     relaxQuads(V, F, topo, r.mesh, relax, progress.part(0.75, 0.95));
   }
-  r.turnedQuads = static_cast<int>(turnedQuads(V, F, topo, r.mesh).size());
+  if (options.repairInvertedQuads)
+  {
+    r.facing = repairFacing(V, F, topo, surface, r.mesh);
+  }
+  r.turnedQuads = static_cast<int>(turnedQuads(surface, r.mesh).size());
   r.quality = measureQuads(r.mesh.V, r.mesh.Q);
   for (Eigen::Index i = 0; i < r.quality.scaledJacobian.size(); ++i)
   {

@@ -7,6 +7,7 @@
 #include "MeshTopology.h"
 #include "Progress.h"
 #include "QuadExtraction.h"
+#include "QuadFacing.h"
 #include "QuadPatching.h"
 
 #include <Eigen/Core>
@@ -20,7 +21,8 @@ namespace quadcover
 struct QuadMeshOptions
 {
   QuadExtractionOptions extraction;
-  /// Relax the quads around every quad with a corner turned inside out (repairInvertedQuads).
+  /// Relax the quads around every quad with a corner turned inside out (repairInvertedQuads) or
+  /// facing against the surface, and at the end move the corners of those left (repairFacing).
   bool repairInvertedQuads = true;
   /// Fill the holes that cells without a quad leave inside the surface with quads
   /// (patchQuadMesh), where the map could not be repaired.
@@ -39,6 +41,8 @@ struct QuadMeshResult
   int invertedExtracted = 0; ///< quads with a corner turned inside out as extracted
   int invertedFinal = 0;     ///< and in the final mesh
   QuadPatchResult patch;     ///< what patchQuadMesh did
+  FacingRepair facing;       ///< what repairFacing did
+  int turnedExtracted = 0;   ///< turnedQuads as extracted (after the holes are filled)
   int turnedQuads = 0;       ///< turnedQuads of the final mesh
   int droppedCells() const
   {
@@ -47,8 +51,9 @@ struct QuadMeshResult
 };
 
 /**
- * extractQuads, then repairInvertedQuads (or only countInvertedQuads), patchQuadMesh, relaxQuads
- * with options.relaxationIterations sweeps, then measureQuads.
+ * extractQuads, then repairInvertedQuads (or only countInvertedQuads), patchQuadMesh, repairQuads
+ * of the quads facing against the surface, relaxQuads with options.relaxationIterations sweeps,
+ * repairFacing, then measureQuads.
  * @throws std::invalid_argument as extractQuads does
  */
 QuadMeshResult buildQuadMesh(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F,

@@ -2,6 +2,7 @@
 #include "QuadPatching.h"
 
 #include "ScaledJacobian.h"
+#include "SurfaceLocator.h"
 
 #include <Eigen/Geometry>
 
@@ -15,41 +16,6 @@ namespace quadcover
 {
 namespace
 {
-Eigen::Vector3d closestOnSegment(
-  const Eigen::Vector3d& p, const Eigen::Vector3d& a, const Eigen::Vector3d& b)
-{
-  const Eigen::Vector3d d = b - a;
-  const double len2 = d.squaredNorm();
-  const double t = len2 > 0 ? std::clamp((p - a).dot(d) / len2, 0.0, 1.0) : 0.0;
-  return a + t * d;
-}
-
-/// The point of triangle (a, b, c) closest to p.
-Eigen::Vector3d closestOnTriangle(const Eigen::Vector3d& p, const Eigen::Vector3d& a,
-  const Eigen::Vector3d& b, const Eigen::Vector3d& c)
-{
-  const Eigen::Vector3d n = (b - a).cross(c - a);
-  if (n.squaredNorm() > 0)
-  {
-    const Eigen::Vector3d onPlane = p - (p - a).dot(n) / n.squaredNorm() * n;
-    const bool inside = (b - a).cross(onPlane - a).dot(n) >= 0 &&
-      (c - b).cross(onPlane - b).dot(n) >= 0 && (a - c).cross(onPlane - c).dot(n) >= 0;
-    if (inside)
-    {
-      return onPlane;
-    }
-  }
-  Eigen::Vector3d best = closestOnSegment(p, a, b);
-  for (const Eigen::Vector3d& q : { closestOnSegment(p, b, c), closestOnSegment(p, c, a) })
-  {
-    if ((q - p).squaredNorm() < (best - p).squaredNorm())
-    {
-      best = q;
-    }
-  }
-  return best;
-}
-
 /// A quad to add: its corners and the triangle under its centre.
 struct NewQuad
 {
@@ -86,20 +52,6 @@ public:
     {
       onBoundary_.push_back(onSurfaceBoundary(v) ? 1 : 0);
     }
-  }
-
-  /// The quads that face against the surface.
-  std::vector<int> turnedQuads() const
-  {
-    std::vector<int> list;
-    for (size_t i = 0; i < quads_.size(); ++i)
-    {
-      if (!removed_[i] && turned(quads_[i].corners))
-      {
-        list.push_back(static_cast<int>(i));
-      }
-    }
-    return list;
   }
 
   /// Fills the holes, taking in a ring of quads around a fill that would face against the
@@ -541,13 +493,6 @@ QuadPatchResult patchQuadMesh(
   patcher.fillHoles(r);
   patcher.finish();
   return r;
-}
-
-std::vector<int> turnedQuads(
-  const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F, const MeshTopology& topo, const QuadMesh& q)
-{
-  QuadMesh copy = q;
-  return Patcher(V, F, topo, copy).turnedQuads();
 }
 
 }

@@ -31,18 +31,13 @@ struct QuadPatchResult
  * with the better corners), so that the mesh keeps all quads, its manifold orientation and the
  * surface's Euler characteristic. A fill that would face against the surface first takes in
  * another ring of quads, up to three times. Quads that face against the surface are left to
- * turnedQuads (cutting them out and filling their hole measured worse: the fill of a region the
+ * repairFacing (cutting them out and filling their hole measured worse: the fill of a region the
  * map folded over is far from the surface).
  * @param[in]     V, F, topo the surface the quads lie on
  * @param[in,out] q          the quad mesh; unused vertices are removed
  */
 QuadPatchResult patchQuadMesh(
   const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F, const MeshTopology& topo, QuadMesh& q);
-
-/// The quads of q whose normal (the sum of its corners' cross products about its centre)
-/// opposes the normal of the surface triangle closest to its centre, in index order.
-std::vector<int> turnedQuads(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F,
-  const MeshTopology& topo, const QuadMesh& q);
 
 }
 

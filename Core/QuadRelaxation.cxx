@@ -3,6 +3,7 @@
 #include "QuadRelaxation.h"
 
 #include "ScaledJacobian.h"
+#include "SurfaceLocator.h"
 
 #include <Eigen/Geometry>
 
@@ -17,41 +18,6 @@ namespace quadcover
 {
 namespace
 {
-/// The point of triangle (a, b, c) closest to p.
-Eigen::Vector3d closestOnTriangle(const Eigen::Vector3d& p, const Eigen::Vector3d& a,
-  const Eigen::Vector3d& b, const Eigen::Vector3d& c)
-{
-  const Eigen::Vector3d ab = b - a, ac = c - a;
-  const Eigen::Vector3d n = ab.cross(ac);
-  const double nn = n.squaredNorm();
-  if (nn > 0)
-  {
-    // barycentric coordinates of p's projection onto the plane
-    const Eigen::Vector3d ap = p - a;
-    const double beta = ap.cross(ac).dot(n) / nn;
-    const double gamma = ab.cross(ap).dot(n) / nn;
-    if (beta >= 0 && gamma >= 0 && beta + gamma <= 1)
-    {
-      return a + beta * ab + gamma * ac;
-    }
-  }
-  auto onSegment = [&](const Eigen::Vector3d& s, const Eigen::Vector3d& t) -> Eigen::Vector3d {
-    const Eigen::Vector3d d = t - s;
-    const double dd = d.squaredNorm();
-    const double x = dd > 0 ? std::clamp((p - s).dot(d) / dd, 0.0, 1.0) : 0.0;
-    return s + x * d;
-  };
-  Eigen::Vector3d best = onSegment(a, b);
-  for (const Eigen::Vector3d& q : { onSegment(b, c), onSegment(c, a) })
-  {
-    if ((q - p).squaredNorm() < (best - p).squaredNorm())
-    {
-      best = q;
-    }
-  }
-  return best;
-}
-
 /// The sizes and the step; checked before anything else.
 void checkSizes(const Eigen::MatrixX3i& F, const MeshTopology& topo, const QuadMesh& mesh,
   const QuadRelaxOptions& options)

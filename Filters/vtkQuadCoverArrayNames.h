@@ -157,7 +157,9 @@ constexpr const char* DroppedCells = "DroppedCells";
 /// field, 1 x int, 3 tuples: holes inside the surface filled with quads (FillHoles), holes left,
 /// quads added
 constexpr const char* FilledHoles = "FilledHoles";
-/// field, 1 x int: quads that face against the input triangle closest to their centre
+/// field, 1 x int, 2 tuples: quads that face against the input triangle closest to their centre
+/// (or the nearly closest ones, where there are ties), as extracted, and in the output (after
+/// RepairInvertedQuads).
 constexpr const char* TurnedQuads = "TurnedQuads";
 }
 

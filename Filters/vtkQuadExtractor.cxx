@@ -131,7 +131,8 @@ void AddFigures(vtkFieldData* fd, const quadcover::QuadMeshResult& r)
       double(quads.cellsConflicting) });
   AddField<vtkIntArray>(fd, names::FilledHoles,
     { double(r.patch.holesFilled), double(r.patch.holesLeft), double(r.patch.quadsAdded) });
-  AddField<vtkIntArray>(fd, names::TurnedQuads, { double(r.turnedQuads) });
+  AddField<vtkIntArray>(
+    fd, names::TurnedQuads, { double(r.turnedExtracted), double(r.turnedQuads) });
 }
 
 /// Field data HausdorffDistance: two-sided, surface to quads, quads to surface, in % of the

@@ -24,7 +24,7 @@
  * IrregularVertices (inner, boundary), EdgeLengthRSD, AngleRSD, ScaledJacobianStatistics (min,
  * mean), NonManifoldEdges, EulerCharacteristic, BoundaryLoops, HausdorffDistance (two-sided, and
  * each way, in % of the input's bounding-box diagonal), InvertedQuads (before and after
- * RepairInvertedQuads), DroppedCells, FilledHoles and TurnedQuads.
+ * RepairInvertedQuads), DroppedCells, FilledHoles and TurnedQuads (before and after it).
  * @sa vtkQuadCoverSolver
  */
 #ifndef vtkQuadExtractor_h
@@ -50,10 +50,13 @@ public:
 
   ///@{
   /** Relax the quads around any quad with a corner turned inside out (scaled Jacobian <= 0),
-   * which the map leaves at some branch points on coarse or strongly curved parts (default on):
-   * their vertices and those within two quad rings, as RelaxationIterations does, until none is
-   * left or a round repairs nothing. Far from them nothing moves. InvertedQuads reports how many
-   * there were and are. */
+   * which the map leaves at some branch points on coarse or strongly curved parts, or facing
+   * against the input (default on): their vertices and those within two quad rings, as
+   * RelaxationIterations does, until none is left or a round repairs nothing. Then the corners of
+   * those left (a quad across a sharp crease, or wrapped around a part thinner than itself), and
+   * of the quads around them, are moved one at a time to the point of the input nearby that makes
+   * the worst of their quads best (quadcover::repairFacing). Far from them nothing moves.
+   * InvertedQuads and TurnedQuads report how many there were and are. */
   vtkSetMacro(RepairInvertedQuads, bool);
   vtkGetMacro(RepairInvertedQuads, bool);
   vtkBooleanMacro(RepairInvertedQuads, bool);

@@ -338,8 +338,8 @@ std::vector<Option> StageOptions(Pipeline& p)
       "quads at least on each connected component (its own grid where needed)"),
     QC_SWITCH("param", solver, SplitSeams,
       "write the surface cut open along the seams, with UV texture coordinates"),
-    QC_SWITCH(
-      "quads", extractor, RepairInvertedQuads, "relax the quads around corners turned inside out"),
+    QC_SWITCH("quads", extractor, RepairInvertedQuads,
+      "move the corners of quads turned inside out or facing against the input"),
     QC_SWITCH(
       "quads", extractor, FillHoles, "fill holes the map leaves inside the surface with quads"),
     QC_NUMBER(

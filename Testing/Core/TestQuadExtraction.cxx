@@ -4,6 +4,7 @@
 // valid mesh.
 #include "GridMapChecks.h"
 #include "QuadExtraction.h"
+#include "QuadFacing.h"
 #include "QuadPatching.h"
 #include "TestChain.h"
 #include "TestSurfaces.h"
@@ -191,7 +192,7 @@ TEST(QuadPatching, FillsHolesInsideTheSurfaceWithQuads)
   const QuadPatchResult r = patchQuadMesh(c.s.V, c.s.F, c.topo, q);
   EXPECT_EQ(r.holesFilled, 2);
   EXPECT_EQ(r.holesLeft, 0);
-  EXPECT_TRUE(turnedQuads(c.s.V, c.s.F, c.topo, q).empty());
+  EXPECT_TRUE(turnedQuads(c.s.V, c.s.F, q).empty());
   const QuadQuality m = measureQuads(q.V, q.Q);
   EXPECT_EQ(m.quads, m.faces);
   EXPECT_EQ(m.boundaryEdges, 0);
@@ -205,10 +206,10 @@ TEST(QuadPatching, FindsTheQuadsThatFaceAgainstTheSurface)
 {
   const Chain c = runChain(testSurface("sphere"), 800);
   QuadMesh q = extractQuads(c.s.V, c.s.F, c.topo, c.map.cornerUV);
-  EXPECT_TRUE(turnedQuads(c.s.V, c.s.F, c.topo, q).empty());
+  EXPECT_TRUE(turnedQuads(c.s.V, c.s.F, q).empty());
   const Eigen::RowVector4i reversed(q.Q(9, 3), q.Q(9, 2), q.Q(9, 1), q.Q(9, 0));
   q.Q.row(9) = reversed;
-  EXPECT_EQ(turnedQuads(c.s.V, c.s.F, c.topo, q), std::vector<int>{ 9 });
+  EXPECT_EQ(turnedQuads(c.s.V, c.s.F, q), std::vector<int>{ 9 });
 }
 
 TEST(QuadPatching, LeavesTheSurfaceBoundaryOpen)

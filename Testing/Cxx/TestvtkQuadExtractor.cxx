@@ -251,6 +251,10 @@ TEST_P(QuadsOn, ManifoldAllQuadMeshWithTheInputsTopology)
     EXPECT_EQ(invertedCells(out), extracted);
     p.extractor->RepairInvertedQuadsOn();
     p.extractor->Update();
+    // nothing turned inside out or facing against the input is left
+    EXPECT_EQ(Field(out, names::InvertedQuads, 1), 0);
+    EXPECT_EQ(Field(out, names::TurnedQuads, 1), 0);
+    EXPECT_LE(Field(out, names::TurnedQuads, 1), Field(out, names::TurnedQuads, 0));
     EXPECT_EQ(Field(out, names::NonManifoldEdges), 0);
     EXPECT_EQ(Field(out, names::BoundaryLoops), static_cast<double>(topo.boundaryLoops.size()));
     EXPECT_GT(Field(out, names::ScaledJacobianStatistics, 1), 0.85) << "mean scaled Jacobian";
@@ -301,4 +305,35 @@ TEST_P(QuadsOn, ManifoldAllQuadMeshWithTheInputsTopology)
 
 INSTANTIATE_TEST_SUITE_P(Surfaces, QuadsOn,
   ::testing::Values("sphere", "torus", "knot", "cylinder", "roundedcube", "bunny-lowres", "spot",
-    "fandisk", "rocker-arm", "cheburashka", "teapot"));
+    "fandisk", "rocker-arm", "cheburashka", "teapot", "lion"));
+
+TEST(vtkQuadExtractor, NoQuadFacesAgainstACoarseInput)
+{
+  // 1,000 triangles with sharp ridges, far coarser than the quads: quads across a ridge mostly on
+  // one side, or around a thin part, face against the input as extracted (and one cell with two
+  // corners at one grid point, at a valence-1 branch point, is dropped and filled)
+  std::string path;
+  vtkSmartPointer<vtkPolyData> surface = LoadTestSurface("decimated-knight", path);
+  if (!surface)
+  {
+    GTEST_SKIP() << "mesh not found: " << path;
+  }
+  Pipeline p(surface);
+  for (const int quads : { 3000, 6500 })
+  {
+    SCOPED_TRACE(quads);
+    p.solver->SetTargetQuadCount(quads);
+    p.extractor->Update();
+    ASSERT_EQ(p.errors->GetError(), "");
+    vtkPolyData* out = p.extractor->GetOutput();
+    std::printf("[ decimated-knight ] %d quads: turned %g -> %g, inverted %g -> %g\n", quads,
+      Field(out, names::TurnedQuads, 0), Field(out, names::TurnedQuads, 1),
+      Field(out, names::InvertedQuads, 0), Field(out, names::InvertedQuads, 1));
+    EXPECT_EQ(Field(out, names::TurnedQuads, 1), 0);
+    EXPECT_EQ(Field(out, names::InvertedQuads, 1), 0);
+    EXPECT_EQ(Field(out, names::QuadShare), 1.0);
+    EXPECT_EQ(Field(out, names::NonManifoldEdges), 0);
+    EXPECT_EQ(Field(out, names::BoundaryLoops), 0);
+    EXPECT_EQ(Field(out, names::EulerCharacteristic), 2);
+  }
+}

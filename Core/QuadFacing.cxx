@@ -1,0 +1,474 @@
+// QuadFacing.cxx: quadFacing, turnedQuads and repairFacing.
+#include "QuadFacing.h"
+
+#include "ScaledJacobian.h"
+
+#include <Eigen/Geometry>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <utility>
+
+namespace quadcover
+{
+namespace
+{
+constexpr double Pi = 3.14159265358979323846;
+
+Eigen::Vector3d corner(const QuadMesh& mesh, int i, int k)
+{
+  return mesh.V.row(mesh.Q(i, k)).transpose();
+}
+
+/// A point of the surface a vertex may move to.
+struct Candidate
+{
+  Eigen::Vector3d point;
+  int triangle;
+  int surfacePoint; ///< the input point it is, or -1
+};
+
+/// The moves of repairFacing: the quads around each vertex, which vertices may move, and the
+/// search for the best point of each.
+class FacingRepairer
+{
+public:
+  FacingRepairer(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F, const MeshTopology& topo,
+    const SurfaceLocator& surface, QuadMesh& mesh)
+    : V_(V)
+    , F_(F)
+    , topo_(topo)
+    , surface_(surface)
+    , mesh_(mesh)
+  {
+    collectVertexQuads();
+    findFixed();
+  }
+
+  /// The quads facing against the surface or turned inside out.
+  std::vector<int> badQuads() const
+  {
+    std::vector<int> list;
+    for (int i = 0; i < static_cast<int>(mesh_.Q.rows()); ++i)
+    {
+      if (quality(i) <= 0)
+      {
+        list.push_back(i);
+      }
+    }
+    return list;
+  }
+
+  /// The vertices of the quads and of those within `rings` quad rings of them.
+  std::vector<int> region(const std::vector<int>& quads, int rings) const
+  {
+    std::vector<char> in(mesh_.V.rows(), 0);
+    for (const int i : quads)
+    {
+      for (int k = 0; k < 4; ++k)
+      {
+        in[mesh_.Q(i, k)] = 1;
+      }
+    }
+    for (int ring = 0; ring < rings; ++ring)
+    {
+      std::vector<char> grown = in;
+      for (int v = 0; v < static_cast<int>(in.size()); ++v)
+      {
+        for (int j = offsets_[v]; in[v] && j < offsets_[v + 1]; ++j)
+        {
+          for (int k = 0; k < 4; ++k)
+          {
+            grown[mesh_.Q(quadsOf_[j], k)] = 1;
+          }
+        }
+      }
+      in.swap(grown);
+    }
+    std::vector<int> list;
+    for (int v = 0; v < static_cast<int>(in.size()); ++v)
+    {
+      if (in[v] && !fixed_[v])
+      {
+        list.push_back(v);
+      }
+    }
+    return list;
+  }
+
+  /// Moves v to the candidate point that makes the worst of its quads best, if that is better
+  /// by a margin and v's quads are not all fine already; true when it moved.
+  bool improve(int v)
+  {
+    const double now = vertexScore(v);
+    if (now >= Fine)
+    {
+      return false;
+    }
+    const Eigen::Vector3d old = mesh_.V.row(v);
+    double best = now + 1e-3;
+    const Candidate* chosen = nullptr;
+    const std::vector<Candidate> candidates = candidatesOf(v);
+    for (const Candidate& c : candidates)
+    {
+      mesh_.V.row(v) = c.point.transpose();
+      if (vertexShape(v) <= best)
+      {
+        continue; // the score is at most the shape's
+      }
+      const double score = vertexScore(v);
+      if (score > best)
+      {
+        best = score;
+        chosen = &c;
+      }
+    }
+    mesh_.V.row(v) = old.transpose();
+    if (!chosen)
+    {
+      return false;
+    }
+    mesh_.V.row(v) = chosen->point.transpose();
+    mesh_.vertexTriangle[v] = chosen->triangle;
+    mesh_.vertexPoint[v] = chosen->surfacePoint;
+    return true;
+  }
+
+private:
+  /// A vertex whose quads all score at least this is left where it is.
+  static constexpr double Fine = 0.2;
+
+  /// The smaller of quadFacing and quadScaledJacobian.
+  double quality(int i) const
+  {
+    return std::min(quadFacing(surface_, mesh_, i), quadScaledJacobian(mesh_.V, mesh_.Q, i));
+  }
+
+  double vertexScore(int v) const
+  {
+    double worst = 1.0;
+    for (int j = offsets_[v]; j < offsets_[v + 1]; ++j)
+    {
+      worst = std::min(worst, quality(quadsOf_[j]));
+    }
+    return worst;
+  }
+
+  /// The smallest quadScaledJacobian of v's quads (an upper bound of vertexScore).
+  double vertexShape(int v) const
+  {
+    double worst = 1.0;
+    for (int j = offsets_[v]; j < offsets_[v + 1]; ++j)
+    {
+      worst = std::min(worst, quadScaledJacobian(mesh_.V, mesh_.Q, quadsOf_[j]));
+    }
+    return worst;
+  }
+
+  void collectVertexQuads()
+  {
+    const int nV = static_cast<int>(mesh_.V.rows());
+    offsets_.assign(nV + 1, 0);
+    for (int i = 0; i < mesh_.Q.rows(); ++i)
+    {
+      for (int k = 0; k < 4; ++k)
+      {
+        ++offsets_[mesh_.Q(i, k) + 1];
+      }
+    }
+    for (int v = 0; v < nV; ++v)
+    {
+      offsets_[v + 1] += offsets_[v];
+    }
+    quadsOf_.resize(offsets_.back());
+    std::vector<int> fill(offsets_.begin(), offsets_.end() - 1);
+    for (int i = 0; i < mesh_.Q.rows(); ++i)
+    {
+      for (int k = 0; k < 4; ++k)
+      {
+        quadsOf_[fill[mesh_.Q(i, k)]++] = i;
+      }
+    }
+  }
+
+  /// Vertices on the quad mesh's boundary, on the surface's boundary, or in no triangle.
+  void findFixed()
+  {
+    fixed_.assign(mesh_.V.rows(), 0);
+    std::map<std::pair<int, int>, int> edgeCount;
+    for (int i = 0; i < mesh_.Q.rows(); ++i)
+    {
+      for (int k = 0; k < 4; ++k)
+      {
+        const int a = mesh_.Q(i, k), b = mesh_.Q(i, (k + 1) % 4);
+        ++edgeCount[{ std::min(a, b), std::max(a, b) }];
+      }
+    }
+    for (const auto& [edge, count] : edgeCount)
+    {
+      if (count != 2)
+      {
+        fixed_[edge.first] = fixed_[edge.second] = 1;
+      }
+    }
+    for (int v = 0; v < static_cast<int>(fixed_.size()); ++v)
+    {
+      const int t = mesh_.vertexTriangle[v];
+      fixed_[v] |= t < 0 || t >= F_.rows() || onSurfaceBoundary(v);
+    }
+  }
+
+  bool onSurfaceBoundary(int v) const
+  {
+    if (mesh_.vertexPoint[v] >= 0)
+    {
+      return topo_.boundaryVertex[mesh_.vertexPoint[v]] != 0;
+    }
+    const int t = mesh_.vertexTriangle[v];
+    const Eigen::Vector3d p = mesh_.V.row(v);
+    for (int k = 0; k < 3; ++k)
+    {
+      if (topo_.faceNeighbors(t, k) < 0)
+      {
+        const Eigen::Vector3d a = V_.row(F_(t, k)), b = V_.row(F_(t, (k + 1) % 3));
+        if ((closestOnSegment(p, a, b) - p).norm() <= 1e-7 * (b - a).norm())
+        {
+          return true;
+        }
+      }
+    }
+    return false;
+  }
+
+  /// The longest edge of v's quads.
+  double reach(int v) const
+  {
+    double longest = 0.0;
+    for (int j = offsets_[v]; j < offsets_[v + 1]; ++j)
+    {
+      for (int k = 0; k < 4; ++k)
+      {
+        const int i = quadsOf_[j];
+        longest = std::max(longest, (corner(mesh_, i, k) - corner(mesh_, i, (k + 1) % 4)).norm());
+      }
+    }
+    return longest;
+  }
+
+  /// The triangles connected to v's own (across edges) with a point within r of p, at most 256.
+  std::vector<int> trianglesNear(int v, const Eigen::Vector3d& p, double r) const
+  {
+    std::vector<int> list{ mesh_.vertexTriangle[v] };
+    std::vector<char> seen(F_.rows(), 0);
+    seen[list[0]] = 1;
+    for (std::size_t n = 0; n < list.size() && list.size() < 256; ++n)
+    {
+      for (int k = 0; k < 3; ++k)
+      {
+        const int g = topo_.faceNeighbors(list[n], k);
+        if (g >= 0 && !seen[g])
+        {
+          seen[g] = 1;
+          if ((closestIn(g, p) - p).norm() <= r)
+          {
+            list.push_back(g);
+          }
+        }
+      }
+    }
+    return list;
+  }
+
+  Eigen::Vector3d closestIn(int t, const Eigen::Vector3d& p) const
+  {
+    return surface_.closestIn(t, p);
+  }
+
+  /// The point of the listed triangles closest to p, as a candidate.
+  Candidate projectOnto(const std::vector<int>& triangles, const Eigen::Vector3d& p) const
+  {
+    Candidate best{ p, -1, -1 };
+    double distance = std::numeric_limits<double>::infinity();
+    for (const int t : triangles)
+    {
+      if (surface_.lowerBound(t, p) >= distance)
+      {
+        continue;
+      }
+      const Eigen::Vector3d q = closestIn(t, p);
+      if ((q - p).norm() < distance)
+      {
+        distance = (q - p).norm();
+        best = { q, t, -1 };
+      }
+    }
+    return best;
+  }
+
+  std::vector<Candidate> candidatesOf(int v) const;
+
+  const Eigen::MatrixX3d& V_;
+  const Eigen::MatrixX3i& F_;
+  const MeshTopology& topo_;
+  const SurfaceLocator& surface_;
+  QuadMesh& mesh_;
+  std::vector<int> offsets_; ///< #V + 1: where each vertex's quads start in quadsOf_
+  std::vector<int> quadsOf_;
+  std::vector<char> fixed_;
+};
+
+/// Where v may go: points around it in its tangent plane at a few distances up to its longest
+/// quad edge, put on the surface; the input points near it; the points of creases (edges sharper
+/// than 60 degrees) nearest to it; the centre of its quads, put on the surface.
+std::vector<Candidate> FacingRepairer::candidatesOf(int v) const
+{
+  const Eigen::Vector3d p = mesh_.V.row(v);
+  const double r = reach(v);
+  std::vector<Candidate> list;
+  if (!(r > 0))
+  {
+    return list;
+  }
+  const std::vector<int> near = trianglesNear(v, p, r);
+  Eigen::Vector3d n = surface_.normal(mesh_.vertexTriangle[v]);
+  if (!(n.norm() > 0))
+  {
+    n = surface_.normal(std::max(0, surface_.closest(p).triangle));
+  }
+  if (!(n.norm() > 0))
+  {
+    return list; // no triangle of positive area
+  }
+  const Eigen::Vector3d e1 = n.unitOrthogonal(), e2 = n.cross(e1);
+  for (const double radius : { 0.1, 0.25, 0.5, 0.75 })
+  {
+    for (int d = 0; d < 12; ++d)
+    {
+      const double a = 2 * Pi * d / 12;
+      list.push_back(projectOnto(near, p + radius * r * (std::cos(a) * e1 + std::sin(a) * e2)));
+    }
+  }
+  Eigen::Vector3d centre = Eigen::Vector3d::Zero();
+  for (int j = offsets_[v]; j < offsets_[v + 1]; ++j)
+  {
+    for (int k = 0; k < 4; ++k)
+    {
+      centre += corner(mesh_, quadsOf_[j], k) / (4.0 * (offsets_[v + 1] - offsets_[v]));
+    }
+  }
+  list.push_back(projectOnto(near, centre));
+  const double creaseCos = std::cos(Pi / 3);
+  for (const int t : near)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      const int point = F_(t, k);
+      if ((V_.row(point).transpose() - p).norm() <= r)
+      {
+        list.push_back({ V_.row(point).transpose(), t, point });
+      }
+      const int g = topo_.faceNeighbors(t, k);
+      if (g > t && surface_.normal(t).dot(surface_.normal(g)) < creaseCos)
+      {
+        const Eigen::Vector3d q =
+          closestOnSegment(p, V_.row(point).transpose(), V_.row(F_(t, (k + 1) % 3)).transpose());
+        list.push_back({ q, t, -1 });
+      }
+    }
+  }
+  return list;
+}
+}
+
+double quadFacing(const SurfaceLocator& surface, const QuadMesh& mesh, int i)
+{
+  Eigen::Vector3d centre = Eigen::Vector3d::Zero();
+  for (int k = 0; k < 4; ++k)
+  {
+    centre += corner(mesh, i, k) / 4.0;
+  }
+  Eigen::Vector3d n = Eigen::Vector3d::Zero();
+  double edges = 0.0;
+  for (int k = 0; k < 4; ++k)
+  {
+    n += (corner(mesh, i, k) - centre).cross(corner(mesh, i, (k + 1) % 4) - centre);
+    edges += (corner(mesh, i, k) - corner(mesh, i, (k + 1) % 4)).norm() / 4.0;
+  }
+  if (!(n.norm() > 0))
+  {
+    return -1.0;
+  }
+  n.normalize();
+  double facing = 1.0;
+  for (const int t : surface.nearlyClosest(centre, 1e-3 * edges))
+  {
+    facing = std::min(facing, n.dot(surface.normal(t)));
+  }
+  return facing;
+}
+
+std::vector<int> turnedQuads(const SurfaceLocator& surface, const QuadMesh& mesh)
+{
+  std::vector<int> list;
+  for (int i = 0; i < static_cast<int>(mesh.Q.rows()); ++i)
+  {
+    if (quadFacing(surface, mesh, i) <= 0)
+    {
+      list.push_back(i);
+    }
+  }
+  return list;
+}
+
+std::vector<int> turnedQuads(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F, const QuadMesh& q)
+{
+  return turnedQuads(SurfaceLocator(V, F), q);
+}
+
+FacingRepair repairFacing(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F,
+  const MeshTopology& topo, const SurfaceLocator& surface, QuadMesh& mesh)
+{
+  FacingRepairer repairer(V, F, topo, surface, mesh);
+  std::vector<int> bad = repairer.badQuads();
+  FacingRepair r;
+  r.before = r.after = static_cast<int>(bad.size());
+  if (bad.empty())
+  {
+    return r;
+  }
+  const QuadMesh kept = mesh;
+  std::vector<char> moved(mesh.V.rows(), 0);
+  for (int rings = 0; rings < 4 && !bad.empty(); ++rings)
+  {
+    const std::vector<int> region = repairer.region(bad, rings);
+    for (int sweep = 0; sweep < 8; ++sweep)
+    {
+      bool any = false;
+      for (const int v : region)
+      {
+        if (repairer.improve(v))
+        {
+          moved[v] = 1;
+          any = true;
+        }
+      }
+      if (!any)
+      {
+        break;
+      }
+    }
+    bad = repairer.badQuads();
+  }
+  r.after = static_cast<int>(bad.size());
+  if (r.after > r.before)
+  {
+    mesh = kept;
+    r.after = r.before;
+    return r;
+  }
+  r.movedVertices = static_cast<int>(std::count(moved.begin(), moved.end(), 1));
+  return r;
+}
+
+}

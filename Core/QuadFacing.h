@@ -1,0 +1,61 @@
+// QuadFacing.h: which way a quad faces against the surface it remeshes, and the repair that turns
+// the quads facing against it (or turned inside out) back by moving their corners on the surface.
+#ifndef quadcover_QuadFacing_h
+#define quadcover_QuadFacing_h
+
+#include "MeshTopology.h"
+#include "QuadMesh.h"
+#include "SurfaceLocator.h"
+
+#include <Eigen/Core>
+
+#include <vector>
+
+namespace quadcover
+{
+
+/**
+ * How quad i faces the surface: the cosine between its normal (the sum of its corners' cross
+ * products about its centre) and the normal of the surface triangle closest to its centre, over
+ * the whole surface (the smallest over the triangles within a thousandth of the quad's mean edge
+ * of the closest distance, so that a tie above a crease or where components cross is not left to
+ * chance). In [-1, 1]; -1 for a quad of zero area.
+ */
+double quadFacing(const SurfaceLocator& surface, const QuadMesh& mesh, int i);
+
+/// The quads that face against the surface (quadFacing <= 0), in index order: the figure
+/// TurnedQuads.
+std::vector<int> turnedQuads(const SurfaceLocator& surface, const QuadMesh& mesh);
+
+/// turnedQuads of the quads q on the surface (V, F).
+std::vector<int> turnedQuads(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F, const QuadMesh& q);
+
+/// What repairFacing did.
+struct FacingRepair
+{
+  int before = 0;        ///< quads facing against the surface or turned inside out, before
+  int after = 0;         ///< and after
+  int movedVertices = 0; ///< quad vertices moved (each counted once)
+};
+
+/**
+ * Quads that face against the surface (turnedQuads) or have a corner turned inside out
+ * (quadScaledJacobian <= 0) are left where the map is compressed or folds across a sharp crease or
+ * a thin part: a quad straddling a crease mostly on one side, or wrapped around a rim thinner than
+ * itself. This moves their corners, and then those of the quads around them (up to three rings),
+ * one at a time to the point of the surface nearby (within about an edge length, on the triangles
+ * connected to the vertex's own, crease points included) that makes the worst of its quads best,
+ * the worst measured as the smaller of quadFacing and quadScaledJacobian; a vertex whose quads are
+ * all fine stays. The connectivity stays (the mesh keeps all quads, manifold, its Euler
+ * characteristic); vertices on the boundary of the quad mesh or of the surface stay. When the
+ * moves leave more such quads than they found, the mesh is put back.
+ * @param[in]     V, F, topo the surface the quads lie on
+ * @param[in]     surface    SurfaceLocator(V, F)
+ * @param[in,out] mesh       the quad mesh: V, vertexTriangle, vertexPoint
+ */
+FacingRepair repairFacing(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F,
+  const MeshTopology& topo, const SurfaceLocator& surface, QuadMesh& mesh);
+
+}
+
+#endif

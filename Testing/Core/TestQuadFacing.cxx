@@ -1,0 +1,145 @@
+// The closest points of a whole surface (SurfaceLocator) and the quads that face against it:
+// turnedQuads finds them, repairFacing turns them back without changing the connectivity.
+#include "QuadExtraction.h"
+#include "QuadFacing.h"
+#include "QuadQuality.h"
+#include "ScaledJacobian.h"
+#include "SurfaceLocator.h"
+#include "TestChain.h"
+#include "TestSurfaces.h"
+
+#include <gtest/gtest.h>
+
+#include <random>
+
+using namespace quadcover;
+
+namespace
+{
+/// Two surfaces as one of two components (the second shifted by `offset`).
+Surface joined(const Surface& a, const Surface& b, const Eigen::RowVector3d& offset)
+{
+  Surface s;
+  s.V.resize(a.V.rows() + b.V.rows(), 3);
+  s.V << a.V, b.V.rowwise() + offset;
+  s.F.resize(a.F.rows() + b.F.rows(), 3);
+  s.F << a.F, b.F.array() + static_cast<int>(a.V.rows());
+  return s;
+}
+
+double bruteForceDistance(const Surface& s, const Eigen::Vector3d& p)
+{
+  double best = std::numeric_limits<double>::infinity();
+  for (int t = 0; t < s.F.rows(); ++t)
+  {
+    const Eigen::Vector3d q =
+      closestOnTriangle(p, s.V.row(s.F(t, 0)), s.V.row(s.F(t, 1)), s.V.row(s.F(t, 2)));
+    best = std::min(best, (q - p).norm());
+  }
+  return best;
+}
+
+/// The quads facing against the surface or turned inside out.
+std::vector<int> badQuads(const Surface& s, const QuadMesh& q)
+{
+  std::vector<int> list = turnedQuads(s.V, s.F, q), inverted = invertedQuads(q.V, q.Q);
+  list.insert(list.end(), inverted.begin(), inverted.end());
+  return list;
+}
+}
+
+TEST(SurfaceLocator, FindsTheClosestPointOverEveryComponent)
+{
+  const Surface s =
+    joined(testSurface("sphere"), testSurface("torus"), Eigen::RowVector3d(0.7, 0.2, 0.1));
+  const SurfaceLocator locator(s.V, s.F);
+  std::mt19937 random(7);
+  std::uniform_real_distribution<double> coordinate(-2.5, 2.5);
+  for (int i = 0; i < 300; ++i)
+  {
+    const Eigen::Vector3d p(coordinate(random), coordinate(random), coordinate(random));
+    const SurfaceLocator::Hit hit = locator.closest(p);
+    ASSERT_GE(hit.triangle, 0);
+    EXPECT_NEAR(hit.distance, bruteForceDistance(s, p), 1e-12);
+    EXPECT_NEAR((hit.point - p).norm(), hit.distance, 1e-12);
+    const std::vector<int> ties = locator.nearlyClosest(p, 0.0);
+    EXPECT_NE(std::find(ties.begin(), ties.end(), hit.triangle), ties.end());
+  }
+  // far outside the grid too
+  const Eigen::Vector3d far(40.0, -30.0, 5.0);
+  EXPECT_NEAR(locator.closest(far).distance, bruteForceDistance(s, far), 1e-12);
+}
+
+TEST(SurfaceLocator, LeavesTrianglesOfZeroAreaOut)
+{
+  Surface s;
+  s.V = (Eigen::MatrixX3d(3, 3) << 0, 0, 0, 1, 0, 0, 2, 0, 0).finished();
+  s.F = (Eigen::MatrixX3i(1, 3) << 0, 1, 2).finished();
+  const SurfaceLocator locator(s.V, s.F);
+  EXPECT_EQ(locator.closest(Eigen::Vector3d(0.5, 1.0, 0.0)).triangle, -1);
+  EXPECT_TRUE(locator.nearlyClosest(Eigen::Vector3d(0.5, 1.0, 0.0), 1.0).empty());
+}
+
+TEST(QuadFacing, LeavesAValidMeshAsItIs)
+{
+  const Chain c = runChain(testSurface("sphere"), 800);
+  QuadMesh q = extractQuads(c.s.V, c.s.F, c.topo, c.map.cornerUV);
+  ASSERT_TRUE(badQuads(c.s, q).empty());
+  const QuadMesh before = q;
+  const FacingRepair r = repairFacing(c.s.V, c.s.F, c.topo, SurfaceLocator(c.s.V, c.s.F), q);
+  EXPECT_EQ(r.before, 0);
+  EXPECT_EQ(r.after, 0);
+  EXPECT_EQ(r.movedVertices, 0);
+  EXPECT_EQ(q.V, before.V);
+}
+
+TEST(QuadFacing, MovesAVertexPushedOverItsNeighboursBack)
+{
+  for (const char* name : { "sphere", "torus", "roundedcube" })
+  {
+    SCOPED_TRACE(name);
+    const Chain c = runChain(testSurface(name), 800);
+    QuadMesh q = extractQuads(c.s.V, c.s.F, c.topo, c.map.cornerUV);
+    const QuadQuality quality = measureQuads(q.V, q.Q);
+    // a regular vertex, put where the vertex two edges away along one grid line is
+    int v = 0;
+    while (quality.valence[v] != 4)
+    {
+      ++v;
+    }
+    int w = -1;
+    for (int i = 0; i < q.Q.rows() && w < 0; ++i)
+    {
+      for (int k = 0; k < 4; ++k)
+      {
+        if (q.Q(i, k) == v)
+        {
+          w = q.Q(i, (k + 2) % 4); // diagonally across its quad
+          break;
+        }
+      }
+    }
+    ASSERT_GE(w, 0);
+    const Eigen::MatrixX4i connectivity = q.Q;
+    q.V.row(v) = q.V.row(w) + 0.3 * (q.V.row(w) - q.V.row(v));
+    const SurfaceLocator locator(c.s.V, c.s.F);
+    q.V.row(v) = locator.closest(q.V.row(v).transpose()).point.transpose();
+    q.vertexTriangle[v] = locator.closest(q.V.row(v).transpose()).triangle;
+    q.vertexPoint[v] = -1;
+    ASSERT_FALSE(badQuads(c.s, q).empty()) << "the test needs a folded vertex";
+    const FacingRepair r = repairFacing(c.s.V, c.s.F, c.topo, locator, q);
+    EXPECT_GT(r.before, 0);
+    EXPECT_EQ(r.after, 0);
+    EXPECT_GE(r.movedVertices, 1);
+    EXPECT_TRUE(badQuads(c.s, q).empty());
+    EXPECT_EQ(q.Q, connectivity);
+    for (int u = 0; u < q.V.rows(); ++u)
+    {
+      EXPECT_LT(locator.closest(q.V.row(u).transpose()).distance, 1e-9) << "vertex " << u;
+      const Eigen::Vector3d own = closestOnTriangle(q.V.row(u).transpose(),
+        c.s.V.row(c.s.F(q.vertexTriangle[u], 0)), c.s.V.row(c.s.F(q.vertexTriangle[u], 1)),
+        c.s.V.row(c.s.F(q.vertexTriangle[u], 2)));
+      EXPECT_LT((own - q.V.row(u).transpose()).norm(), 1e-9) << "vertex " << u << " in its triangle";
+    }
+  }
+}
