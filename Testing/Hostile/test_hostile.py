@@ -13,6 +13,7 @@ quadcover runs with its address space capped at 4 GB, so that a file that makes 
 without bound fails here instead of taking the machine; QUADCOVER_HOSTILE_MEMORY_GB=0 lifts the
 cap (an AddressSanitizer build reserves more than that up front).
 """
+import json
 import os
 import resource
 import shutil
@@ -148,7 +149,13 @@ def check_case(cli, work, name):
     faces, _ = read_quads(out)
     problems = check_mesh(faces, expect)
     if not os.path.isfile(stats):
-        problems.append("no --stats file")
+        return problems + ["no --stats file"]
+    with open(stats) as f:
+        quads = json.load(f)["quads"]
+    # in the output (the second figure): nothing facing against the input, nothing inside out
+    for key in ("turned_quads", "inverted_quads"):
+        if quads[key][1] != 0:
+            problems.append("%s %s, expected 0 in the output" % (key, quads[key]))
     return problems
 
 
