@@ -44,6 +44,7 @@ public:
   {
     collectVertexQuads();
     findFixed();
+    budget_ = static_cast<long long>(Budget) * mesh.Q.rows() + 10 * BudgetBase;
   }
 
   /// The quads facing against the surface or turned inside out.
@@ -97,6 +98,12 @@ public:
     return list;
   }
 
+  /// Whether the work done (quad measurements) is within the budget: an average of
+  /// FacingRepair::budget measurements a quad.
+  bool withinBudget() const { return evaluations_ <= budget_; }
+
+  long long evaluations() const { return evaluations_; }
+
   /// Moves v to the candidate point that makes the worst of its quads best, if that is better
   /// by a margin and v's quads are not all fine already; true when it moved.
   bool improve(int v)
@@ -138,10 +145,17 @@ public:
 private:
   /// A vertex whose quads all score at least this is left where it is.
   static constexpr double Fine = 0.2;
+  /// The work budget: quad measurements per quad of the mesh, plus ten times this many. Repairs
+  /// that succeed take 1 to 10 per quad; one that cannot succeed stops there, in about the time
+  /// the extraction took.
+  static constexpr int Budget = 40;
+  static constexpr int BudgetBase = 10000;
+  long long budget_ = 0;
 
   /// The smaller of quadFacing and quadScaledJacobian.
   double quality(int i) const
   {
+    ++evaluations_;
     return std::min(quadFacing(surface_, mesh_, i), quadScaledJacobian(mesh_.V, mesh_.Q, i));
   }
 
@@ -316,6 +330,7 @@ private:
   std::vector<int> offsets_; ///< #V + 1: where each vertex's quads start in quadsOf_
   std::vector<int> quadsOf_;
   std::vector<char> fixed_;
+  mutable long long evaluations_ = 0; ///< quality() calls, for the budget
 };
 
 /// Where v may go: points around it in its tangent plane at a few distances up to its longest
@@ -439,7 +454,7 @@ FacingRepair repairFacing(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F,
   }
   const QuadMesh kept = mesh;
   std::vector<char> moved(mesh.V.rows(), 0);
-  for (int rings = 0; rings < 4 && !bad.empty(); ++rings)
+  for (int rings = 0; rings < 4 && !bad.empty() && repairer.withinBudget(); ++rings)
   {
     const std::vector<int> region = repairer.region(bad, rings);
     for (int sweep = 0; sweep < 8; ++sweep)
@@ -447,6 +462,10 @@ FacingRepair repairFacing(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F,
       bool any = false;
       for (const int v : region)
       {
+        if (!repairer.withinBudget())
+        {
+          break;
+        }
         if (repairer.improve(v))
         {
           moved[v] = 1;
@@ -461,6 +480,7 @@ FacingRepair repairFacing(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F,
     bad = repairer.badQuads();
   }
   r.after = static_cast<int>(bad.size());
+  r.measurements = repairer.evaluations();
   if (r.after > r.before)
   {
     mesh = kept;

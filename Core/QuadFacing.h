@@ -36,6 +36,7 @@ struct FacingRepair
   int before = 0;        ///< quads facing against the surface or turned inside out, before
   int after = 0;         ///< and after
   int movedVertices = 0; ///< quad vertices moved (each counted once)
+  long long measurements = 0; ///< quads measured (the work, bounded by 40 a quad plus 100,000)
 };
 
 /**
@@ -47,8 +48,10 @@ struct FacingRepair
  * connected to the vertex's own, crease points included) that makes the worst of its quads best,
  * the worst measured as the smaller of quadFacing and quadScaledJacobian; a vertex whose quads are
  * all fine stays. The connectivity stays (the mesh keeps all quads, manifold, its Euler
- * characteristic); vertices on the boundary of the quad mesh or of the surface stay. When the
- * moves leave more such quads than they found, the mesh is put back.
+ * characteristic); vertices on the boundary of the quad mesh or of the surface stay. The work is
+ * bounded (FacingRepair::measurements), so that where it cannot succeed it stops in about the time
+ * the extraction took. When the moves leave more such quads than they found, the mesh is put
+ * back.
  * @param[in]     V, F, topo the surface the quads lie on
  * @param[in]     surface    SurfaceLocator(V, F)
  * @param[in,out] mesh       the quad mesh: V, vertexTriangle, vertexPoint

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 namespace quadcover
 {
@@ -241,25 +242,36 @@ SurfaceLocator::Hit SurfaceLocator::closest(const Eigen::Vector3d& p) const
 
 std::vector<int> SurfaceLocator::nearlyClosest(const Eigen::Vector3d& p, double slack) const
 {
-  const Hit hit = closest(p);
-  std::vector<int> list;
-  if (hit.triangle < 0)
-  {
-    return list;
-  }
-  const double reach = hit.distance + slack;
+  // one search: every triangle within the closest distance so far plus the slack is kept, and
+  // the ones that the closest found later leaves out are dropped at the end
+  std::vector<std::pair<double, int>> near;
+  double best = std::numeric_limits<double>::infinity();
   const Eigen::Vector3i centre = cellOf(p);
   for (int ring = 0; visitRing(centre, ring, [&](int t) {
-         if (lowerBound(t, p) <= reach && (closestIn(t, p) - p).norm() <= reach)
+         if (lowerBound(t, p) > best + slack)
          {
-           list.push_back(t);
+           return;
+         }
+         const double d = (closestIn(t, p) - p).norm();
+         if (d <= best + slack)
+         {
+           near.emplace_back(d, t);
+           best = std::min(best, d);
          }
        });
        ++ring)
   {
-    if (reach <= beyondRing(p, centre, ring))
+    if (best + slack <= beyondRing(p, centre, ring))
     {
       break;
+    }
+  }
+  std::vector<int> list;
+  for (const auto& [d, t] : near)
+  {
+    if (d <= best + slack)
+    {
+      list.push_back(t);
     }
   }
   std::sort(list.begin(), list.end());
