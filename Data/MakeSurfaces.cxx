@@ -59,6 +59,12 @@ int main(int argc, char* argv[])
       "cube [-1,1]^3 with edges rounded at radius 0.25" },
     { "components.obj", quadcover::makeComponents(50, 0.1, 10.0),
       "50 spheres and tori in a row, sizes 0.1 to 10 (components of very different sizes)" },
+    { "dumbbell.obj", quadcover::makeDumbbell(1.5, 0.8, 0.12, 96, 120),
+      "two bulbs of radius 0.8 joined by a neck of radius 0.12 (a tube whose width varies)" },
+    { "plate.obj", quadcover::makeThinPlate(2.0, 1.0, 0.02, 0.025),
+      "a box 2 x 1 x 0.02 with sharp edges (a part thinner than the quads)" },
+    { "bracket.obj", quadcover::makeBracket(0.05),
+      "a square frame with a hole, a wall and a tab, sharp right-angle creases (CAD-like, genus 1)" },
   };
   for (const Item& item : items)
   {

@@ -6,6 +6,7 @@
 #include <Eigen/Core>
 
 #include <string>
+#include <vector>
 
 namespace quadcover
 {
@@ -51,6 +52,25 @@ Surface makeRoundedCube(double round, int n);
 /// (R = size, r = 0.35 size, 20 x 10) in turn, their sizes growing geometrically from rMin to
 /// rMax, each 0.1 + 0.1 size away from the last: one file of components of very different sizes.
 Surface makeComponents(int count, double rMin, double rMax);
+
+// ---- the stress surfaces (StressSurfaces.cxx) ----
+
+/// A closed surface of revolution around z from -length to length whose radius goes from `bulb`
+/// to `neck` at the middle and back (a tube whose width varies, closed at the poles), with
+/// nAround points on each of nAlong - 1 rings.
+Surface makeDumbbell(double length, double bulb, double neck, int nAround, int nAlong);
+
+/// The closed surface of a union of grid cells of size cellSize (the cells meet face to face, not
+/// only along an edge), each face cut into squares of about `edge` and each square into two
+/// triangles: a CAD-like part with convex and concave right-angle creases, of any genus.
+Surface makeBlocks(
+  const std::vector<Eigen::Vector3i>& cells, const Eigen::Vector3d& cellSize, double edge);
+
+/// A box width x depth x thickness (makeBlocks of one cell): a plate thinner than a quad.
+Surface makeThinPlate(double width, double depth, double thickness, double edge);
+
+/// A square frame with a hole, a wall along one side and a tab on it (makeBlocks; genus 1).
+Surface makeBracket(double edge);
 
 }
 
