@@ -102,7 +102,6 @@ void AddFigures(vtkFieldData* fd, const quadcover::Parameterization& map)
     { double(map.flippedContinuous), double(map.flippedRounded), double(map.flipped) });
   AddField<vtkDoubleArray>(fd, names::ParameterizationEnergy,
     { map.energyContinuous, map.energyRounded, map.energyFinal });
-  AddField<vtkDoubleArray>(fd, names::SolveSeconds, map.solveSeconds);
   AddField<vtkIntArray>(fd, names::SeamEdgeCount, { double(map.seamEdges) });
   AddField<vtkIntArray>(fd, names::AlignedBoundaryEdges, { double(map.alignedBoundaryEdges) });
   AddField<vtkIntArray>(
@@ -187,6 +186,27 @@ void vtkQuadCoverSolver::Execute(vtkQuadCoverSurface& in, vtkInformationVector* 
   output->GetCellData()->AddArray(
     vtkQuadCoverEigen::ToArray<vtkUnsignedCharArray>(map.seam, names::Seam));
   AddFigures(output->GetFieldData(), map);
+  this->SolveSeconds = map.solveSeconds;
+}
+
+//------------------------------------------------------------------------------
+int vtkQuadCoverSolver::RequestData(
+  vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  this->SolveSeconds.clear();
+  return this->Superclass::RequestData(request, inputVector, outputVector);
+}
+
+//------------------------------------------------------------------------------
+int vtkQuadCoverSolver::GetNumberOfSolves() const
+{
+  return static_cast<int>(this->SolveSeconds.size());
+}
+
+//------------------------------------------------------------------------------
+double vtkQuadCoverSolver::GetSolveSeconds(int i) const
+{
+  return i >= 0 && i < this->GetNumberOfSolves() ? this->SolveSeconds[i] : 0.0;
 }
 
 //------------------------------------------------------------------------------
