@@ -199,7 +199,8 @@ void vtkQuadExtractor::Execute(vtkQuadCoverSurface& in, vtkInformationVector* ou
   if (r.patch.holesLeft > 0)
   {
     this->Warn(std::to_string(r.patch.holesLeft) +
-      " holes inside the surface are left open (odd or pinched loops, or a band around a handle)");
+      " holes inside the surface are left open (odd, pinched or very long loops, or a band around "
+      "a handle)");
   }
   if (quads.Q.rows() == 0)
   {
