@@ -7,8 +7,10 @@
 #include <Eigen/Geometry>
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 #include <map>
+#include <set>
 #include <utility>
 #include <vector>
 
@@ -55,44 +57,69 @@ public:
   }
 
   /// Fills the holes, taking in a ring of quads around a fill that would face against the
-  /// surface, up to three times.
+  /// surface, up to three times; a ring whose grown hole is then not filled is put back and the
+  /// hole it was taken around filled as it was. Loops longer than longestLoop() are left open.
   void fillHoles(QuadPatchResult& r)
   {
+    std::vector<Ring> rings; // taken in the round before
     for (int round = 0; round < 4; ++round)
     {
-      std::vector<char> grow(q_.V.rows(), 0);
-      bool growing = false;
+      std::vector<std::vector<int>> growing; // loops to take a ring in around
       const std::vector<Loop> loops = boundaryLoops();
       const std::vector<char> fillable = disksMissing(loops);
+      const std::vector<int> ringAt = ringOfPoints(rings);
+      std::vector<char> unfilled(rings.size(), 0), filled(rings.size(), 0);
       for (const Loop& loop : loops)
       {
-        if (!loop.inside || !fillable[componentOf(loop)])
+        bool done = false;
+        if (loop.inside && fillable[componentOf(loop)] && !loop.pinched &&
+          loop.points.size() % 2 == 0 && loop.points.size() <= longestLoop())
         {
-          continue;
-        }
-        if (loop.pinched || loop.points.size() % 2 != 0)
-        {
-          continue;
-        }
-        Fill fill = bestFill(loop.points);
-        if (fill.turned > 0 && round < 3)
-        {
-          for (const int p : loop.points)
+          Fill fill = bestFill(loop.points);
+          if (fill.turned > 0 && round < 3)
           {
-            grow[p] = 1;
+            growing.push_back(loop.points);
+            continue;
           }
-          growing = true;
+          commit(fill);
+          ++r.holesFilled;
+          r.quadsAdded += static_cast<int>(fill.quads.size());
+          done = true;
+        }
+        for (const int p : loop.points)
+        {
+          if (p < static_cast<int>(ringAt.size()) && ringAt[p] >= 0)
+          {
+            (done ? filled : unfilled)[ringAt[p]] = 1;
+          }
+        }
+      }
+      std::set<std::pair<int, int>> taken; // the mesh's half-edges, once a ring is to go back
+      for (size_t i = 0; i < rings.size(); ++i)
+      {
+        if (!unfilled[i] || filled[i])
+        {
           continue;
         }
-        commit(fill);
-        ++r.holesFilled;
-        r.quadsAdded += static_cast<int>(fill.quads.size());
+        if (taken.empty())
+        {
+          addHalfEdges(taken);
+        }
+        if (putBack(rings[i], taken))
+        {
+          const size_t first = quads_.size();
+          const Fill fill = bestFill(rings[i].loop);
+          commit(fill);
+          addHalfEdges(taken, first);
+          ++r.holesFilled;
+          r.quadsAdded += static_cast<int>(fill.quads.size());
+        }
       }
-      if (!growing)
+      if (growing.empty())
       {
         break;
       }
-      removeTouching(grow);
+      rings = takeIn(growing);
     }
     for (const Loop& loop : boundaryLoops())
     {
@@ -199,20 +226,108 @@ private:
     return triangle < 0 || !(n.dot(triangleNormal(triangle)) > 0);
   }
 
-  /// Removes the quads (not yet removed) with a corner marked, except those that touch the
-  /// surface's boundary (cutting them out would open the hole onto it).
-  void removeTouching(const std::vector<char>& marked)
+  /// A ring of quads taken in around a hole: the hole's loop, and the quads.
+  struct Ring
   {
+    std::vector<int> loop;
+    std::vector<int> quads;
+  };
+
+  /// For each loop, the quads (not yet removed) with a corner on it removed, except those that
+  /// touch the surface's boundary (cutting them out would open the hole onto it); a quad that
+  /// touches two loops goes with the first.
+  std::vector<Ring> takeIn(const std::vector<std::vector<int>>& loops)
+  {
+    std::vector<Ring> rings(loops.size());
+    std::vector<int> owner(q_.V.rows(), -1); // the first loop through each point
+    for (size_t g = loops.size(); g-- > 0;)
+    {
+      rings[g].loop = loops[g];
+      for (const int p : loops[g])
+      {
+        owner[p] = static_cast<int>(g);
+      }
+    }
     for (size_t i = 0; i < quads_.size(); ++i)
     {
-      bool hit = false, boundary = false;
+      int first = -1;
+      bool boundary = false;
       for (int k = 0; k < 4; ++k)
       {
-        hit = hit || marked[quads_[i].corners[k]];
+        const int g = owner[quads_[i].corners[k]];
+        first = g >= 0 && (first < 0 || g < first) ? g : first;
         boundary = boundary || onBoundary_[quads_[i].corners[k]];
       }
-      removed_[i] = removed_[i] || (hit && !boundary);
+      if (!removed_[i] && first >= 0 && !boundary)
+      {
+        removed_[i] = 1;
+        rings[first].quads.push_back(static_cast<int>(i));
+      }
     }
+    return rings;
+  }
+
+  /// Per quad vertex, the ring (index into `rings`) whose quads had it as a corner, or -1.
+  std::vector<int> ringOfPoints(const std::vector<Ring>& rings) const
+  {
+    std::vector<int> ring(q_.V.rows(), -1);
+    for (size_t r = 0; r < rings.size(); ++r)
+    {
+      for (const int i : rings[r].quads)
+      {
+        for (int k = 0; k < 4; ++k)
+        {
+          ring[quads_[i].corners[k]] = static_cast<int>(r);
+        }
+      }
+    }
+    return ring;
+  }
+
+  /// The half-edges (a corner to the next) of the quads from `from` on that are not removed.
+  void addHalfEdges(std::set<std::pair<int, int>>& taken, size_t from = 0) const
+  {
+    for (size_t i = from; i < quads_.size(); ++i)
+    {
+      for (int k = 0; !removed_[i] && k < 4; ++k)
+      {
+        taken.insert({ quads_[i].corners[k], quads_[i].corners[(k + 1) % 4] });
+      }
+    }
+  }
+
+  /// Puts the ring's quads back, unless one of their half-edges is `taken` (by a quad of the
+  /// mesh: a fill committed since), and adds theirs. @return whether they went back
+  bool putBack(const Ring& ring, std::set<std::pair<int, int>>& taken)
+  {
+    for (const int i : ring.quads)
+    {
+      for (int k = 0; k < 4; ++k)
+      {
+        if (taken.count({ quads_[i].corners[k], quads_[i].corners[(k + 1) % 4] }))
+        {
+          return false;
+        }
+      }
+    }
+    for (const int i : ring.quads)
+    {
+      removed_[i] = 0;
+      for (int k = 0; k < 4; ++k)
+      {
+        taken.insert({ quads_[i].corners[k], quads_[i].corners[(k + 1) % 4] });
+      }
+    }
+    return true;
+  }
+
+  /// The longest loop a fill is tried on: a fill costs the loop's length times the triangles
+  /// near it (about ten a loop point), so that, with at most sqrt(#quads) + 64 points, filling a
+  /// hole costs no more than a pass over the mesh; longer loops (the map failed over a large
+  /// part of the surface, and one fan of quads would cover it badly anyway) are left open.
+  size_t longestLoop() const
+  {
+    return static_cast<size_t>(std::sqrt(static_cast<double>(quads_.size()))) + 64;
   }
 
   std::vector<Loop> boundaryLoops() const

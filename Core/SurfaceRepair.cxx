@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <map>
 #include <numeric>
 #include <stdexcept>
 #include <string>
@@ -65,15 +66,20 @@ EdgeGroups groupEdges(const Eigen::MatrixX3i& F)
 }
 
 /**
- * Pairs the n > 2 triangles around one edge (a, b), a < b. Around the edge's axis d = b - a a
- * triangle running a -> b has its normal on the side of positive rotation, so the solid it bounds
- * lies on the side of negative rotation: its partner is its neighbour that way, if that one runs
- * b -> a (agrees in orientation). A triangle of zero area has no side: it only counts among the
- * left over. Two triangles left over are paired with each other (an
- * orientation that disagrees is put right afterwards).
+ * Pairs the n > 2 triangles around one edge (a, b), a < b. First, a patch (`patch`: triangles
+ * joined through edges of two triangles) with exactly two triangles around the edge that agree in
+ * orientation keeps them together: its surface passes through the edge whatever else stands on
+ * it (a fin leaning into the solid it stands on lies between the solid's two faces, next to
+ * both, and would otherwise take one of them, leaving the other joined to the pair around both
+ * points). Then, around the edge's axis d = b - a, a triangle running a -> b has its normal on
+ * the side of positive rotation, so the solid it bounds lies on the side of negative rotation:
+ * its partner is its neighbour that way, if that one runs b -> a (agrees in orientation) and is
+ * not paired yet. A triangle of zero area has no side: it only counts among the left over. Two
+ * triangles left over are paired with each other (an orientation that disagrees is put right
+ * afterwards).
  */
-void pairAroundEdge(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F, const int* corners, int n,
-  std::vector<Glue>& glue)
+void pairAroundEdge(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F,
+  const std::vector<int>& patch, const int* corners, int n, std::vector<Glue>& glue)
 {
   const int a = std::min(tail(F, corners[0]), head(F, corners[0]));
   const int b = std::max(tail(F, corners[0]), head(F, corners[0]));
@@ -109,10 +115,25 @@ void pairAroundEdge(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F, const 
     return x.angle != y.angle ? x.angle < y.angle : x.corner < y.corner;
   });
   std::vector<char> paired(n, 0);
+  std::map<int, std::vector<int>> ofPatch; // the sheets of each patch
+  for (int i = 0; i < n; ++i)
+  {
+    ofPatch[patch[sheets[i].corner / 3]].push_back(i);
+  }
+  for (const auto& [p, members] : ofPatch)
+  {
+    if (members.size() == 2 && sheets[members[0]].forward != sheets[members[1]].forward)
+    {
+      const int i = sheets[members[0]].forward ? members[0] : members[1];
+      const int j = members[0] + members[1] - i;
+      glue.push_back({ sheets[i].corner, sheets[j].corner });
+      paired[i] = paired[j] = 1;
+    }
+  }
   for (int i = 0; i < n; ++i)
   {
     const int j = (i + n - 1) % n; // the neighbour on the side of negative rotation
-    if (sheets[i].forward && !sheets[j].forward)
+    if (sheets[i].forward && !sheets[j].forward && !paired[i] && !paired[j])
     {
       glue.push_back({ sheets[i].corner, sheets[j].corner });
       paired[i] = paired[j] = 1;
@@ -133,10 +154,10 @@ void pairAroundEdge(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F, const 
   }
 }
 
-/// The glue across every edge with exactly two triangles and, with `cut`, the pairs around the
-/// edges with more (their number in cutEdges).
-std::vector<Glue> glueEdges(
-  const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F, bool cut, int* cutEdges)
+/// The glue across every edge with exactly two triangles and, given the patches (the
+/// components of that glue), the pairs around the edges with more (their number in cutEdges).
+std::vector<Glue> glueEdges(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F,
+  const std::vector<int>* patch, int* cutEdges)
 {
   const EdgeGroups groups = groupEdges(F);
   std::vector<Glue> glue;
@@ -147,9 +168,9 @@ std::vector<Glue> glueEdges(
     {
       glue.push_back({ groups.corners[begin], groups.corners[begin + 1] });
     }
-    else if (n > 2 && cut)
+    else if (n > 2 && patch)
     {
-      pairAroundEdge(V, F, groups.corners.data() + begin, n, glue);
+      pairAroundEdge(V, F, *patch, groups.corners.data() + begin, n, glue);
       ++*cutEdges;
     }
   }
@@ -163,9 +184,11 @@ std::vector<Glue> glueEdges(
  * @param[in]  turned   #F, 1 for a triangle already reversed against the input
  * @param[out] conflict the first component that cannot be oriented (0-based), -1 if none
  * @param[out] components the number of components
+ * @param[out] component  #F, each triangle's component
  */
 std::vector<char> orientation(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F,
-  const std::vector<Glue>& glue, const std::vector<char>& turned, int& conflict, int& components)
+  const std::vector<Glue>& glue, const std::vector<char>& turned, int& conflict, int& components,
+  std::vector<int>& component)
 {
   const int nf = static_cast<int>(F.rows());
   // adjacency as CSR: for each face, (neighbour, 1 if the two run the edge the same way)
@@ -185,7 +208,8 @@ std::vector<char> orientation(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i&
     adjacent[fill[g.c1 / 3]++] = { g.c0 / 3, same };
   }
   std::vector<char> reverse(nf, 0);
-  std::vector<int> component(nf, -1), stack, members;
+  component.assign(nf, -1);
+  std::vector<int> stack, members;
   conflict = -1;
   components = 0;
   for (int seed = 0; seed < nf; ++seed)
@@ -299,16 +323,18 @@ ManifoldRepair makeManifold(Eigen::MatrixX3d& V, Eigen::MatrixX3i& F)
 {
   ManifoldRepair repair;
   int conflict = -1, components = 0;
-  // 1. patches oriented first, so that the pairing around cut edges can go by orientation
-  const std::vector<char> first = orientation(
-    V, F, glueEdges(V, F, false, nullptr), std::vector<char>(F.rows(), 0), conflict, components);
+  // 1. patches oriented first, so that the pairing around cut edges can go by patch and
+  // orientation
+  std::vector<int> patch, component;
+  const std::vector<char> first = orientation(V, F, glueEdges(V, F, nullptr, nullptr),
+    std::vector<char>(F.rows(), 0), conflict, components, patch);
   reverseFaces(F, first);
   // 2., 3. the edges cut apart, the points split into their fans (a cut edge whose sheets meet
   // again around both its points keeps more than two triangles: the caller checks and refuses)
-  const std::vector<Glue> glue = glueEdges(V, F, true, &repair.cutEdges);
+  const std::vector<Glue> glue = glueEdges(V, F, &patch, &repair.cutEdges);
   repair.copies = splitFans(V, F, glue);
   // 4. each component oriented as a whole, against the input's orientation
-  const std::vector<char> second = orientation(V, F, glue, first, conflict, components);
+  const std::vector<char> second = orientation(V, F, glue, first, conflict, components, component);
   if (conflict >= 0)
   {
     throw std::invalid_argument("component " + std::to_string(conflict + 1) + " of " +

@@ -36,10 +36,12 @@ struct ManifoldRepair
  * read as a Moebius strip):
  * 1. each patch of triangles joined through edges with exactly two triangles is oriented so that
  *    most of its area keeps the input's orientation;
- * 2. the triangles around an edge with more than two are paired: each with its nearest neighbour
- *    around the edge on its back side when the two agree in orientation (so the faces of solids
- *    that touch along an edge stay with their solid), then two left over with each other; the
- *    rest are cut off there, that edge becoming their boundary;
+ * 2. the triangles around an edge with more than two are paired: the two of a patch that has
+ *    only those two there and agree in orientation with each other (so a solid stays closed
+ *    whatever stands on its edge, a fin leaning into it too), then each with its nearest
+ *    neighbour around the edge on its back side when the two agree in orientation (so the faces
+ *    of solids that touch along an edge stay with their solid), then two left over with each
+ *    other; the rest are cut off there, that edge becoming their boundary;
  * 3. every point whose triangles fall into several fans (joined only through the point, or only
  *    through cut edges) gets one copy per fan;
  * 4. each component is oriented again as a whole, most of its area keeping the input's

@@ -75,14 +75,15 @@ void vtkCurvatureFrames::Execute(vtkQuadCoverSurface& in, vtkInformationVector* 
   output->ShallowCopy(in.polyData);
   vtkCellData* cd = output->GetCellData();
   using vtkQuadCoverEigen::ToArray;
-  cd->AddArray(ToArray(field.curvatures, names::PrincipalCurvatures));
+  // per unit length of the scaled surface (vtkQuadCoverSurface): back to the input's units
+  cd->AddArray(ToArray(in.InWorldUnits(field.curvatures, -1), names::PrincipalCurvatures));
   cd->AddArray(ToArray(field.direction1, names::PrincipalDirection1));
   cd->AddArray(ToArray(field.direction2, names::PrincipalDirection2));
   cd->AddArray(ToArray(field.frameU, names::FrameU));
   cd->AddArray(ToArray(field.frameV, names::FrameV));
   cd->AddArray(ToArray(field.weight, names::FrameWeight));
   vtkQuadCoverEigen::AddField<vtkDoubleArray>(
-    output->GetFieldData(), names::CurvatureRadius, { field.curvatureRadius });
+    output->GetFieldData(), names::CurvatureRadius, { in.InWorldUnits(field.curvatureRadius) });
 }
 
 //------------------------------------------------------------------------------

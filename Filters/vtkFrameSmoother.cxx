@@ -82,8 +82,9 @@ void vtkFrameSmoother::Execute(vtkQuadCoverSurface& in, vtkInformationVector* ou
     Eigen::Map<const Eigen::Matrix<char, Eigen::Dynamic, 1>>(r.constrained.data(), nf),
     names::FrameConstrained));
   vtkFieldData* fd = output->GetFieldData();
-  vtkQuadCoverEigen::AddField<vtkDoubleArray>(
-    fd, names::SmoothingEnergy, { r.energyBefore, r.energyAfter });
+  // area-weighted: an area of the scaled surface (vtkQuadCoverSurface), in the input's units
+  vtkQuadCoverEigen::AddField<vtkDoubleArray>(fd, names::SmoothingEnergy,
+    { in.InWorldUnits(r.energyBefore, 2), in.InWorldUnits(r.energyAfter, 2) });
   vtkQuadCoverEigen::AddField<vtkIntArray>(
     fd, names::SmoothingIterations, { double(r.iterations) });
   vtkQuadCoverEigen::AddField<vtkIntArray>(

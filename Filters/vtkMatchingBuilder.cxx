@@ -66,10 +66,11 @@ void AddFigures(vtkFieldData* fd, const quadcover::MatchingResult& r, const vtkQ
     fd, names::BranchPointObjective, { r.objectiveBefore, r.objectiveAfter });
 }
 
-/// The branch points (non-zero layer shift) as vertices, for glyphs.
+/// The branch points (non-zero layer shift) as vertices at the input's points, for glyphs.
 void WriteBranchPoints(
-  vtkPolyData* out, const quadcover::FrameTopology& t, const Eigen::MatrixX3d& V)
+  vtkPolyData* out, const quadcover::FrameTopology& t, const vtkQuadCoverSurface& in)
 {
+  const Eigen::MatrixXd V = in.InWorldUnits(in.V);
   vtkNew<vtkPoints> points;
   points->SetDataTypeToDouble();
   vtkNew<vtkCellArray> verts;
@@ -174,7 +175,7 @@ void vtkMatchingBuilder::Execute(vtkQuadCoverSurface& in, vtkInformationVector* 
   output->GetPointData()->AddArray(ToArray<vtkIntArray>(r.topology.layerShift, names::LayerShift));
   output->GetPointData()->AddArray(ToArray(r.topology.index, names::SingularityIndex));
   AddFigures(output->GetFieldData(), r, in);
-  WriteBranchPoints(vtkPolyData::GetData(outputVector, 1), r.topology, in.V);
+  WriteBranchPoints(vtkPolyData::GetData(outputVector, 1), r.topology, in);
 }
 
 //------------------------------------------------------------------------------

@@ -30,6 +30,7 @@ vtkQuadCoverSurface LoadSurface(
       throw std::invalid_argument(problem);
     }
     s.polyData->ShallowCopy(input);
+    s.ScaleExponent = vtkQuadCoverInput::UnitScaleExponent(s.polyData);
     return s;
   }
   const std::string problem = vtkQuadCoverInput::Triangulate(input, s.polyData, warning);
@@ -37,7 +38,8 @@ vtkQuadCoverSurface LoadSurface(
   {
     throw std::invalid_argument(problem);
   }
-  s.V = vtkQuadCoverEigen::Points(s.polyData);
+  s.ScaleExponent = vtkQuadCoverInput::UnitScaleExponent(s.polyData);
+  s.V = s.InCoreUnits(vtkQuadCoverEigen::Points(s.polyData), 1);
   s.F = vtkQuadCoverEigen::Triangles(s.polyData);
   s.topo = quadcover::buildTopology(s.F, static_cast<int>(s.V.rows()));
   const quadcover::MeshTopology& T = s.topo;

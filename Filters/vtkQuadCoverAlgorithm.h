@@ -14,6 +14,13 @@
  * stage downstream of an aborted one reports an input without points. The repair and the
  * curvature estimate, linear and quick, only report their steps.
  *
+ * A surface of a size out of the ordinary (the largest side of its bounding box outside
+ * [2^-16, 2^16], e.g. a sphere of radius 1e-160 or 1e150) is computed on scaled by a power of two
+ * to about unit size (that side in [1, 2)), where lengths, areas and curvatures stay well inside
+ * double's range: the scaling is exact, and whatever has units (points, lengths, areas,
+ * curvatures, and TargetEdgeLength) is converted back, so the outputs are in the input's units
+ * and the input's own points pass through untouched.
+ *
  * Subclasses implement Execute and name their action; they throw std::exception (a one-line
  * what(), without a final period) for anything wrong with their input.
  * @sa vtkQuadCoverErrorObserver

@@ -112,8 +112,6 @@ constexpr const char* WindingErrors = "WindingErrors";
 /// field, 1 x double, 3 tuples: sum_f A_f |grad phi - K|^2 / (A |K|^2) of the continuous
 /// minimizer, after rounding, and of the output map (0 is a perfect fit, 1 a constant map).
 constexpr const char* ParameterizationEnergy = "ParameterizationEnergy";
-/// field, 1 x double, one tuple per sparse factorization and solve: seconds.
-constexpr const char* SolveSeconds = "SolveSeconds";
 /// field, 1 x int: edges on the cut graph.
 constexpr const char* SeamEdgeCount = "SeamEdgeCount";
 /// field, 1 x int: boundary edges put on integer grid lines (AlignToBoundary).

@@ -171,15 +171,52 @@ inline quadcover::Progress CoreProgress(vtkAlgorithm* algorithm, double begin, d
 }
 }
 
-/// A stage's input once vtkQuadCoverAlgorithm has checked it (see its InputRequirement): the
-/// surface of triangles (the input itself when it held nothing else) and the core's view of it.
+/**
+ * A stage's input once vtkQuadCoverAlgorithm has checked it (see its InputRequirement): the
+ * surface of triangles (the input itself when it held nothing else) and the core's view of it.
+ *
+ * V is the input's points times 2^ScaleExponent (vtkQuadCoverInput::UnitScaleExponent): 0 for
+ * an ordinary size, else the power of two that brings the surface to about unit size, so that a
+ * surface of 1e-160 or 1e150 has lengths, areas and curvatures well inside double's range and
+ * the core's tolerances see what they were made for. Scaling by a power of two is exact, and so
+ * is the way back: a stage passes lengths given by the user through InCoreUnits and everything
+ * it writes that has units (points, lengths, areas, curvatures) through InWorldUnits; what is
+ * dimensionless (directions, angles, (u, v), ratios, counts) is the same either way. polyData
+ * keeps the input's own points.
+ */
 struct vtkQuadCoverSurface
 {
   vtkSmartPointer<vtkPolyData> polyData;
-  Eigen::MatrixX3d V;           ///< #V x 3 (not filled for ANY_POLYDATA)
+  Eigen::MatrixX3d V;           ///< #V x 3, scaled (not filled for ANY_POLYDATA)
   Eigen::MatrixX3i F;           ///< #F x 3
   quadcover::MeshTopology topo; ///< buildTopology(F, #V)
+  int ScaleExponent = 0;        ///< V = the input's points * 2^ScaleExponent
   vtkIdType NumberOfTriangles() const { return this->F.rows(); }
+
+  /// A quantity of the dimension length^power computed on V, in the input's units (power 1:
+  /// lengths and points, 2: areas, -1: curvatures).
+  double InWorldUnits(double x, int power = 1) const
+  {
+    return std::ldexp(x, -power * this->ScaleExponent);
+  }
+  /// The same for every entry of a matrix.
+  template<typename Derived>
+  Eigen::MatrixXd InWorldUnits(const Eigen::MatrixBase<Derived>& M, int power = 1) const
+  {
+    return M.unaryExpr([this, power](double x) { return this->InWorldUnits(x, power); });
+  }
+  /// A quantity of the dimension length^power in the input's units (a property the user set), in
+  /// the units of V.
+  double InCoreUnits(double x, int power = 1) const
+  {
+    return std::ldexp(x, power * this->ScaleExponent);
+  }
+  /// The same for every entry of a matrix.
+  template<typename Derived>
+  Eigen::MatrixXd InCoreUnits(const Eigen::MatrixBase<Derived>& M, int power = 1) const
+  {
+    return M.unaryExpr([this, power](double x) { return this->InCoreUnits(x, power); });
+  }
 };
 
 #endif

@@ -7,6 +7,7 @@
 #include "vtkPoints.h"
 #include "vtkTriangleFilter.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -159,5 +160,29 @@ std::string Triangulate(vtkPolyData* in, vtkPolyData* out, std::string& warning)
     return "the input's polygons are all degenerate (no triangle left)";
   }
   return "";
+}
+
+int UnitScaleExponent(vtkPolyData* in)
+{
+  if (!in || !in->GetPoints() || in->GetNumberOfPoints() == 0)
+  {
+    return 0;
+  }
+  double b[6];
+  in->GetPoints()->GetBounds(b);
+  // half the largest side: halving first, so that no difference overflows
+  double half = 0.0;
+  for (int axis = 0; axis < 3; ++axis)
+  {
+    half = std::max(half, 0.5 * b[2 * axis + 1] - 0.5 * b[2 * axis]);
+  }
+  // the largest side (2 half) in [2^-16, 2^16]: an ordinary size, computed as it is
+  if ((half >= 0x1p-17 && half <= 0x1p15) || !(half > 0.0) || !std::isfinite(half))
+  {
+    return 0;
+  }
+  // half in [2^k, 2^(k+1)), the largest side in [2^(k+1), 2^(k+2)): times 2^-(k+1) in [1, 2)
+  const int k = std::ilogb(half);
+  return std::clamp(-(k + 1), -1022, 1022);
 }
 }

@@ -25,6 +25,15 @@ VTKQUADCOVERFILTERS_EXPORT std::string CheckPoints(vtkPolyData* input);
  */
 VTKQUADCOVERFILTERS_EXPORT std::string Triangulate(
   vtkPolyData* input, vtkPolyData* output, std::string& warning);
+
+/**
+ * The scale at which the stages compute (vtkQuadCoverSurface): the points times 2^e. 0 when the
+ * largest side of the points' bounding box lies in [2^-16, 2^16] (at those sizes the stages'
+ * tolerances work as they are, and their outputs stay what they were), or when the points all
+ * coincide; else the e that brings the largest side into [1, 2), within [-1022, 1022] so that 2^e
+ * and 2^-e are finite. The points must be finite (CheckPoints).
+ */
+VTKQUADCOVERFILTERS_EXPORT int UnitScaleExponent(vtkPolyData* input);
 }
 
 #endif

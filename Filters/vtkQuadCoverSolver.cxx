@@ -54,10 +54,12 @@ Eigen::MatrixX3i ReadMatching(vtkDataArray* m)
   return values.cast<int>();
 }
 
-/// The surface cut open along the seams: a point per sector, UV its texture coordinates.
+/// The surface cut open along the seams: a point per sector (at the input's point), UV its
+/// texture coordinates.
 void WriteSplitSurface(
   vtkPolyData* output, const vtkQuadCoverSurface& in, const quadcover::Parameterization& map)
 {
+  const Eigen::MatrixXd V = in.InWorldUnits(in.V);
   const vtkIdType ns = static_cast<vtkIdType>(map.sectorPoint.size());
   const vtkIdType nf = in.NumberOfTriangles();
   vtkNew<vtkPoints> points;
@@ -72,7 +74,7 @@ void WriteSplitSurface(
   for (vtkIdType s = 0; s < ns; ++s)
   {
     const int p = map.sectorPoint[s];
-    points->SetPoint(s, in.V(p, 0), in.V(p, 1), in.V(p, 2));
+    points->SetPoint(s, V(p, 0), V(p, 1), V(p, 2));
     outPD->CopyData(inPD, p, s);
     ids->SetValue(s, p);
   }
@@ -92,17 +94,17 @@ void WriteSplitSurface(
   outPD->SetTCoords(vtkQuadCoverEigen::ToArray(map.sectorUV, names::UV));
 }
 
-/// The map's figures as field data.
-void AddFigures(vtkFieldData* fd, const quadcover::Parameterization& map)
+/// The map's figures as field data (the edge length in the input's units).
+void AddFigures(
+  vtkFieldData* fd, const quadcover::Parameterization& map, const vtkQuadCoverSurface& in)
 {
   using vtkQuadCoverEigen::AddField;
-  AddField<vtkDoubleArray>(fd, names::EdgeLength, { map.edgeLength });
+  AddField<vtkDoubleArray>(fd, names::EdgeLength, { in.InWorldUnits(map.edgeLength) });
   AddField<vtkIntArray>(fd, names::WindingErrors, { double(map.wrongWindings) });
   AddField<vtkIntArray>(fd, names::FlippedTriangles,
     { double(map.flippedContinuous), double(map.flippedRounded), double(map.flipped) });
   AddField<vtkDoubleArray>(fd, names::ParameterizationEnergy,
     { map.energyContinuous, map.energyRounded, map.energyFinal });
-  AddField<vtkDoubleArray>(fd, names::SolveSeconds, map.solveSeconds);
   AddField<vtkIntArray>(fd, names::SeamEdgeCount, { double(map.seamEdges) });
   AddField<vtkIntArray>(fd, names::AlignedBoundaryEdges, { double(map.alignedBoundaryEdges) });
   AddField<vtkIntArray>(
@@ -148,7 +150,7 @@ void vtkQuadCoverSolver::Execute(vtkQuadCoverSurface& in, vtkInformationVector* 
   vtkQuadCoverEigen::RequireNumbers({ { "TargetEdgeLength", this->TargetEdgeLength },
     { "BoundaryTolerance", this->BoundaryTolerance } });
   quadcover::ParameterizationOptions options;
-  options.targetEdgeLength = this->TargetEdgeLength;
+  options.targetEdgeLength = in.InCoreUnits(this->TargetEdgeLength); // for the scaled surface
   options.targetQuadCount = this->TargetQuadCount;
   options.pureQuads = this->PureQuads;
   options.roundingMode = CoreRounding(this->RoundingMode);
@@ -186,7 +188,28 @@ void vtkQuadCoverSolver::Execute(vtkQuadCoverSurface& in, vtkInformationVector* 
   output->GetCellData()->AddArray(vtkQuadCoverEigen::ToArray(map.cornerUV, names::CornerUV));
   output->GetCellData()->AddArray(
     vtkQuadCoverEigen::ToArray<vtkUnsignedCharArray>(map.seam, names::Seam));
-  AddFigures(output->GetFieldData(), map);
+  AddFigures(output->GetFieldData(), map, in);
+  this->SolveSeconds = map.solveSeconds;
+}
+
+//------------------------------------------------------------------------------
+int vtkQuadCoverSolver::RequestData(
+  vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  this->SolveSeconds.clear();
+  return this->Superclass::RequestData(request, inputVector, outputVector);
+}
+
+//------------------------------------------------------------------------------
+int vtkQuadCoverSolver::GetNumberOfSolves() const
+{
+  return static_cast<int>(this->SolveSeconds.size());
+}
+
+//------------------------------------------------------------------------------
+double vtkQuadCoverSolver::GetSolveSeconds(int i) const
+{
+  return i >= 0 && i < this->GetNumberOfSolves() ? this->SolveSeconds[i] : 0.0;
 }
 
 //------------------------------------------------------------------------------

@@ -31,8 +31,8 @@
  *
  * Output: the surface with cell data CornerUV (6 x double: u0 v0 u1 v1 u2 v2 at the triangle's
  * points) and Seam (3 x unsigned char: 1 where edge k, from point k to k+1, is on the cut), field
- * data EdgeLength, FlippedTriangles, WindingErrors, ParameterizationEnergy, SolveSeconds,
- * SeamEdgeCount, AlignedBoundaryEdges, BranchPointsOnGrid and SeamTranslationError (see
+ * data EdgeLength, FlippedTriangles, WindingErrors, ParameterizationEnergy, SeamEdgeCount,
+ * AlignedBoundaryEdges, BranchPointsOnGrid and SeamTranslationError (see
  * vtkQuadCoverArrayNames.h). With SplitSeams
  * the surface is cut open along the seams instead: one point per sector of a point between seam
  * edges, point data UV (the active texture coordinates) and SurfacePointId, so a checkerboard
@@ -44,6 +44,8 @@
 
 #include "vtkQuadCoverAlgorithm.h"
 #include "vtkQuadCoverFiltersModule.h" // for export macro
+
+#include <vector> // for std::vector
 
 class VTKQUADCOVERFILTERS_EXPORT vtkQuadCoverSolver : public vtkQuadCoverAlgorithm
 {
@@ -131,10 +133,22 @@ public:
   vtkBooleanMacro(SplitSeams, bool);
   ///@}
 
+  ///@{
+  /**
+   * Wall-clock seconds of each sparse factorization and solve of the last update (the
+   * continuous solve, then one per rounding step that solves again), for timing. Kept out of the
+   * output so that the same input gives the same bytes; 0 solves before an update and after one
+   * that failed or was aborted. GetSolveSeconds(i) is 0 for i out of range.
+   */
+  int GetNumberOfSolves() const;
+  double GetSolveSeconds(int i) const;
+  ///@}
+
 protected:
   vtkQuadCoverSolver();
   ~vtkQuadCoverSolver() override = default;
 
+  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   void Execute(vtkQuadCoverSurface& input, vtkInformationVector* outputVector) override;
 
   // defaults: quadcover::ParameterizationOptions
@@ -150,6 +164,8 @@ protected:
   bool SplitSeams = false;
 
 private:
+  std::vector<double> SolveSeconds; // of the last update
+
   vtkQuadCoverSolver(const vtkQuadCoverSolver&) = delete;
   void operator=(const vtkQuadCoverSolver&) = delete;
 };

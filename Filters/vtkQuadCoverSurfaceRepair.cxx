@@ -65,11 +65,12 @@ vtkIdType UsedPoints(vtkPolyData* pd)
 }
 
 /// Removes the repeated triangles and the components of zero area (quadcover::
-/// redundantTriangles), with their cell data; returns how many.
-vtkIdType RemoveRedundantTriangles(vtkPolyData* surface)
+/// redundantTriangles, on the points scaled as `in` says), with their cell data; returns how
+/// many.
+vtkIdType RemoveRedundantTriangles(vtkPolyData* surface, const vtkQuadCoverSurface& in)
 {
   const std::vector<char> remove = quadcover::redundantTriangles(
-    vtkQuadCoverEigen::Points(surface), vtkQuadCoverEigen::Triangles(surface));
+    in.InCoreUnits(vtkQuadCoverEigen::Points(surface)), vtkQuadCoverEigen::Triangles(surface));
   vtkNew<vtkIdList> kept;
   for (vtkIdType c = 0; c < static_cast<vtkIdType>(remove.size()); ++c)
   {
@@ -113,14 +114,22 @@ vtkIdType RemoveRedundantTriangles(vtkPolyData* surface)
   return removed;
 }
 
-/// Makes `surface` manifold and consistently oriented (quadcover::makeManifold): points copied
-/// with their point data, triangles reversed with their cell normals. Counts go to `counts`.
-void MakeManifold(vtkPolyData* surface, Counts& counts)
+/// Makes `surface` manifold and consistently oriented (quadcover::makeManifold, on the points
+/// scaled as `in` says): points copied with their point data, triangles reversed with their cell
+/// normals. Counts go to `counts`.
+void MakeManifold(vtkPolyData* surface, const vtkQuadCoverSurface& in, Counts& counts)
 {
   const vtkIdType nv = surface->GetNumberOfPoints();
   Eigen::MatrixX3d V = vtkQuadCoverEigen::Points(surface);
+  Eigen::MatrixX3d scaled = in.InCoreUnits(V);
   Eigen::MatrixX3i F = vtkQuadCoverEigen::Triangles(surface);
-  const quadcover::ManifoldRepair repair = quadcover::makeManifold(V, F);
+  const quadcover::ManifoldRepair repair = quadcover::makeManifold(scaled, F);
+  // the output's points: the input's, then the copies (only these were added)
+  V.conservativeResize(nv + static_cast<Eigen::Index>(repair.copies.size()), 3);
+  for (std::size_t i = 0; i < repair.copies.size(); ++i)
+  {
+    V.row(nv + static_cast<Eigen::Index>(i)) = V.row(repair.copies[i]);
+  }
   const quadcover::MeshTopology topo = quadcover::buildTopology(F, static_cast<int>(V.rows()));
   if (!topo.nonManifoldEdges.empty() || !topo.isOriented())
   {
@@ -208,8 +217,8 @@ void vtkQuadCoverSurfaceRepair::Execute(vtkQuadCoverSurface& in, vtkInformationV
   // bowties split, each component oriented.
   vtkPolyData* output = vtkPolyData::GetData(outputVector);
   output->ShallowCopy(cleaned);
-  counts.removedCells += RemoveRedundantTriangles(output);
-  MakeManifold(output, counts);
+  counts.removedCells += RemoveRedundantTriangles(output, in);
+  MakeManifold(output, in, counts);
 
   namespace names = vtkQuadCoverArrayNames;
   vtkFieldData* fd = output->GetFieldData();

@@ -11,10 +11,12 @@
  *   coordinate need (MergedPoints), unused points dropped, and triangles left with a repeated
  *   point removed (RemovedCells);
  * - edges shared by three or more triangles are cut apart into manifold sheets (CutEdges):
- *   around such an edge each triangle stays joined to its nearest neighbour on its back side when
- *   the two agree in orientation, so that solids touching along an edge separate and a fin comes
- *   off the surface it stands on; two triangles left over stay joined; the rest get a boundary
- *   there (quadcover::makeManifold);
+ *   around such an edge the two triangles of a surface that passes through it (joined elsewhere
+ *   through manifold edges, agreeing in orientation) stay joined, and each other triangle to its
+ *   nearest neighbour on its back side when the two agree in orientation, so that solids
+ *   touching along an edge separate and a fin comes off the surface it stands on, one leaning
+ *   into the solid too; two triangles left over stay joined; the rest get a boundary there
+ *   (quadcover::makeManifold);
  * - a point where separate fans of triangles touch (a "bowtie", or the ends of a cut edge) gets
  *   one copy per fan, at the same position, its point data copied along (SplitVertices);
  * - triangles are turned over where they disagree with their neighbours; each connected

@@ -82,16 +82,19 @@ std::string JoinSplitSurface(vtkQuadCoverSurface& in)
   return "";
 }
 
-/// The quads as vtkQuad cells with point data Valence and cell data ScaledJacobian.
-void WriteQuads(vtkPolyData* output, const quadcover::QuadMeshResult& r)
+/// The quads as vtkQuad cells (points in the input's units) with point data Valence and cell
+/// data ScaledJacobian.
+void WriteQuads(
+  vtkPolyData* output, const quadcover::QuadMeshResult& r, const vtkQuadCoverSurface& in)
 {
   const quadcover::QuadMesh& quads = r.mesh;
+  const Eigen::MatrixXd V = in.InWorldUnits(quads.V);
   vtkNew<vtkPoints> points;
   points->SetDataTypeToDouble();
   points->SetNumberOfPoints(quads.V.rows());
   for (Eigen::Index v = 0; v < quads.V.rows(); ++v)
   {
-    points->SetPoint(v, quads.V(v, 0), quads.V(v, 1), quads.V(v, 2));
+    points->SetPoint(v, V(v, 0), V(v, 1), V(v, 2));
   }
   vtkNew<vtkCellArray> polys;
   polys->AllocateExact(quads.Q.rows(), 4 * quads.Q.rows());
@@ -197,7 +200,8 @@ void vtkQuadExtractor::Execute(vtkQuadCoverSurface& in, vtkInformationVector* ou
   if (r.patch.holesLeft > 0)
   {
     this->Warn(std::to_string(r.patch.holesLeft) +
-      " holes inside the surface are left open (odd or pinched loops, or a band around a handle)");
+      " holes inside the surface are left open (odd, pinched or very long loops, or a band around "
+      "a handle)");
   }
   if (quads.Q.rows() == 0)
   {
@@ -205,7 +209,7 @@ void vtkQuadExtractor::Execute(vtkQuadCoverSurface& in, vtkInformationVector* ou
                                 "than the surface?)");
   }
   vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
-  WriteQuads(output, r);
+  WriteQuads(output, r, in);
   AddFigures(output->GetFieldData(), r);
   this->UpdateProgress(0.7);
   if (this->ComputeHausdorffDistance)

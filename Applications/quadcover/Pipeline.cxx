@@ -2,9 +2,9 @@
 
 #include "vtkCellArray.h"
 #include "vtkCommand.h"
+#include "vtkMath.h"
 #include "vtkPolyData.h"
 #include "vtkQuadCoverErrorObserver.h"
-#include "vtkTriangle.h"
 
 #include <algorithm>
 #include <chrono>
@@ -19,8 +19,9 @@ namespace quadcover_app
 {
 namespace
 {
-/// The sum of the areas of the surface's polygons (triangles after the repair).
-double SurfaceArea(vtkPolyData* surface)
+/// The surface's area in squares of side `length` (> 0): the triangles' edges are divided by
+/// `length` first, so that the sum stays in double's range for a surface of any size.
+double AreaInSquares(vtkPolyData* surface, double length)
 {
   double area = 0.0;
   vtkCellArray* polys = surface->GetPolys();
@@ -34,7 +35,14 @@ double SurfaceArea(vtkPolyData* surface)
       surface->GetPoint(ids[0], a);
       surface->GetPoint(ids[1], b);
       surface->GetPoint(ids[2], c);
-      area += vtkTriangle::TriangleArea(a, b, c);
+      double u[3], v[3], w[3];
+      for (int k = 0; k < 3; ++k)
+      {
+        u[k] = b[k] / length - a[k] / length;
+        v[k] = c[k] / length - a[k] / length;
+      }
+      vtkMath::Cross(u, v, w);
+      area += 0.5 * vtkMath::Norm(w);
     }
   }
   return area;
@@ -153,7 +161,7 @@ std::string Pipeline::CheckQuadCount() const
   const long long triangles = surface->GetNumberOfPolys();
   const double length = this->Solver->GetTargetEdgeLength();
   // each component's minimum comes on top of its share, at most
-  const double quads = (length > 0.0 ? SurfaceArea(surface) / (length * length)
+  const double quads = (length > 0.0 ? AreaInSquares(surface, length)
                                      : static_cast<double>(this->Solver->GetTargetQuadCount())) +
     static_cast<double>(this->Solver->GetMinimumComponentQuadCount()) *
       static_cast<double>(ComponentCount(surface));

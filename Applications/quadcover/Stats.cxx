@@ -68,14 +68,14 @@ std::string Snake(const std::string& name)
 }
 
 /// A field array's value: a number (one value), a list of values (one component) or a list
-/// of tuples. Arrays with a tuple per item (a solve, an index) are lists however many there are.
+/// of tuples. Arrays with a tuple per item (an index) are lists however many there are.
 std::string JsonArray(vtkDataArray* a)
 {
   namespace names = vtkQuadCoverArrayNames;
   const vtkIdType n = a->GetNumberOfTuples();
   const int comps = a->GetNumberOfComponents();
   const std::string name = a->GetName() ? a->GetName() : "";
-  const bool list = name == names::SolveSeconds || name == names::SingularityHistogram;
+  const bool list = name == names::SingularityHistogram;
   if (n == 1 && comps == 1 && !list)
   {
     return JsonNumber(a->GetComponent(0, 0));
@@ -147,6 +147,17 @@ std::string StatsJson(const Request& request, vtkPolyData* input, const Pipeline
   {
     vtkPolyData* out = vtkPolyData::SafeDownCast(pipeline.Filter(s)->GetOutputDataObject(0));
     std::string members = AddedFields(out, previous);
+    if (Pipeline::StageNames()[s] == "param")
+    {
+      // the solves' seconds, which the solver keeps out of its output (a list however many)
+      std::string seconds;
+      for (int i = 0; i < pipeline.Solver->GetNumberOfSolves(); ++i)
+      {
+        seconds += (i ? ", " : "") + JsonNumber(pipeline.Solver->GetSolveSeconds(i));
+      }
+      members +=
+        (members.empty() ? "" : ", ") + std::string("\"solve_seconds\": [") + seconds + "]";
+    }
     if (Pipeline::StageNames()[s] == "quads")
     {
       members = "\"vertices\": " + std::to_string(out->GetNumberOfPoints()) +

@@ -13,6 +13,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <functional>
 #include <map>
 #include <random>
 
@@ -200,6 +201,77 @@ TEST(QuadPatching, FillsHolesInsideTheSurfaceWithQuads)
   EXPECT_EQ(m.eulerCharacteristic, 2);
   EXPECT_EQ(m.vertices, static_cast<int>(q.V.rows())) << "no unused vertex";
   EXPECT_GT(m.minScaledJacobian, 0.0);
+}
+
+namespace
+{
+/// q without the quads for which `drop` says so.
+void dropQuads(QuadMesh& q, const std::function<bool(int)>& drop)
+{
+  Eigen::MatrixX4i kept(q.Q.rows(), 4);
+  std::vector<int> keptTriangle;
+  int n = 0;
+  for (int i = 0; i < static_cast<int>(q.Q.rows()); ++i)
+  {
+    if (!drop(i))
+    {
+      kept.row(n++) = q.Q.row(i);
+      keptTriangle.push_back(q.quadTriangle[i]);
+    }
+  }
+  q.Q = kept.topRows(n);
+  q.quadTriangle = keptTriangle;
+}
+}
+
+TEST(QuadPatching, LeavesALoopTooLongForOneFillOpen)
+{
+  // all but a cap of the sphere gone: one hole, whose loop is far longer than a fan of quads
+  // around one point should cover (and its fill would cost the loop's length times the
+  // triangles near it)
+  const Chain c = runChain(testSurface("sphere"), 6000);
+  QuadMesh q = extractQuads(c.s.V, c.s.F, c.topo, c.map.cornerUV);
+  dropQuads(q, [&](int i) {
+    double z = 0;
+    for (int k = 0; k < 4; ++k)
+    {
+      z += q.V(q.Q(i, k), 2) / 4;
+    }
+    return z > -0.6;
+  });
+  const QuadQuality holed = measureQuads(q.V, q.Q);
+  ASSERT_EQ(holed.boundaryLoops, 1);
+  ASSERT_GT(holed.boundaryEdges, std::sqrt(static_cast<double>(q.Q.rows())) + 64);
+  const Eigen::MatrixX4i before = q.Q;
+  const QuadPatchResult r = patchQuadMesh(c.s.V, c.s.F, c.topo, q);
+  EXPECT_EQ(r.holesFilled, 0);
+  EXPECT_EQ(r.holesLeft, 1);
+  EXPECT_EQ(q.Q.rows(), before.rows());
+}
+
+TEST(QuadPatching, PutsBackARingTakenInWhenTheGrownHoleCannotBeFilled)
+{
+  // a torus whose tube is three quads around: one quad out, its hole's four points swapped
+  // two by two so that a quad filling it faces against the surface; the ring of quads taken in
+  // for a better fill wraps around the tube, a band no fill may close, so the ring goes back and
+  // the hole gets its quad
+  const Chain c = runChain(testSurface("torus"), 24);
+  QuadMesh q = extractQuads(c.s.V, c.s.F, c.topo, c.map.cornerUV);
+  const int before = static_cast<int>(q.Q.rows());
+  const Eigen::RowVector4i hole = q.Q.row(0);
+  dropQuads(q, [](int i) { return i == 0; });
+  const Eigen::RowVector3d p1 = q.V.row(hole[1]);
+  q.V.row(hole[1]) = q.V.row(hole[3]);
+  q.V.row(hole[3]) = p1;
+  const QuadPatchResult r = patchQuadMesh(c.s.V, c.s.F, c.topo, q);
+  EXPECT_EQ(r.holesFilled, 1);
+  EXPECT_EQ(r.holesLeft, 0);
+  EXPECT_EQ(r.quadsAdded, 1);
+  const QuadQuality m = measureQuads(q.V, q.Q);
+  EXPECT_EQ(m.faces, before) << "the ring back, and the hole's quad";
+  EXPECT_EQ(m.boundaryEdges, 0);
+  EXPECT_EQ(m.nonManifoldEdges, 0);
+  EXPECT_EQ(m.eulerCharacteristic, 0);
 }
 
 TEST(QuadPatching, FindsTheQuadsThatFaceAgainstTheSurface)

@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
+#include <string>
 #include <vector>
 
 using namespace quadcover;
@@ -162,6 +163,50 @@ TEST(MakeManifold, AFinIsCutOffTheBox)
   EXPECT_EQ(r.cutEdges, 1);
   EXPECT_EQ(shape(s), (Shape{ { 1, 1 }, { 2, 0 } })); // the fin a disk, the box closed
   EXPECT_NEAR(signedVolume(s, 12), 1.0, 1e-12) << "the box still faces outwards";
+}
+
+TEST(MakeManifold, AFinLeaningIntoTheBoxIsCutOffToo)
+{
+  // A fin of two triangles standing on a box edge and reaching into the box: around the edge
+  // it lies between the box's two faces on the solid's side, next to both. Standing on the top
+  // edge from (0,0,1) to (1,0,1) (two faces at a right angle), and on the top face's diagonal
+  // from (0,0,1) to (1,1,1) (two faces in one plane); each way round.
+  const double fins[2][4][3] = {
+    { { 0, 0, 1 }, { 1, 0, 1 }, { 1, 0.5, 0.5 }, { 0, 0.5, 0.5 } }, // into the box from its edge
+    { { 0, 0, 1 }, { 1, 1, 1 }, { 1, 1, 0.25 }, { 0, 0, 0.25 } },   // hanging from the diagonal
+  };
+  for (int placement = 0; placement < 2; ++placement)
+  {
+    for (const bool turned : { false, true })
+    {
+      Surface s;
+      appendBox(s, 0, 0, 0);
+      const int base = static_cast<int>(s.V.rows());
+      s.V.conservativeResize(base + 4, 3);
+      for (int i = 0; i < 4; ++i)
+      {
+        s.V.row(base + i) << fins[placement][i][0], fins[placement][i][1], fins[placement][i][2];
+      }
+      s.F.conservativeResize(14, 3);
+      s.F.row(12) << base, base + 1, base + 2;
+      s.F.row(13) << base, base + 2, base + 3;
+      if (turned)
+      {
+        std::swap(s.F(12, 1), s.F(12, 2));
+        std::swap(s.F(13, 1), s.F(13, 2));
+      }
+      weld(s);
+      ASSERT_EQ(s.V.rows(), 10);
+      SCOPED_TRACE(std::string(placement == 0 ? "on the top edge" : "on the diagonal") +
+        (turned ? ", turned" : ""));
+      ManifoldRepair r;
+      ASSERT_NO_THROW(r = makeManifold(s.V, s.F));
+      EXPECT_EQ(r.cutEdges, 1);
+      EXPECT_EQ(r.copies.size(), 2u) << "the fin's own copies of the edge's two points";
+      EXPECT_EQ(shape(s), (Shape{ { 1, 1 }, { 2, 0 } })); // the fin a disk, the box closed
+      EXPECT_NEAR(signedVolume(s, 12), 1.0, 1e-12) << "the box closed, facing outwards";
+    }
+  }
 }
 
 TEST(MakeManifold, AZeroAreaSliverOnAnEdgeDoesNotStealItsPair)

@@ -151,6 +151,38 @@ TEST(vtkQuadCoverSolver, MissingOrBrokenArraysAreErrors)
   }
 }
 
+TEST(vtkQuadCoverSolver, SolveSecondsAreKeptOutOfTheOutput)
+{
+  const Surface sphere = makeIcosphere(1.0, 2);
+  Chain chain(vtkQuadCoverEigen::ToPolyData(sphere.V, sphere.F));
+  EXPECT_EQ(chain.solver->GetNumberOfSolves(), 0) << "before an update";
+  vtkPolyData* out = chain.Run();
+  ASSERT_EQ(chain.errors->GetError(), "");
+  // greedy rounding: the continuous solve, then the solve with the integers fixed
+  ASSERT_GE(chain.solver->GetNumberOfSolves(), 2);
+  for (int i = 0; i < chain.solver->GetNumberOfSolves(); ++i)
+  {
+    EXPECT_GE(chain.solver->GetSolveSeconds(i), 0.0);
+  }
+  EXPECT_EQ(chain.solver->GetSolveSeconds(-1), 0.0);
+  EXPECT_EQ(chain.solver->GetSolveSeconds(chain.solver->GetNumberOfSolves()), 0.0);
+  // no array of the output holds a time
+  vtkFieldData* fd = out->GetFieldData();
+  for (int i = 0; i < fd->GetNumberOfArrays(); ++i)
+  {
+    const std::string name = fd->GetArrayName(i) ? fd->GetArrayName(i) : "";
+    EXPECT_EQ(name.find("Seconds"), std::string::npos) << name;
+  }
+  // a failed update leaves no solves behind
+  vtkNew<vtkPolyData> noMatching;
+  noMatching->DeepCopy(chain.matching->GetOutput());
+  noMatching->GetCellData()->RemoveArray(names::Matching);
+  chain.solver->SetInputData(noMatching);
+  chain.solver->Update();
+  EXPECT_NE(chain.errors->GetError(), "");
+  EXPECT_EQ(chain.solver->GetNumberOfSolves(), 0);
+}
+
 TEST(vtkQuadCoverSolver, SplitSeamsCutsTheSurfaceOpenWithTextureCoordinates)
 {
   const Surface knot = makeKnotTube(2, 3, 1.0, 0.4, 0.12, 240, 20, 0.3, 0.03, 7);

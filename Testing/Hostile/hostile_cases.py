@@ -264,19 +264,27 @@ def spheres_touching(folder):
                   _obj_text((both, faces + [tuple(remap[i] for i in f[::-1]) for f in faces])))
 
 
-def fin_on_a_box(folder):
-    # a square fin standing on the box's top edge y = 1, z = 1
-    points, faces = m.box(n=4)
-    points = list(points)
-    edge = [i for i, p in enumerate(points) if abs(p[1] - 1) < 1e-9 and abs(p[2] - 1) < 1e-9]
-    edge.sort(key=lambda i: points[i][0])
-    top = []
-    for i in edge:
-        top.append(len(points))
-        points.append((points[i][0], 1.0, 1.5))
-    for k in range(len(edge) - 1):
-        faces += [(edge[k], edge[k + 1], top[k + 1]), (edge[k], top[k + 1], top[k])]
-    return _write(folder, "fin.obj", _obj_text((points, faces)))
+def _box_with_fin(name, tip):
+    # a square fin standing on the box's top edge y = 1, z = 1, its far edge at (x, tip[0], tip[1])
+    def make(folder):
+        points, faces = m.box(n=4)
+        points = list(points)
+        edge = [i for i, p in enumerate(points) if abs(p[1] - 1) < 1e-9 and abs(p[2] - 1) < 1e-9]
+        edge.sort(key=lambda i: points[i][0])
+        top = []
+        for i in edge:
+            top.append(len(points))
+            points.append((points[i][0], tip[0], tip[1]))
+        for k in range(len(edge) - 1):
+            faces += [(edge[k], edge[k + 1], top[k + 1]), (edge[k], top[k + 1], top[k])]
+        return _write(folder, name, _obj_text((points, faces)))
+    return make
+
+
+fin_on_a_box = _box_with_fin("fin.obj", (1.0, 1.5))
+# leaning into the box: around the edge the fin lies between the box's two faces, on the
+# solid's side
+fin_into_a_box = _box_with_fin("fin_into.obj", (0.4, 0.7))
 
 
 def moebius(folder):
@@ -339,6 +347,7 @@ CASES = {
     "boxes_sharing_an_edge": (boxes_sharing_an_edge, Quads(2, 4)),
     "spheres_touching": (spheres_touching, Quads(2, 4)),
     "fin_on_a_box": (fin_on_a_box, Quads(2, 3)),
+    "fin_into_a_box": (fin_into_a_box, Quads(2, 3)),
     "moebius": (moebius, Refused("orientable")),
 }
 
