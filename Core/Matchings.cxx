@@ -166,6 +166,22 @@ std::string checkMatching(const MeshTopology& topo, const Eigen::MatrixX3i& matc
   return "";
 }
 
+namespace
+{
+/// Whether an inner point has a singularity of index >= 1/2.
+bool hasHighSingularity(const FrameTopology& topology)
+{
+  for (Eigen::Index v = 0; v < topology.index.size(); ++v)
+  {
+    if (topology.index[v] >= 0.5 - 1e-9)
+    {
+      return true;
+    }
+  }
+  return false;
+}
+}
+
 MatchingResult buildMatchings(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F,
   const MeshTopology& topo, const FrameGeometry& geometry, const Eigen::MatrixX3d& frameU,
   const Eigen::MatrixX3d& frameV, const Eigen::VectorXd& weight,
@@ -187,11 +203,17 @@ MatchingResult buildMatchings(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i&
     scaledMatchingCost(F, topo, geometry, r.topology, bp.lengthScaledCost);
   r.objectiveAfter = r.objectiveBefore;
   progress.report(0.1);
-  if (options.optimizeBranchPoints)
+  if (options.optimizeBranchPoints || (bp.splitDistance > 0 && hasHighSingularity(r.topology)))
   {
+    // without the optimization, singularities of index >= 1/2 are still split (only that): no
+    // quad mesh has a vertex of valence 2, 1 or 0, and the map cannot follow such a field
+    BranchPointOptions run = bp;
+    run.branchPointWeight = options.optimizeBranchPoints ? bp.branchPointWeight : 0.0;
     r.report =
-      optimizeBranchPoints(F, topo, geometry, frameU, r.topology, bp, progress.part(0.1, 0.8));
-    r.objectiveAfter = r.report.costAfter;
+      optimizeBranchPoints(F, topo, geometry, frameU, r.topology, run, progress.part(0.1, 0.8));
+    r.objectiveAfter = options.optimizeBranchPoints ? r.report.costAfter
+                                                    : bp.branchPointWeight * r.topology.singularities +
+        scaledMatchingCost(F, topo, geometry, r.topology, bp.lengthScaledCost);
   }
   r.frameU = frameU;
   r.frameV = frameV;

@@ -161,7 +161,9 @@ std::string checkMatching(const MeshTopology& topo, const Eigen::MatrixX3i& matc
 /// The whole matching stage (vtkMatchingBuilder): what it runs and with which weights.
 struct MatchingOptions
 {
-  /// Run optimizeBranchPoints after the smallest-angle matchings.
+  /// Run optimizeBranchPoints after the smallest-angle matchings. Without it, inner
+  /// singularities of index >= 1/2 are still split into quarters (optimizeBranchPoints with a
+  /// branch-point weight of 0): no quad mesh follows such a field.
   bool optimizeBranchPoints = true;
   BranchPointOptions branchPoints;
   /// After the optimization changed matchings, turn the frames so that they agree with them

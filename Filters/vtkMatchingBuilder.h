@@ -53,7 +53,9 @@ public:
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   ///@{
-  /** Run the branch-point optimization of Sect. 4.2 (default on). */
+  /** Run the branch-point optimization of Sect. 4.2 (default on). Off, singularities of index
+   * >= 1/2 are still split into quarter ones (no quad mesh has vertices of valence 2, 1 or 0,
+   * and the map cannot follow such a field); nothing is merged. */
   vtkSetMacro(OptimizeBranchPoints, bool);
   vtkGetMacro(OptimizeBranchPoints, bool);
   vtkBooleanMacro(OptimizeBranchPoints, bool);
