@@ -62,9 +62,10 @@ class LocalEnergy
 {
 public:
   LocalEnergy(const Untangler& untangler, std::vector<int> columns, const std::vector<int>& faces,
-    const Eigen::VectorXd& x)
+    const Eigen::VectorXd& x, int& evaluations)
     : untangler_(untangler)
     , columns_(std::move(columns))
+    , evaluations_(evaluations)
   {
     const int m = size();
     std::vector<int> slotOf(x.size(), -1);
@@ -102,7 +103,7 @@ public:
   }
 
   int size() const { return static_cast<int>(columns_.size()); }
-  /// How often evaluate was called: the measure of the work done.
+  /// How often evaluate was called (a counter the caller keeps): the measure of the work done.
   int evaluations() const { return evaluations_; }
   bool spent() const { return untangler_.spent(); }
 
@@ -166,16 +167,20 @@ public:
     return total;
   }
 
-  /// The smallest Jacobian determinant of the energy's faces at y.
-  double minDet(const Eigen::VectorXd& y)
+  /// The smallest Jacobian determinant of the energy's faces at y, and how many are not
+  /// positive.
+  std::pair<double, int> folds(const Eigen::VectorXd& y)
   {
     z_.head(size()) = y;
     double lowest = std::numeric_limits<double>::max();
+    int count = 0;
     for (int j = 0; j < static_cast<int>(scale_.size()); ++j)
     {
-      lowest = std::min(lowest, jacobian(j).determinant());
+      const double det = jacobian(j).determinant();
+      lowest = std::min(lowest, det);
+      count += det <= 0;
     }
-    return lowest;
+    return { lowest, count };
   }
 
 private:
@@ -203,7 +208,7 @@ private:
   std::vector<int> slot_;           // per term: the slot of its symbol
   Eigen::VectorXd z_;               // per slot: the free unknowns, then the fixed symbols
   Eigen::VectorXd gradient_;        // per slot
-  int evaluations_ = 0;
+  int& evaluations_;
 };
 
 /// The L-BFGS direction for gradient g from the pairs (S, Y) (the two-loop recursion).
@@ -293,6 +298,39 @@ double minimize(LocalEnergy& energy, Eigen::VectorXd& y, double eps, const Progr
   }
   return e;
 }
+
+/// Rounds of minimize with eps shrinking with the most negative determinant, until the energy's
+/// faces are unfolded and the energy settles, maxRounds are done or the rounds stall.
+void untangle(LocalEnergy& energy, Eigen::VectorXd& y, int maxRounds, const Progress& progress)
+{
+  double previous = std::numeric_limits<double>::max();
+  // A run that stalls stops: when for Patience rounds in a row no triangle came right and the
+  // most negative determinant did not rise by 1%, more rounds of the same region rarely help
+  // (they repeated the same minimum up to maxRounds); the caller's next, larger region may.
+  constexpr int Patience = 3;
+  std::pair<double, int> best = energy.folds(y);
+  int stalled = 0;
+  for (int round = 0; round < maxRounds && energy.size() > 0 && !energy.spent(); ++round)
+  {
+    const double lowest = energy.folds(y).first;
+    const double eps = lowest < 0 ? std::sqrt(1e-8 + 0.04 * lowest * lowest) : 1e-8;
+    const double e = minimize(energy, y, eps, progress);
+    const std::pair<double, int> after = energy.folds(y);
+    if (after.first > 0 && previous - e <= 1e-3 * std::abs(e))
+    {
+      break;
+    }
+    previous = e;
+    const bool better =
+      after.second < best.second || after.first > best.first + 0.01 * std::abs(best.first);
+    best = { std::max(best.first, after.first), std::min(best.second, after.second) };
+    stalled = better ? 0 : stalled + 1;
+    if (stalled >= Patience)
+    {
+      break;
+    }
+  }
+}
 }
 
 std::vector<int> Untangler::freeColumns(
@@ -347,22 +385,10 @@ void Untangler::run(const MeshTopology& topo, const Eigen::MatrixX3i& F,
   // free unknowns: the real ones the region's rows use; energy: every face they touch
   std::vector<int> columns = freeColumns(regionAround(topo, F, flipped, rings), frozen);
   const std::vector<int> faces = facesUsing(columns);
-  LocalEnergy energy(*this, std::move(columns), faces, x);
-  const int m = energy.size();
+  int evaluations = 0;
+  LocalEnergy energy(*this, std::move(columns), faces, x, evaluations);
   Eigen::VectorXd y = energy.restrictTo(x);
-  double previous = std::numeric_limits<double>::max();
-  for (int round = 0; round < maxRounds && m > 0 && !spent(); ++round)
-  {
-    const double lowest = energy.minDet(y);
-    const double eps = lowest < 0 ? std::sqrt(1e-8 + 0.04 * lowest * lowest) : 1e-8;
-    const double e = minimize(energy, y, eps, progress);
-    const double after = energy.minDet(y);
-    if (after > 0 && previous - e <= 1e-3 * std::abs(e))
-    {
-      break;
-    }
-    previous = e;
-  }
+  untangle(energy, y, maxRounds, progress);
   energy.scatter(y, x);
 }
 }
