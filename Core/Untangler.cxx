@@ -51,22 +51,59 @@ std::vector<char> regionAround(
   return inRegion;
 }
 
-/// The untangling energy as a function of the free unknowns y alone: the others stay as in the
-/// map it started from.
+/**
+ * The untangling energy as a function of the free unknowns y alone: the others stay as in the
+ * map it started from. The rows of the energy's faces are copied once into a compact form over
+ * slots (the free unknowns first, then every fixed symbol the rows use, with its value), so that
+ * an evaluation reads contiguous memory instead of D's rows scattered over the whole surface;
+ * the arithmetic is D's, term by term in the same order.
+ */
 class LocalEnergy
 {
 public:
-  LocalEnergy(const Untangler& untangler, std::vector<int> columns, std::vector<int> faces,
-    const Eigen::VectorXd& x)
+  LocalEnergy(const Untangler& untangler, std::vector<int> columns, const std::vector<int>& faces,
+    const Eigen::VectorXd& x, int& evaluations)
     : untangler_(untangler)
     , columns_(std::move(columns))
-    , faces_(std::move(faces))
-    , full_(x)
-    , gradFull_(Eigen::VectorXd::Zero(x.size()))
-  {}
+    , evaluations_(evaluations)
+  {
+    const int m = size();
+    std::vector<int> slotOf(x.size(), -1);
+    std::vector<double> z;
+    z.reserve(2 * columns_.size());
+    for (int i = 0; i < m; ++i)
+    {
+      slotOf[columns_[i]] = i;
+      z.push_back(x[columns_[i]]);
+    }
+    rowBegin_.reserve(4 * faces.size() + 1);
+    rowBegin_.push_back(0);
+    scale_.reserve(faces.size());
+    for (const int f : faces)
+    {
+      scale_.push_back(untangler.sqrtArea[f]);
+      for (int i = 0; i < 4; ++i)
+      {
+        for (RowMajorMatrix::InnerIterator it(untangler.Dr, 4 * f + i); it; ++it)
+        {
+          int& slot = slotOf[it.col()];
+          if (slot < 0)
+          {
+            slot = static_cast<int>(z.size());
+            z.push_back(x[it.col()]);
+          }
+          coefficient_.push_back(it.value());
+          slot_.push_back(slot);
+        }
+        rowBegin_.push_back(static_cast<int>(slot_.size()));
+      }
+    }
+    z_ = Eigen::Map<const Eigen::VectorXd>(z.data(), static_cast<Eigen::Index>(z.size()));
+    gradient_ = Eigen::VectorXd::Zero(z_.size());
+  }
 
   int size() const { return static_cast<int>(columns_.size()); }
-  /// How often evaluate was called: the measure of the work done.
+  /// How often evaluate was called (a counter the caller keeps): the measure of the work done.
   int evaluations() const { return evaluations_; }
   bool spent() const { return untangler_.spent(); }
 
@@ -96,37 +133,82 @@ public:
     ++evaluations_;
     if (untangler_.work)
     {
-      *untangler_.work -= static_cast<long long>(faces_.size());
+      *untangler_.work -= static_cast<long long>(scale_.size());
     }
-    scatter(y, full_);
-    for (const int c : columns_)
+    z_.head(size()) = y;
+    gradient_.setZero();
+    const double theta = untangler_.theta;
+    double total = 0.0;
+    for (int j = 0; j < static_cast<int>(scale_.size()); ++j)
     {
-      gradFull_[c] = 0.0;
+      const Eigen::Matrix2d J = jacobian(j);
+      const double det = J.determinant();
+      const double root = std::sqrt(eps * eps + det * det);
+      const double chi = 0.5 * (det + root);
+      const double chiPrime = 0.5 * (1.0 + det / root);
+      const double trace = J.squaredNorm();
+      const double area = scale_[j] * scale_[j];
+      total += area * ((1 - theta) * trace / chi + theta * (det * det + 1) / chi);
+      Eigen::Matrix2d dDet;
+      dDet << J(1, 1), -J(1, 0), -J(0, 1), J(0, 0);
+      const Eigen::Matrix2d dE =
+        (1 - theta) * (2.0 * J / chi - trace * chiPrime / (chi * chi) * dDet) +
+        theta * (2.0 * det / chi - (det * det + 1) * chiPrime / (chi * chi)) * dDet;
+      for (int i = 0; i < 4; ++i)
+      {
+        const double gi = area * dE(i / 2, i % 2) * untangler_.edgeLength / scale_[j];
+        for (int t = rowBegin_[4 * j + i]; t < rowBegin_[4 * j + i + 1]; ++t)
+        {
+          gradient_[slot_[t]] += gi * coefficient_[t];
+        }
+      }
     }
-    const double e = untangler_.energy(faces_, full_, eps, &gradFull_);
-    g = restrictTo(gradFull_);
-    return e;
+    g = gradient_.head(size());
+    return total;
   }
 
-  /// The smallest Jacobian determinant of the energy's faces at y.
-  double minDet(const Eigen::VectorXd& y)
+  /// The smallest Jacobian determinant of the energy's faces at y, and how many are not
+  /// positive.
+  std::pair<double, int> folds(const Eigen::VectorXd& y)
   {
-    scatter(y, full_);
+    z_.head(size()) = y;
     double lowest = std::numeric_limits<double>::max();
-    for (const int f : faces_)
+    int count = 0;
+    for (int j = 0; j < static_cast<int>(scale_.size()); ++j)
     {
-      lowest = std::min(lowest, untangler_.jacobian(f, full_).determinant());
+      const double det = jacobian(j).determinant();
+      lowest = std::min(lowest, det);
+      count += det <= 0;
     }
-    return lowest;
+    return { lowest, count };
   }
 
 private:
+  /// The Jacobian of the energy's face j at the slots' values, relative to the unit cell.
+  Eigen::Matrix2d jacobian(int j) const
+  {
+    Eigen::Matrix2d J;
+    for (int i = 0; i < 4; ++i)
+    {
+      double value = 0.0;
+      for (int t = rowBegin_[4 * j + i]; t < rowBegin_[4 * j + i + 1]; ++t)
+      {
+        value += coefficient_[t] * z_[slot_[t]];
+      }
+      J(i / 2, i % 2) = value * untangler_.edgeLength / scale_[j];
+    }
+    return J;
+  }
+
   const Untangler& untangler_;
   const std::vector<int> columns_;
-  const std::vector<int> faces_;
-  Eigen::VectorXd full_;
-  Eigen::VectorXd gradFull_;
-  int evaluations_ = 0;
+  std::vector<double> scale_;       // per face of the energy: sqrt of its area
+  std::vector<int> rowBegin_;       // per row (4 per face): where its terms begin
+  std::vector<double> coefficient_; // per term: D's coefficient
+  std::vector<int> slot_;           // per term: the slot of its symbol
+  Eigen::VectorXd z_;               // per slot: the free unknowns, then the fixed symbols
+  Eigen::VectorXd gradient_;        // per slot
+  int& evaluations_;
 };
 
 /// The L-BFGS direction for gradient g from the pairs (S, Y) (the two-loop recursion).
@@ -216,55 +298,39 @@ double minimize(LocalEnergy& energy, Eigen::VectorXd& y, double eps, const Progr
   }
   return e;
 }
-}
 
-Eigen::Matrix2d Untangler::jacobian(int f, const Eigen::VectorXd& x) const
+/// Rounds of minimize with eps shrinking with the most negative determinant, until the energy's
+/// faces are unfolded and the energy settles, maxRounds are done or the rounds stall.
+void untangle(LocalEnergy& energy, Eigen::VectorXd& y, int maxRounds, const Progress& progress)
 {
-  Eigen::Matrix2d J;
-  for (int i = 0; i < 4; ++i)
+  double previous = std::numeric_limits<double>::max();
+  // A run that stalls stops: when for Patience rounds in a row no triangle came right and the
+  // most negative determinant did not rise by 1%, more rounds of the same region rarely help
+  // (they repeated the same minimum up to maxRounds); the caller's next, larger region may.
+  constexpr int Patience = 3;
+  std::pair<double, int> best = energy.folds(y);
+  int stalled = 0;
+  for (int round = 0; round < maxRounds && energy.size() > 0 && !energy.spent(); ++round)
   {
-    double value = 0.0;
-    for (RowMajorMatrix::InnerIterator it(Dr, 4 * f + i); it; ++it)
+    const double lowest = energy.folds(y).first;
+    const double eps = lowest < 0 ? std::sqrt(1e-8 + 0.04 * lowest * lowest) : 1e-8;
+    const double e = minimize(energy, y, eps, progress);
+    const std::pair<double, int> after = energy.folds(y);
+    if (after.first > 0 && previous - e <= 1e-3 * std::abs(e))
     {
-      value += it.value() * x[it.col()];
+      break;
     }
-    J(i / 2, i % 2) = value * edgeLength / sqrtArea[f];
-  }
-  return J;
-}
-
-double Untangler::energy(const std::vector<int>& faces, const Eigen::VectorXd& x, double eps,
-  Eigen::VectorXd* gradient) const
-{
-  double total = 0.0;
-  for (const int f : faces)
-  {
-    const Eigen::Matrix2d J = jacobian(f, x);
-    const double det = J.determinant();
-    const double root = std::sqrt(eps * eps + det * det);
-    const double chi = 0.5 * (det + root);
-    const double chiPrime = 0.5 * (1.0 + det / root);
-    const double trace = J.squaredNorm();
-    const double area = sqrtArea[f] * sqrtArea[f];
-    total += area * ((1 - theta) * trace / chi + theta * (det * det + 1) / chi);
-    if (gradient)
+    previous = e;
+    const bool better =
+      after.second < best.second || after.first > best.first + 0.01 * std::abs(best.first);
+    best = { std::max(best.first, after.first), std::min(best.second, after.second) };
+    stalled = better ? 0 : stalled + 1;
+    if (stalled >= Patience)
     {
-      Eigen::Matrix2d dDet;
-      dDet << J(1, 1), -J(1, 0), -J(0, 1), J(0, 0);
-      const Eigen::Matrix2d dE =
-        (1 - theta) * (2.0 * J / chi - trace * chiPrime / (chi * chi) * dDet) +
-        theta * (2.0 * det / chi - (det * det + 1) * chiPrime / (chi * chi)) * dDet;
-      for (int i = 0; i < 4; ++i)
-      {
-        const double g = area * dE(i / 2, i % 2) * edgeLength / sqrtArea[f];
-        for (RowMajorMatrix::InnerIterator it(Dr, 4 * f + i); it; ++it)
-        {
-          (*gradient)[it.col()] += g * it.value();
-        }
-      }
+      break;
     }
   }
-  return total;
+}
 }
 
 std::vector<int> Untangler::freeColumns(
@@ -318,23 +384,11 @@ void Untangler::run(const MeshTopology& topo, const Eigen::MatrixX3i& F,
 {
   // free unknowns: the real ones the region's rows use; energy: every face they touch
   std::vector<int> columns = freeColumns(regionAround(topo, F, flipped, rings), frozen);
-  std::vector<int> faces = facesUsing(columns);
-  LocalEnergy energy(*this, std::move(columns), std::move(faces), x);
-  const int m = energy.size();
+  const std::vector<int> faces = facesUsing(columns);
+  int evaluations = 0;
+  LocalEnergy energy(*this, std::move(columns), faces, x, evaluations);
   Eigen::VectorXd y = energy.restrictTo(x);
-  double previous = std::numeric_limits<double>::max();
-  for (int round = 0; round < maxRounds && m > 0 && !spent(); ++round)
-  {
-    const double lowest = energy.minDet(y);
-    const double eps = lowest < 0 ? std::sqrt(1e-8 + 0.04 * lowest * lowest) : 1e-8;
-    const double e = minimize(energy, y, eps, progress);
-    const double after = energy.minDet(y);
-    if (after > 0 && previous - e <= 1e-3 * std::abs(e))
-    {
-      break;
-    }
-    previous = e;
-  }
+  untangle(energy, y, maxRounds, progress);
   energy.scatter(y, x);
 }
 }

@@ -41,13 +41,6 @@ struct Untangler
 
   bool spent() const { return work && *work <= 0; }
 
-  /// The Jacobian of triangle f in the map x (symbols) relative to the unit cell.
-  Eigen::Matrix2d jacobian(int f, const Eigen::VectorXd& x) const;
-
-  /// Energy of the listed triangles; with `gradient`, adds dE/dx.
-  double energy(const std::vector<int>& faces, const Eigen::VectorXd& x, double eps,
-    Eigen::VectorXd* gradient) const;
-
   /// Untangles around `flipped` (faces), moving real unknowns not `frozen` (empty: none is);
   /// callers recount the flips. Reports once per L-BFGS iteration
   /// (approaching 1, as the number of iterations is not known beforehand).
