@@ -212,9 +212,10 @@ void spreadHops(const Steps& steps, int limit, std::vector<int> front, std::vect
 }
 
 /// Where one quarter of a's index can go: the end of the cheapest path (ties: fewer edges) over
-/// regular points to one at least splitDistance edges from a along the path and outside every
+/// regular points to one at least `distance` edges from a along the path and outside every
 /// neighbourhood `hops` marks; -1 when the search finds none.
-int findSplitTarget(Optimizer& o, int a, const std::vector<int>& hops, std::vector<int>& pathHops)
+int findSplitTarget(
+  Optimizer& o, int a, int distance, const std::vector<int>& hops, std::vector<int>& pathHops)
 {
   PathSearch& S = o.search;
   S.begin(a);
@@ -229,7 +230,7 @@ int findSplitTarget(Optimizer& o, int a, const std::vector<int>& hops, std::vect
       continue;
     }
     ++visited;
-    if (u != a && pathHops[u] >= o.options.splitDistance &&
+    if (u != a && pathHops[u] >= distance &&
       hops[u] == std::numeric_limits<int>::max())
     {
       return u;
@@ -255,7 +256,8 @@ int findSplitTarget(Optimizer& o, int a, const std::vector<int>& hops, std::vect
 /// turns once around a point (index 1 maps to a corner of angle 0), and index 1/2 makes a quad
 /// vertex of valence 2. Each quarter moves along the cheapest path to a regular point at least
 /// splitDistance edges from the singularity, from the quarters placed before and from other
-/// singularities.
+/// singularities; where there is no such point (a coarse surface), at least one edge fewer, down
+/// to one.
 void splitHighSingularities(Optimizer& o, BranchPointReport& report, const Progress& progress)
 {
   const int nv = o.topo.numVertices;
@@ -277,7 +279,6 @@ void splitHighSingularities(Optimizer& o, BranchPointReport& report, const Progr
     while (o.q[a] > 0)
     {
       progress.report(static_cast<double>(i) / static_cast<double>(high.size()));
-      std::fill(hops.begin(), hops.end(), std::numeric_limits<int>::max());
       std::vector<int> others;
       for (int v = 0; v < nv; ++v)
       {
@@ -286,8 +287,13 @@ void splitHighSingularities(Optimizer& o, BranchPointReport& report, const Progr
           others.push_back(v);
         }
       }
-      spreadHops(o.steps, o.options.splitDistance, others, hops);
-      const int target = findSplitTarget(o, a, hops, pathHops);
+      int target = -1;
+      for (int distance = o.options.splitDistance; distance >= 1 && target < 0; --distance)
+      {
+        std::fill(hops.begin(), hops.end(), std::numeric_limits<int>::max());
+        spreadHops(o.steps, distance, others, hops);
+        target = findSplitTarget(o, a, distance, hops, pathHops);
+      }
       if (target < 0)
       {
         ++report.splitFailed;

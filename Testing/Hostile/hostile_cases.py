@@ -224,6 +224,15 @@ def cube_12(folder):
     return _write(folder, "cube.obj", _obj_text(m.box()))
 
 
+def coarse_cone(folder):
+    return _write(folder, "cone.obj", _obj_text(m.cone()))
+
+
+def needle_sphere(folder):
+    # 4 rings of 200 needles, 10 degrees from pole to pole and under 2 across
+    return _write(folder, "needles.obj", _obj_text(m.uv_sphere(4, 200)))
+
+
 def genus_5(folder):
     return _write(folder, "genus5.obj", _obj_text(m.genus(5)))
 
@@ -340,6 +349,8 @@ CASES = {
     "degenerate_next_to_sphere": (degenerate_next_to_sphere, Quads(1, 2)),
     "stray_collinear_triangle": (stray_collinear_triangle, Quads(1, 2)),
     "cube_12": (cube_12, Quads(1, 2)),
+    "coarse_cone": (coarse_cone, Quads(1, 2)),
+    "needle_sphere": (needle_sphere, Quads(1, 2)),
     "genus_5": (genus_5, Quads(1, -8)),
     "twenty_spheres": (twenty_spheres, Quads(20, 40)),
     # cut apart: one pair of the three stays joined or none does; every piece is a disk

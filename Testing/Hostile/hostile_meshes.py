@@ -97,6 +97,40 @@ def genus(holes, n=2):
     return voxels(cells, n)
 
 
+def cone(around=64, height=2.0, radius=1.0):
+    """A closed cone as VTK's cone source makes it: a fan of long needles around the tip and
+    another around the centre of the base (2 * around triangles)."""
+    points = [(0.0, 0.0, height), (0.0, 0.0, 0.0)]
+    faces = []
+    for i in range(around):
+        a = 2 * math.pi * i / around
+        points.append((radius * math.cos(a), radius * math.sin(a), 0.0))
+        p, q = 2 + i, 2 + (i + 1) % around
+        faces += [(0, p, q), (1, q, p)]
+    return points, faces
+
+
+def uv_sphere(rings, segments, radius=1.0):
+    """A sphere of latitude rings and longitude segments, closed by a fan at each pole: with
+    many more segments than rings, a sphere of needles."""
+    points = [(0.0, 0.0, -radius), (0.0, 0.0, radius)]
+    for j in range(1, rings):
+        t = math.pi * j / rings
+        for i in range(segments):
+            a = 2 * math.pi * i / segments
+            points.append((radius * math.sin(t) * math.cos(a), radius * math.sin(t) * math.sin(a),
+                           -radius * math.cos(t)))
+    ring = lambda j, i: 2 + (j - 1) * segments + i % segments
+    faces = []
+    for i in range(segments):
+        faces.append((0, ring(1, i + 1), ring(1, i)))
+        faces.append((1, ring(rings - 1, i), ring(rings - 1, i + 1)))
+        for j in range(1, rings - 1):
+            faces += [(ring(j, i), ring(j, i + 1), ring(j + 1, i + 1)),
+                      (ring(j, i), ring(j + 1, i + 1), ring(j + 1, i))]
+    return points, faces
+
+
 def moebius(around=48, across=4, radius=1.0, width=0.3):
     """A Moebius strip: a band whose ends are glued after half a turn."""
     points = []
