@@ -26,6 +26,9 @@ constexpr const char* ReorientedTriangles = "ReorientedTriangles";
 constexpr const char* CutEdges = "CutEdges";
 /// copies of a point added where separate fans of triangles touched at it
 constexpr const char* SplitVertices = "SplitVertices";
+/// triangles of components too coarse for a map (MinimumComponentTriangleCount), split into four
+/// at their edges' midpoints, again until the component had enough
+constexpr const char* RefinedTriangles = "RefinedTriangles";
 
 // ---- vtkCurvatureFrames (cell data, one tuple per triangle) ----
 /// 2 x double: kappa1 >= kappa2. Positive where the surface bends away from its normal

@@ -16,9 +16,12 @@
 #include "vtkTriangleFilter.h"
 
 #include "MeshTopology.h"
+#include "SurfaceRefinement.h"
 #include "SurfaceRepair.h"
 
 #include <algorithm>
+#include <map>
+#include <vector>
 #include <stdexcept>
 
 vtkStandardNewMacro(vtkQuadCoverSurfaceRepair);
@@ -34,6 +37,7 @@ struct Counts
   vtkIdType reorientedTriangles = 0;
   vtkIdType cutEdges = 0;
   vtkIdType splitVertices = 0;
+  vtkIdType refinedTriangles = 0;
 };
 
 /// Updates a VTK filter on `input`; its first error is thrown.
@@ -163,11 +167,71 @@ void MakeManifold(vtkPolyData* surface, const vtkQuadCoverSurface& in, Counts& c
   surface->GetPointData()->ShallowCopy(pointData);
   surface->SetPolys(made->GetPolys());
 }
+
+/// Refines the components of `surface` with fewer than `minimum` triangles
+/// (quadcover::refineCoarseComponents): point data interpolated at the midpoints, cell data
+/// copied to the parts. Counts go to `counts`.
+void RefineCoarseComponents(vtkPolyData* surface, int minimum, Counts& counts)
+{
+  Eigen::MatrixX3d V = vtkQuadCoverEigen::Points(surface);
+  Eigen::MatrixX3i F = vtkQuadCoverEigen::Triangles(surface);
+  const vtkIdType nv = surface->GetNumberOfPoints();
+  const quadcover::Refinement r = quadcover::refineCoarseComponents(V, F, minimum);
+  counts.refinedTriangles = r.refinedTriangles;
+  if (r.refinedTriangles == 0)
+  {
+    return;
+  }
+  vtkSmartPointer<vtkPolyData> made = vtkQuadCoverEigen::ToPolyData(V, F);
+  // each midpoint's weights over the input's points (at most a triangle's three corners)
+  std::vector<std::map<vtkIdType, double>> weights(r.midpoints.size());
+  auto weightsOf = [&](int p) {
+    return p < nv ? std::map<vtkIdType, double>{ { p, 1.0 } } : weights[p - nv];
+  };
+  vtkNew<vtkPointData> pointData;
+  pointData->InterpolateAllocate(surface->GetPointData(), V.rows());
+  for (vtkIdType p = 0; p < nv; ++p)
+  {
+    pointData->CopyData(surface->GetPointData(), p, p);
+  }
+  vtkNew<vtkIdList> ids;
+  std::vector<double> w;
+  for (std::size_t i = 0; i < r.midpoints.size(); ++i)
+  {
+    for (const int end : r.midpoints[i])
+    {
+      for (const auto& [p, x] : weightsOf(end))
+      {
+        weights[i][p] += 0.5 * x;
+      }
+    }
+    ids->Reset();
+    w.clear();
+    for (const auto& [p, x] : weights[i])
+    {
+      ids->InsertNextId(p);
+      w.push_back(x);
+    }
+    pointData->InterpolatePoint(
+      surface->GetPointData(), nv + static_cast<vtkIdType>(i), ids, w.data());
+  }
+  vtkNew<vtkCellData> cellData;
+  cellData->CopyAllocate(surface->GetCellData(), F.rows());
+  for (vtkIdType t = 0; t < F.rows(); ++t)
+  {
+    cellData->CopyData(surface->GetCellData(), r.parent[t], t);
+  }
+  surface->SetPoints(made->GetPoints());
+  surface->SetPolys(made->GetPolys());
+  surface->GetPointData()->ShallowCopy(pointData);
+  surface->GetCellData()->ShallowCopy(cellData);
+}
 }
 
 //------------------------------------------------------------------------------
 vtkQuadCoverSurfaceRepair::vtkQuadCoverSurfaceRepair()
   : vtkQuadCoverAlgorithm(ANY_POLYDATA, "repair the surface")
+  , MinimumComponentTriangleCount(quadcover::RefinementOptions().minimumComponentTriangleCount)
 {}
 
 //------------------------------------------------------------------------------
@@ -219,6 +283,7 @@ void vtkQuadCoverSurfaceRepair::Execute(vtkQuadCoverSurface& in, vtkInformationV
   output->ShallowCopy(cleaned);
   counts.removedCells += RemoveRedundantTriangles(output, in);
   MakeManifold(output, in, counts);
+  RefineCoarseComponents(output, this->MinimumComponentTriangleCount, counts);
 
   namespace names = vtkQuadCoverArrayNames;
   vtkFieldData* fd = output->GetFieldData();
@@ -229,10 +294,12 @@ void vtkQuadCoverSurfaceRepair::Execute(vtkQuadCoverSurface& in, vtkInformationV
   AddField<vtkIntArray>(fd, names::ReorientedTriangles, { double(counts.reorientedTriangles) });
   AddField<vtkIntArray>(fd, names::CutEdges, { double(counts.cutEdges) });
   AddField<vtkIntArray>(fd, names::SplitVertices, { double(counts.splitVertices) });
+  AddField<vtkIntArray>(fd, names::RefinedTriangles, { double(counts.refinedTriangles) });
 }
 
 //------------------------------------------------------------------------------
 void vtkQuadCoverSurfaceRepair::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
+  os << indent << "MinimumComponentTriangleCount: " << this->MinimumComponentTriangleCount << "\n";
 }

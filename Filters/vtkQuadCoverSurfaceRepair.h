@@ -21,7 +21,12 @@
  *   one copy per fan, at the same position, its point data copied along (SplitVertices);
  * - triangles are turned over where they disagree with their neighbours; each connected
  *   component keeps the orientation of most of its area (ReorientedTriangles; a cell `Normals`
- *   array turns with its triangles).
+ *   array turns with its triangles);
+ * - every triangle of a component with fewer than MinimumComponentTriangleCount triangles is
+ *   split into four at its edges' midpoints, again until the component has that many
+ *   (RefinedTriangles; point data interpolated, cell data copied to the parts): a coarse cone,
+ *   fans of long needles around its tips, leaves a map no room (quadcover::refineCoarseComponents).
+ *   The points stay and the new ones lie on the old edges: the surface does not change.
  * The input's point, cell and field data are kept (cell data follow the triangles).
  *
  * Errors (no output): no points, point ids out of range, NaN or infinite coordinates, no
@@ -42,11 +47,21 @@ public:
   vtkTypeMacro(vtkQuadCoverSurfaceRepair, vtkQuadCoverAlgorithm);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
+  ///@{
+  /** Components with fewer triangles than this are refined until they have as many, in
+   * [0, 100000] (default 256; 0 refines none). */
+  vtkSetClampMacro(MinimumComponentTriangleCount, int, 0, 100000);
+  vtkGetMacro(MinimumComponentTriangleCount, int);
+  ///@}
+
 protected:
   vtkQuadCoverSurfaceRepair();
   ~vtkQuadCoverSurfaceRepair() override = default;
 
   void Execute(vtkQuadCoverSurface& input, vtkInformationVector* outputVector) override;
+
+  // default: quadcover::RefinementOptions
+  int MinimumComponentTriangleCount;
 
 private:
   vtkQuadCoverSurfaceRepair(const vtkQuadCoverSurfaceRepair&) = delete;

@@ -287,6 +287,7 @@ std::string Option::Text(double value) const
 
 std::vector<Option> StageOptions(Pipeline& p)
 {
+  vtkQuadCoverSurfaceRepair* repair = p.Repair;
   vtkCurvatureFrames* curvature = p.Curvature;
   vtkFrameSmoother* smoother = p.Smoother;
   vtkMatchingBuilder* matching = p.Matching;
@@ -296,6 +297,8 @@ std::vector<Option> StageOptions(Pipeline& p)
   rounding.kind = Option::Kind::Choice;
   rounding.choices = { "none", "simple", "greedy" }; // vtkQuadCoverSolver::ROUNDING_*
   return {
+    QC_NUMBER("repair", repair, MinimumComponentTriangleCount,
+      "refine components with fewer triangles (the surface stays), 0: none"),
     QC_NUMBER("curvature", curvature, NeighborhoodRadius,
       "radius of the curvature neighbourhood, in median edge lengths"),
     QC_NUMBER("curvature", curvature, NumberOfThreads, "worker threads, 0 for all cores"),
@@ -432,8 +435,9 @@ void PrintUsage(std::ostream& os, const std::vector<Option>& options)
         "triangulated, vertex and line cells dropped, exactly coincident points merged,\n"
         "triangles with a repeated point removed, edges of more than two triangles cut apart\n"
         "into manifold sheets, a point where separate fans of triangles touch split into one\n"
-        "copy per fan, and triangles reoriented to agree with their neighbours (each\n"
-        "component keeping the orientation of most of its area).\n"
+        "copy per fan, triangles reoriented to agree with their neighbours (each\n"
+        "component keeping the orientation of most of its area), and the triangles of\n"
+        "components too coarse for a map split at their edges' midpoints.\n"
         "Refused: missing, unreadable or empty files, unknown extensions, no polygons, point\n"
         "ids out of range, NaN or infinite coordinates, surfaces whose triangles all have\n"
         "zero area, non-orientable components (a Moebius strip).\n"

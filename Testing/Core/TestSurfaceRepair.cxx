@@ -1,5 +1,6 @@
 // Tests of makeManifold: non-manifold edges cut apart into sheets, fans split, orientation.
 #include "MeshTopology.h"
+#include "SurfaceRefinement.h"
 #include "SurfaceRepair.h"
 #include "TestSurfaces.h"
 
@@ -317,4 +318,60 @@ TEST(RedundantTriangles, RepeatsAndComponentsWithoutAreaGo)
     }
   }
   EXPECT_EQ(removed, (std::vector<int>{ nf, nf + 1, nf + 2 }));
+}
+
+TEST(RefineCoarseComponents, SplitsOnlyTheCoarseComponentsKeepingTheSurface)
+{
+  // a 12-triangle box beside a sphere of 5,120 triangles
+  Surface s = testSurface("sphere");
+  const int sphereFaces = static_cast<int>(s.F.rows());
+  appendBox(s, 3.0, 0.0, 0.0);
+  const Surface before = s;
+  const MeshTopology topoBefore = buildTopology(s.F, static_cast<int>(s.V.rows()));
+  const Refinement r = refineCoarseComponents(s.V, s.F, 256);
+  EXPECT_EQ(r.refinedTriangles, 12);
+  EXPECT_EQ(s.F.rows(), sphereFaces + 12 * 64) << "the box split three times: 768 >= 256";
+  ASSERT_EQ(static_cast<Eigen::Index>(r.parent.size()), s.F.rows());
+  EXPECT_EQ(s.V.topRows(before.V.rows()), before.V) << "the points stay where they were";
+  ASSERT_EQ(static_cast<Eigen::Index>(r.midpoints.size()), s.V.rows() - before.V.rows());
+  for (std::size_t i = 0; i < r.midpoints.size(); ++i)
+  {
+    const Eigen::Index p = before.V.rows() + static_cast<Eigen::Index>(i);
+    EXPECT_EQ(s.V.row(p), 0.5 * (s.V.row(r.midpoints[i][0]) + s.V.row(r.midpoints[i][1])));
+  }
+  // each input triangle's parts cover it exactly, facing the same way
+  std::vector<Eigen::Vector3d> area(before.F.rows(), Eigen::Vector3d::Zero());
+  for (Eigen::Index t = 0; t < s.F.rows(); ++t)
+  {
+    const Eigen::Vector3d a = s.V.row(s.F(t, 0)), b = s.V.row(s.F(t, 1)), c = s.V.row(s.F(t, 2));
+    area[r.parent[t]] += 0.5 * (b - a).cross(c - a);
+  }
+  for (Eigen::Index t = 0; t < before.F.rows(); ++t)
+  {
+    const Eigen::Vector3d a = before.V.row(before.F(t, 0)), b = before.V.row(before.F(t, 1)),
+                          c = before.V.row(before.F(t, 2));
+    EXPECT_LT((area[t] - 0.5 * (b - a).cross(c - a)).norm(), 1e-12) << "triangle " << t;
+  }
+  // the sphere's triangles are the same ones, in order
+  EXPECT_EQ(s.F.topRows(sphereFaces), before.F.topRows(sphereFaces));
+  const MeshTopology topo = buildTopology(s.F, static_cast<int>(s.V.rows()));
+  EXPECT_TRUE(topo.isManifold());
+  EXPECT_TRUE(topo.isOriented());
+  EXPECT_EQ(topo.numComponents(), 2);
+  EXPECT_EQ(topo.eulerCharacteristic(), topoBefore.eulerCharacteristic());
+  EXPECT_TRUE(topo.boundaryLoops.empty());
+}
+
+TEST(RefineCoarseComponents, LeavesASurfaceWithEnoughTrianglesAsItIs)
+{
+  Surface s = testSurface("sphere");
+  const Surface before = s;
+  for (const int minimum : { 0, 256, static_cast<int>(s.F.rows()) })
+  {
+    const Refinement r = refineCoarseComponents(s.V, s.F, minimum);
+    EXPECT_EQ(r.refinedTriangles, 0);
+    EXPECT_TRUE(r.midpoints.empty());
+    EXPECT_EQ(s.V, before.V);
+    EXPECT_EQ(s.F, before.F);
+  }
 }

@@ -5,6 +5,7 @@
 #include "vtkCurvatureFrames.h"
 #include "vtkDoubleArray.h"
 #include "vtkFieldData.h"
+#include "vtkIntArray.h"
 #include "vtkNew.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
@@ -63,9 +64,15 @@ struct Repaired
   }
 };
 
-Repaired Repair(vtkPolyData* input)
+/// The repair of `input`; the tests of the other repairs use surfaces of a few triangles, which
+/// the refinement of coarse components (off unless `refine`) would split.
+Repaired Repair(vtkPolyData* input, bool refine = false)
 {
   vtkNew<vtkQuadCoverSurfaceRepair> repair;
+  if (!refine)
+  {
+    repair->SetMinimumComponentTriangleCount(0);
+  }
   vtkNew<vtkQuadCoverErrorObserver> errors;
   errors->Attach(repair);
   repair->SetInputData(input);
@@ -302,4 +309,81 @@ TEST(vtkQuadCoverSurfaceRepair, RefusesWhatItCannotRepair)
     EXPECT_EQ(r.error.find('\n'), std::string::npos) << r.error;
     EXPECT_EQ(r.output->GetNumberOfPoints(), 0) << c.reason;
   }
+}
+
+TEST(vtkQuadCoverSurfaceRepair, RefinesACoarseConeInterpolatingItsData)
+{
+  // a closed cone of 2 x 32 triangles (a fan of needles around its tip, another around the
+  // centre of its base), point data a linear function of position, cell data the cell's id
+  std::vector<std::vector<double>> points{ { 0, 0, 2 }, { 0, 0, 0 } };
+  std::vector<std::vector<vtkIdType>> cells;
+  const int n = 32;
+  for (int i = 0; i < n; ++i)
+  {
+    const double a = 2 * 3.14159265358979323846 * i / n;
+    points.push_back({ std::cos(a), std::sin(a), 0 });
+    const vtkIdType p = 2 + i, q = 2 + (i + 1) % n;
+    cells.push_back({ 0, p, q });
+    cells.push_back({ 1, q, p });
+  }
+  vtkSmartPointer<vtkPolyData> in = Make(points, cells);
+  vtkNew<vtkDoubleArray> height;
+  height->SetName("Height");
+  for (vtkIdType p = 0; p < in->GetNumberOfPoints(); ++p)
+  {
+    double x[3];
+    in->GetPoint(p, x);
+    height->InsertNextValue(3 * x[0] - x[1] + 2 * x[2]);
+  }
+  in->GetPointData()->AddArray(height);
+  vtkNew<vtkIntArray> cellId;
+  cellId->SetName("CellId");
+  for (vtkIdType c = 0; c < in->GetNumberOfCells(); ++c)
+  {
+    cellId->InsertNextValue(static_cast<int>(c));
+  }
+  in->GetCellData()->AddArray(cellId);
+
+  Repaired r = Repair(in, true);
+  ASSERT_EQ(r.error, "");
+  EXPECT_EQ(r.Count(names::RefinedTriangles), 2 * n);
+  EXPECT_EQ(r.output->GetNumberOfPolys(), 2 * n * 4) << "64 -> 256 triangles";
+  const quadcover::MeshTopology topo = Topology(r.output);
+  EXPECT_TRUE(topo.isManifold() && topo.isOriented() && topo.isClosed());
+  EXPECT_EQ(topo.eulerCharacteristic(), 2);
+  vtkDataArray* h = r.output->GetPointData()->GetArray("Height");
+  ASSERT_NE(h, nullptr);
+  for (vtkIdType p = 0; p < r.output->GetNumberOfPoints(); ++p)
+  {
+    double x[3];
+    r.output->GetPoint(p, x);
+    EXPECT_NEAR(h->GetTuple1(p), 3 * x[0] - x[1] + 2 * x[2], 1e-12) << "point " << p;
+  }
+  // each part keeps its triangle's id, and lies in it (its centre within the parent's plane)
+  vtkDataArray* id = r.output->GetCellData()->GetArray("CellId");
+  ASSERT_NE(id, nullptr);
+  for (vtkIdType c = 0; c < r.output->GetNumberOfCells(); ++c)
+  {
+    const vtkIdType parent = static_cast<vtkIdType>(id->GetTuple1(c));
+    double centre[3] = { 0, 0, 0 }, a[3], b[3], d[3];
+    for (int k = 0; k < 3; ++k)
+    {
+      double x[3];
+      r.output->GetPoint(r.output->GetCell(c)->GetPointId(k), x);
+      for (int j = 0; j < 3; ++j)
+        centre[j] += x[j] / 3;
+    }
+    in->GetPoint(in->GetCell(parent)->GetPointId(0), a);
+    in->GetPoint(in->GetCell(parent)->GetPointId(1), b);
+    in->GetPoint(in->GetCell(parent)->GetPointId(2), d);
+    const Eigen::Vector3d pa(a), pb(b), pd(d), pc(centre);
+    const Eigen::Vector3d normal = (pb - pa).cross(pd - pa).normalized();
+    EXPECT_NEAR((pc - pa).dot(normal), 0.0, 1e-12) << "cell " << c;
+  }
+  // without refinement the cone stays as it was
+  vtkNew<vtkQuadCoverSurfaceRepair> off;
+  off->SetMinimumComponentTriangleCount(0);
+  off->SetInputData(in);
+  off->Update();
+  EXPECT_EQ(off->GetOutput()->GetNumberOfPolys(), 2 * n);
 }

@@ -479,9 +479,14 @@ class CommandLine(unittest.TestCase):
                        "0 0 0 1 0 0 0 1 0 1 1 0 3 0 0 4 0 0 3 1 0 4 1 0\n"
                        "TRIANGLE_STRIPS 1 11\n10 0 1 2 3 3 4 4 5 6 7\n")
         out = os.path.join(self.dir, "strip.vtp")
-        code, _, err = run(p, "-o", out, "--stage", "curvature")
+        code, _, err = run(p, "-o", out, "--stage", "curvature",
+                           "--minimum-component-triangle-count", "0")
         self.assertEqual(code, 0, err)
         self.assertEqual(self.check_frames(out).GetNumberOfCells(), 4)
+        # refined by default: each of the two squares' two triangles into 4^4 (512 >= 256)
+        code, _, err = run(p, "-o", out, "--stage", "curvature")
+        self.assertEqual(code, 0, err)
+        self.assertEqual(self.check_frames(out).GetNumberOfCells(), 4 * 256)
 
     def test_user_frames_reach_the_filter(self):
         # A torus with FrameU = z everywhere: kept (projected) unless --no-use-input-frames.
