@@ -21,6 +21,22 @@ using detail::residual;
 using detail::turning;
 using detail::twinEdge;
 
+namespace
+{
+/// An inner point of index 1/2 or more (what optimizeBranchPoints splits into quarters).
+bool hasHighSingularity(const MeshTopology& topo, const FrameTopology& topology)
+{
+  for (int v = 0; v < topo.numVertices; ++v)
+  {
+    if (!topo.boundaryVertex[v] && topology.index[v] > 0.5 - 1e-6)
+    {
+      return true;
+    }
+  }
+  return false;
+}
+}
+
 FrameGeometry computeFrameGeometry(
   const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F, const MeshTopology& topo)
 {
@@ -192,6 +208,18 @@ MatchingResult buildMatchings(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i&
     r.report =
       optimizeBranchPoints(F, topo, geometry, frameU, r.topology, bp, progress.part(0.1, 0.8));
     r.objectiveAfter = r.report.costAfter;
+  }
+  else if (bp.splitDistance > 0 && hasHighSingularity(topo, r.topology))
+  {
+    // Without the optimization the field keeps its own singularities, but one of index 1/2 or
+    // more is still split: no map can follow it (the teapot's lid, smoothest field: one +1 at
+    // the pole, around which the map's angles must add up to 0; half the lid folded over).
+    BranchPointOptions splitOnly = bp;
+    splitOnly.branchPointWeight = 0.0; // no merges
+    r.report = optimizeBranchPoints(
+      F, topo, geometry, frameU, r.topology, splitOnly, progress.part(0.1, 0.8));
+    r.objectiveAfter = bp.branchPointWeight * r.topology.singularities +
+      scaledMatchingCost(F, topo, geometry, r.topology, bp.lengthScaledCost);
   }
   r.frameU = frameU;
   r.frameV = frameV;

@@ -161,7 +161,9 @@ std::string checkMatching(const MeshTopology& topo, const Eigen::MatrixX3i& matc
 /// The whole matching stage (vtkMatchingBuilder): what it runs and with which weights.
 struct MatchingOptions
 {
-  /// Run optimizeBranchPoints after the smallest-angle matchings.
+  /// Run optimizeBranchPoints after the smallest-angle matchings. Without it, inner points of
+  /// index 1/2 or more are still split into quarters (branchPoints.splitDistance > 0): no map
+  /// can follow a whole turn, and a half turn would be a valence-2 quad vertex.
   bool optimizeBranchPoints = true;
   BranchPointOptions branchPoints;
   /// After the optimization changed matchings, turn the frames so that they agree with them
