@@ -27,12 +27,13 @@ void regridDefectiveMap(const Inputs& in, const Field& field, SeamlessSystem& sy
   Defects& defects, Parameterization& out, const Progress& progress)
 {
   const int tries = std::min(in.options.maximumRegrids, static_cast<int>(std::size(QuadFactors)));
-  if (defects.count() == 0 || tries <= 0 || sys.numInteger == 0)
+  if (defects.count() == 0 || tries <= 0 || sys.numInteger == 0 || out.untangleBudgetSpent)
   {
     return;
   }
   // the trials share one repair's untangling budget: a map that no grid can repair (the
-  // teapot's sliver cone) costs at most twice the time, not five times
+  // teapot's sliver cone) costs at most twice the time, not five times; and a repair that spent
+  // its budget is not tried again (armadillo: minutes more for nothing)
   ParameterizationOptions trialOptions = in.options;
   trialOptions.untangleWork = std::max(1, in.options.untangleWork / tries);
   const Inputs trialIn{ in.V, in.F, in.topo, in.geometry, in.frameU, in.matching, trialOptions };

@@ -70,8 +70,8 @@ struct ParameterizationOptions
   /// A map that keeps flipped triangles or points wound the wrong way after its repair is
   /// rounded and repaired again with up to this many other grid sizes (2, 1/2, 4 and 1/4 times
   /// the quads, in turn, never fewer than minimumComponentQuadCount) until one has no defects,
-  /// which replaces it; 0 keeps the first. Maps without defects are never touched. The trials
-  /// share one untangleWork between them.
+  /// which replaces it; 0 keeps the first. Maps without defects are never touched, nor maps whose
+  /// repair spent its whole untangleWork (time); the trials share one untangleWork.
   int maximumRegrids = 4;
 };
 
