@@ -23,12 +23,12 @@ using detail::twinEdge;
 
 namespace
 {
-/// An inner point of index 1/2 or more (what optimizeBranchPoints splits into quarters).
-bool hasHighSingularity(const MeshTopology& topo, const FrameTopology& topology)
+/// An inner point of index 1 or more: a whole turn, which no map can follow.
+bool hasWholeTurn(const MeshTopology& topo, const FrameTopology& topology)
 {
   for (int v = 0; v < topo.numVertices; ++v)
   {
-    if (!topo.boundaryVertex[v] && topology.index[v] > 0.5 - 1e-6)
+    if (!topo.boundaryVertex[v] && topology.index[v] > 1.0 - 1e-6)
     {
       return true;
     }
@@ -209,13 +209,15 @@ MatchingResult buildMatchings(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i&
       optimizeBranchPoints(F, topo, geometry, frameU, r.topology, bp, progress.part(0.1, 0.8));
     r.objectiveAfter = r.report.costAfter;
   }
-  else if (bp.splitDistance > 0 && hasHighSingularity(topo, r.topology))
+  else if (bp.splitDistance > 0 && hasWholeTurn(topo, r.topology))
   {
-    // Without the optimization the field keeps its own singularities, but one of index 1/2 or
-    // more is still split: no map can follow it (the teapot's lid, smoothest field: one +1 at
-    // the pole, around which the map's angles must add up to 0; half the lid folded over).
+    // Without the optimization the field keeps its own singularities, but a whole turn is still
+    // split: no map can follow it (the teapot's lid, smoothest field: one +1 at the pole, around
+    // which the map's angles must add up to 0; half the lid folded over). A +1/2 stays (split,
+    // the screwdriver's gave a map with a fold and a quad against the surface).
     BranchPointOptions splitOnly = bp;
     splitOnly.branchPointWeight = 0.0; // no merges
+    splitOnly.splitQuarters = 4;
     r.report = optimizeBranchPoints(
       F, topo, geometry, frameU, r.topology, splitOnly, progress.part(0.1, 0.8));
     r.objectiveAfter = bp.branchPointWeight * r.topology.singularities +

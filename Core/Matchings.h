@@ -88,6 +88,8 @@ struct BranchPointOptions
   /// Inner singularities of index >= 1/2 are split first into quarters placed at least this
   /// many edges apart (and from other singularities); 0 leaves them alone.
   int splitDistance = 4;
+  /// Singularities of index at least this many quarters are split (2: +1/2 and more).
+  int splitQuarters = 2;
 };
 
 struct BranchPointReport
@@ -162,8 +164,8 @@ std::string checkMatching(const MeshTopology& topo, const Eigen::MatrixX3i& matc
 struct MatchingOptions
 {
   /// Run optimizeBranchPoints after the smallest-angle matchings. Without it, inner points of
-  /// index 1/2 or more are still split into quarters (branchPoints.splitDistance > 0): no map
-  /// can follow a whole turn, and a half turn would be a valence-2 quad vertex.
+  /// index 1 or more are still split into quarters (branchPoints.splitDistance > 0): no map can
+  /// follow a whole turn (a +1/2 stays: a valence-2 quad vertex, but a valid mesh).
   bool optimizeBranchPoints = true;
   BranchPointOptions branchPoints;
   /// After the optimization changed matchings, turn the frames so that they agree with them

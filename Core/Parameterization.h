@@ -73,6 +73,9 @@ struct ParameterizationOptions
   /// which replaces it; 0 keeps the first. Maps without defects are never touched, nor maps whose
   /// repair spent its whole untangleWork (time); the trials share one untangleWork.
   int maximumRegrids = 4;
+  /// Only maps of at most this many quads are tried on other grids: a small component's grid is
+  /// coarse against its singularities, and its trials are cheap.
+  double maximumRegridQuads = 1000;
 };
 
 /**
