@@ -264,7 +264,7 @@ void splitHighSingularities(Optimizer& o, BranchPointReport& report, const Progr
   std::vector<int> high;
   for (int v = 0; v < nv; ++v)
   {
-    if (o.q[v] >= 2)
+    if (o.q[v] >= o.options.splitQuarters)
     {
       high.push_back(v);
     }

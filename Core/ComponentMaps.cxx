@@ -128,6 +128,7 @@ void addComponent(const Inputs& in, const Component& part, const MeshTopology& t
   out.flipped += map.flipped;
   out.wrongWindings += map.wrongWindings;
   out.untangleRegions += map.untangleRegions;
+  out.regrids += map.regrids;
   out.untangleSeconds += map.untangleSeconds;
   out.untangleBudgetSpent = out.untangleBudgetSpent || map.untangleBudgetSpent;
   out.maxSeamError = std::max(out.maxSeamError, map.maxSeamError);

@@ -88,6 +88,8 @@ struct BranchPointOptions
   /// Inner singularities of index >= 1/2 are split first into quarters placed at least this
   /// many edges apart (and from other singularities); 0 leaves them alone.
   int splitDistance = 4;
+  /// Singularities of index at least this many quarters are split (2: +1/2 and more).
+  int splitQuarters = 2;
 };
 
 struct BranchPointReport
@@ -161,9 +163,10 @@ std::string checkMatching(const MeshTopology& topo, const Eigen::MatrixX3i& matc
 /// The whole matching stage (vtkMatchingBuilder): what it runs and with which weights.
 struct MatchingOptions
 {
-  /// Run optimizeBranchPoints after the smallest-angle matchings. Without it, inner
-  /// singularities of index >= 1/2 are still split into quarters (optimizeBranchPoints with a
-  /// branch-point weight of 0): no quad mesh follows such a field.
+  /// Run optimizeBranchPoints after the smallest-angle matchings. Without it, inner points of
+  /// index 3/4 or more are still split into quarters (branchPoints.splitDistance > 0): no map can
+  /// follow a whole turn, and a valence-1 quad vertex is a quad folded onto itself (a +1/2 stays:
+  /// a valence-2 quad vertex, but a valid mesh).
   bool optimizeBranchPoints = true;
   BranchPointOptions branchPoints;
   /// After the optimization changed matchings, turn the frames so that they agree with them

@@ -6,6 +6,8 @@
 #include "FrameField.h"
 #include "ParameterizationSteps.h"
 
+#include <Eigen/Geometry>
+
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -59,6 +61,49 @@ Parameterization startMap(const Inputs& in)
   out.solver = "Eigen SimplicialLDLT";
 #endif
   return out;
+}
+
+/// |sum over inner edges of the signed dihedral angle times the edge's length| / area: the
+/// surface's mean of k1 + k2 (2 / radius on a sphere, 1 / r on a torus of tube radius r; noise
+/// cancels in the sum).
+double meanCurvature(const Inputs& in)
+{
+  const Eigen::MatrixX3d& normal = in.geometry.bases.normal;
+  double sum = 0.0;
+  for (int f = 0; f < in.numFaces(); ++f)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      const int g = in.topo.faceNeighbors(f, k);
+      if (g > f)
+      {
+        const Eigen::Vector3d e = in.V.row(in.F(f, (k + 1) % 3)) - in.V.row(in.F(f, k));
+        const Eigen::Vector3d nf = normal.row(f).transpose();
+        const Eigen::Vector3d ng = normal.row(g).transpose();
+        sum += std::atan2(e.normalized().dot(nf.cross(ng)), nf.dot(ng)) * e.norm();
+      }
+    }
+  }
+  const double area = surfaceArea(in.V, in.F);
+  return area > 0 ? std::abs(sum) / area : 0.0;
+}
+
+/// For ParameterizationOptions::curvatureEdgeLength: the edge length made shorter (the map
+/// scaled, as correctEdgeLength does) where it is longer than that over the mean curvature.
+void limitEdgeLengthByCurvature(
+  const Inputs& in, SeamlessSystem& sys, Eigen::VectorXd& x, Parameterization& out)
+{
+  const double curvature = meanCurvature(in);
+  const double longest = in.options.curvatureEdgeLength / curvature;
+  if (in.options.targetEdgeLength != 0.0 || !(curvature > 0) || !(out.edgeLength > longest))
+  {
+    return;
+  }
+  const double factor = out.edgeLength / longest;
+  x *= factor;
+  sys.rhs *= factor;
+  sys.energyNorm *= factor * factor;
+  out.edgeLength = longest;
 }
 
 /// out.sectorUV and cornerUV from the columns' values x.
@@ -170,6 +215,11 @@ Parameterization computeParameterization(const Eigen::MatrixX3d& V, const Eigen:
   HessianFactor factor;
   Eigen::VectorXd x = solveContinuous(sys, greedy, factor, out, progress.part(0.22, 0.5));
   correctEdgeLength(in, sys, x, out);
+  if (in.options.curvatureEdgeLength > 0)
+  {
+    limitEdgeLengthByCurvature(in, sys, x, out);
+  }
+  const Eigen::VectorXd continuous = x;
   out.energyContinuous = sys.energy(x);
   out.flippedContinuous = static_cast<int>(flippedFaces(sys.uv(x), out.cornerSector).size());
 
@@ -188,7 +238,12 @@ Parameterization computeParameterization(const Eigen::MatrixX3d& V, const Eigen:
 
   // ---- flipped triangles untangled, fans wound the wrong way laid out again ----
   defects.wrong = wrongWindings(in, field, out, sys.uv(x));
-  repairMap(in, field, sys, x, defects, out, progress.part(0.6, 0.98));
+  repairMap(in, field, sys, x, defects, out, progress.part(0.6, 0.95));
+  if (round)
+  {
+    regridDefectiveMap(
+      in, field, sys, factor, continuous, greedy, x, defects, out, progress.part(0.95, 0.98));
+  }
   out.wrongWindings = static_cast<int>(defects.wrong.size());
   out.flipped = static_cast<int>(defects.flipped.size());
   out.energyFinal = sys.energy(x);

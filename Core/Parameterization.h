@@ -42,6 +42,12 @@ struct ParameterizationOptions
   /// grid cell or edge (Theorem 2).
   bool pureQuads = true;
   RoundingMode roundingMode = RoundingMode::Greedy;
+  /// With targetQuadCount, the edge length is at most this over the surface's mean curvature
+  /// (the mean of k1 + k2, by the signed dihedral angles: 2 / radius on a sphere, 1 / r on a
+  /// torus of tube radius r), so that a thin tube gets at least 4 quads around it (2 pi / 1.5):
+  /// with 3, flat quads cut through the tube and some face against the surface; 0: no limit.
+  /// Spheres are not limited at 24 quads (0.72 radius), nor is any surface at the usual counts.
+  double curvatureEdgeLength = 1.5;
   /// Boundary edges along a frame direction (within boundaryTolerance degrees) lie on an integer
   /// grid line (constant u or v), so quads end cleanly at the border.
   /// The same concept as SmootherOptions::alignToBoundary, and its default.
@@ -62,6 +68,15 @@ struct ParameterizationOptions
   /// share of targetQuadCount by area, or targetEdgeLength made shorter where that would give
   /// fewer. (A component far smaller than a grid cell would otherwise get no quad at all.)
   int minimumComponentQuadCount = 24;
+  /// A map that keeps flipped triangles or points wound the wrong way after its repair is
+  /// rounded and repaired again with up to this many other grid sizes (2, 1/2, 4 and 1/4 times
+  /// the quads, in turn, never fewer than minimumComponentQuadCount) until one has no defects,
+  /// which replaces it; 0 keeps the first. Maps without defects are never touched, nor maps whose
+  /// repair spent its whole untangleWork (time); the trials share one untangleWork.
+  int maximumRegrids = 4;
+  /// Only maps of at most this many quads are tried on other grids: a small component's grid is
+  /// coarse against its singularities, and its trials are cheap.
+  double maximumRegridQuads = 1000;
 };
 
 /**
@@ -112,6 +127,8 @@ struct Parameterization
   int wrongWindings = 0;
   int untangleRegions = 0;          ///< neighbourhoods untangled (each growing the last)
   bool untangleBudgetSpent = false; ///< the untangling stopped at options.untangleWork
+  /// other grid sizes tried because the repaired map kept defects (maximumRegrids)
+  int regrids = 0;
   double untangleSeconds = 0.0;
   double maxSeamError = 0.0; ///< largest distance of a seam translation from Z^2, in grid units
   std::vector<double> solveSeconds; ///< factorization + solve, one entry per sparse solve

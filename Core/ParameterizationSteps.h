@@ -222,6 +222,18 @@ std::vector<int> wrongWindings(
 /// found; updates `defects` and out.untangleRegions, untangleSeconds.
 void repairMap(const Inputs& in, const Field& field, const SeamlessSystem& sys, Eigen::VectorXd& x,
   Defects& defects, Parameterization& out, const Progress& progress);
+
+// ---- maps that keep defects (MapRegrid.cxx) ----
+
+/// When the repaired map x still has defects: rounds the continuous minimizer `continuous` at
+/// other grid sizes (ParameterizationOptions::maximumRegrids of 2, 1/2, 4, 1/4 times the quads,
+/// never fewer than minimumComponentQuadCount), repairs each, and keeps the first without
+/// defects, if any: x, defects and out (its figures and edgeLength) follow it, and sys is left
+/// scaled for it. Not when the first repair spent its untangling budget, nor for maps of more
+/// than maximumRegridQuads quads. Counts the grids tried in out.regrids.
+void regridDefectiveMap(const Inputs& in, const Field& field, SeamlessSystem& sys,
+  const HessianFactor& factor, const Eigen::VectorXd& continuous, bool greedy, Eigen::VectorXd& x,
+  Defects& defects, Parameterization& out, const Progress& progress);
 }
 }
 

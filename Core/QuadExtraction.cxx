@@ -254,6 +254,30 @@ private:
 
   void identify(int f, Complex q, Eigen::Vector3d b, Location& at) const
   {
+    // A grid point next to a point of the surface is that point. By the barycentric tolerance
+    // alone, a grid point about that far from a point would be the point in one triangle of its
+    // fan and on an edge or inside another (the tolerance scales with each triangle's shape), and
+    // cells reaching it from different triangles would not share the corner (a symmetric torus
+    // whose grid lines pass within 1e-6 of its points lost a band of quads). The distance in
+    // (u, v) is the same in every chart, so every triangle of the fan agrees.
+    int nearest = -1;
+    double nearestDistance = options.pointTolerance;
+    for (int k = 0; k < 3; ++k)
+    {
+      const double d = std::abs(z(f, k) - q);
+      if (d <= nearestDistance)
+      {
+        nearest = k;
+        nearestDistance = d;
+      }
+    }
+    if (nearest >= 0)
+    {
+      at.triangle = f;
+      at.bary = Eigen::Vector3d::Unit(nearest);
+      at.key = { 0, F(f, nearest), 0, 0 };
+      return;
+    }
     int zeros = 0;
     int zero = -1;
     for (int k = 0; k < 3; ++k)

@@ -22,6 +22,9 @@ struct QuadExtractionOptions
 {
   /// Barycentric tolerance for a grid point on a triangle's edge or corner.
   double tolerance = 1e-7;
+  /// A grid point within this (u, v) distance of a point of the surface (in grid units) is that
+  /// point, seen alike from every triangle around it.
+  double pointTolerance = 1e-5;
   /// Triangles a walk from a cell's centre to one of its corners may cross.
   int maximumWalk = 10000;
 };

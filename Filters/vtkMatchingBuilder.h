@@ -13,7 +13,9 @@
  * the matched frames' angle (radians), each edge's angle counted in proportion to its length
  * over sqrt(area / 2000) with LengthScaledCost (default; about one per edge on a 4,000-triangle
  * mesh), so that a finer mesh of the same surface keeps about the same singularities. Only pairs
- * that cancel are merged: no singularity grows. Poincare-Hopf holds before and after.
+ * that cancel are merged: no singularity grows. Poincare-Hopf holds before and after. It first
+ * splits every inner point of index 1/2 or more into quarters; without it, those of index 1 or
+ * more are split all the same: no map can follow a whole turn.
  *
  * Output 0: the surface with cell data Matching (3 x int: for edge k = (point k, point k+1),
  * X_{neighbour,m} = X_{this,(m - r) mod 4}, X_0 = FrameU, X_1 = n x FrameU, ...; -1 on boundary
@@ -54,8 +56,8 @@ public:
 
   ///@{
   /** Run the branch-point optimization of Sect. 4.2 (default on). Off, singularities of index
-   * >= 1/2 are still split into quarter ones (no quad mesh has vertices of valence 2, 1 or 0,
-   * and the map cannot follow such a field); nothing is merged. */
+   * >= 3/4 are still split into quarter ones (no quad mesh has vertices of valence 1 or 0, and
+   * the map cannot follow such a field); nothing is merged. */
   vtkSetMacro(OptimizeBranchPoints, bool);
   vtkGetMacro(OptimizeBranchPoints, bool);
   vtkBooleanMacro(OptimizeBranchPoints, bool);

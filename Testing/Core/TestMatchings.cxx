@@ -405,6 +405,42 @@ TEST(Matchings, WholeTurnSingularitiesAreSplitIntoQuarters)
   EXPECT_EQ(kept.singularities, 2);
 }
 
+TEST(Matchings, WithoutTheOptimizationWholeTurnsAreStillSplitButNothingMerges)
+{
+  // The field keeps its own singularities without the branch-point optimization, but no map can
+  // follow a whole turn: the stage splits it all the same (the teapot's lid with the smoothest
+  // field had a +1 at its pole and half its map folded over), and merges nothing.
+  const Mesh m = prepare(latLongSphere(32, 24));
+  const Eigen::MatrixX3d U = parallelField(m, 0);
+  MatchingOptions options;
+  options.optimizeBranchPoints = false;
+  const MatchingResult r = buildMatchings(
+    m.s.V, m.s.F, m.topo, m.geometry, U, Eigen::MatrixX3d(), Eigen::VectorXd(), {}, options);
+  EXPECT_EQ(r.branchPointsBefore, 0) << "a whole turn has no layer shift";
+  EXPECT_EQ(r.report.split, 2);
+  EXPECT_EQ(r.topology.singularities, 8);
+  EXPECT_EQ(r.topology.branchPoints, 8);
+  EXPECT_LT(r.topology.index.maxCoeff(), 0.25 + 1e-9);
+  EXPECT_NEAR(r.topology.index.sum(), 2.0, 1e-9);
+  EXPECT_TRUE(r.framesFitted);
+  // a field without whole turns (the torus' parallels: none at all) is left exactly as it is
+  const Mesh torus = prepare(makeTorus(1.0, 0.4, 48, 24));
+  Eigen::MatrixX3d T(torus.s.F.rows(), 3);
+  for (int f = 0; f < torus.s.F.rows(); ++f)
+  {
+    const Eigen::Vector3d c = (torus.s.V.row(torus.s.F(f, 0)) + torus.s.V.row(torus.s.F(f, 1)) +
+                                torus.s.V.row(torus.s.F(f, 2))) /
+      3.0;
+    T.row(f) = Eigen::Vector3d::UnitZ().cross(c).normalized();
+  }
+  const MatchingResult kept = buildMatchings(torus.s.V, torus.s.F, torus.topo, torus.geometry, T,
+    Eigen::MatrixX3d(), Eigen::VectorXd(), {}, options);
+  EXPECT_EQ(
+    kept.topology.matching, computeMatchings(torus.s.F, torus.topo, torus.geometry, T).matching);
+  EXPECT_EQ(kept.report.split, 0);
+  EXPECT_FALSE(kept.framesFitted);
+}
+
 TEST(Matchings, FittingFramesToChangedMatchingsKeepsIndicesAndSpreadsTheTurn)
 {
   // After the split the matchings along the paths disagree with the frames by about a quarter

@@ -671,3 +671,123 @@ TEST(Parameterization, ReportsAndStopsWhileUntangling)
   EXPECT_GT(last, 0.65);
   EXPECT_LT(last, 0.98) << "stopped inside the untangling";
 }
+
+namespace
+{
+/// Data/components.obj (50 spheres and tori, sizes 0.1 to 10) with the smoothest field and its
+/// own singularities (smoothing weight 1, no branch-point optimization), as the command line's
+/// stages give them.
+struct SmoothestComponents
+{
+  Surface s = makeComponents(50, 0.1, 10.0);
+  MeshTopology topo = buildTopology(s.F, static_cast<int>(s.V.rows()));
+  FrameGeometry geometry = computeFrameGeometry(s.V, s.F, topo);
+  MatchingResult field;
+
+  SmoothestComponents()
+  {
+    const CurvatureField c = computeCurvatureField(s.V, s.F, topo);
+    SmootherOptions smoothest;
+    smoothest.smoothingWeight = 1.0;
+    const SmootherResult smooth =
+      smoothFrames(s.V, s.F, topo, geometry, c.frameU, c.frameV, c.weight, smoothest);
+    MatchingOptions own;
+    own.optimizeBranchPoints = false;
+    field = buildMatchings(
+      s.V, s.F, topo, geometry, smooth.frameU, smooth.frameV, c.weight, smooth.constrained, own);
+  }
+
+  Parameterization map(const ParameterizationOptions& options) const
+  {
+    return computeParameterization(
+      s.V, s.F, topo, geometry, field.frameU, field.topology.matching, options);
+  }
+};
+}
+
+TEST(Parameterization, ThinTubesGetAtLeastFourQuadsAroundThem)
+{
+  // With 3 quads around a tube, flat quads cut through it and some face against the surface
+  // (Data/components.obj's small tori). The edge length is kept below 1.5 over the mean
+  // curvature (1 / r on a torus): 2 pi / 1.5 > 4 quads around.
+  const double r = 0.1;
+  const Surface s = makeTorus(1.0, r, 96, 16);
+  const MeshTopology topo = buildTopology(s.F, static_cast<int>(s.V.rows()));
+  const FrameGeometry geometry = computeFrameGeometry(s.V, s.F, topo);
+  Eigen::MatrixX3d U(s.F.rows(), 3); // along the parallels: no singularity
+  for (int f = 0; f < s.F.rows(); ++f)
+  {
+    const Eigen::Vector3d c =
+      (s.V.row(s.F(f, 0)) + s.V.row(s.F(f, 1)) + s.V.row(s.F(f, 2))).transpose() / 3.0;
+    U.row(f) = Eigen::Vector3d::UnitZ().cross(c).normalized().transpose();
+  }
+  const FrameTopology field = computeMatchings(s.F, topo, geometry, U);
+  ASSERT_EQ(field.singularities, 0);
+  ParameterizationOptions options;
+  options.targetQuadCount = 24;
+  options.curvatureEdgeLength = 0.0;
+  const Parameterization unlimited =
+    computeParameterization(s.V, s.F, topo, geometry, U, field.matching, options);
+  options.curvatureEdgeLength = ParameterizationOptions().curvatureEdgeLength;
+  const Parameterization limited =
+    computeParameterization(s.V, s.F, topo, geometry, U, field.matching, options);
+  const double around = 2 * M_PI * r;
+  std::printf("quads around the tube: %.2f unlimited, %.2f limited\n",
+    around / unlimited.edgeLength, around / limited.edgeLength);
+  EXPECT_LT(around / unlimited.edgeLength, 3.5) << "24 quads alone would give 3 around";
+  EXPECT_GE(around / limited.edgeLength, 4.0);
+  EXPECT_LE(around / limited.edgeLength, 4.5) << "no finer than the limit asks";
+  EXPECT_EQ(limited.flipped, 0);
+  EXPECT_EQ(limited.wrongWindings, 0);
+  // a sphere at 24 quads is not limited
+  const Surface sphere = makeIcosphere(1.0, 2);
+  const MeshTopology st = buildTopology(sphere.F, static_cast<int>(sphere.V.rows()));
+  const Chain c = runChain(sphere, 24);
+  ParameterizationOptions few;
+  few.targetQuadCount = 24;
+  const Parameterization a =
+    computeParameterization(c.s.V, c.s.F, c.topo, c.geometry, c.frameU, c.field.matching, few);
+  few.curvatureEdgeLength = 0.0;
+  const Parameterization b =
+    computeParameterization(c.s.V, c.s.F, c.topo, c.geometry, c.frameU, c.field.matching, few);
+  EXPECT_EQ(a.edgeLength, b.edgeLength);
+  EXPECT_EQ(a.cornerUV, b.cornerUV);
+}
+
+TEST(Parameterization, AMapThatKeepsDefectsIsTriedOnOtherGrids)
+{
+  // With the smoothest field the small tori of Data/components.obj carry 12 to 16 branch points
+  // on a few dozen quads; some of their maps keep points wound the wrong way (or flipped
+  // triangles) however they are untangled, and their quads came apart. The map is linear in
+  // 1 / edgeLength: rounded again on another grid, they have none.
+  const SmoothestComponents components;
+  ParameterizationOptions options;
+  options.targetQuadCount = 6500;
+  options.curvatureEdgeLength = 0.0; // the small tori as coarse as their share says
+  options.maximumRegrids = 0;
+  const Parameterization first = components.map(options);
+  options.maximumRegrids = ParameterizationOptions().maximumRegrids;
+  const Parameterization regridded = components.map(options);
+  std::printf("branch points %d; first grids: %d flipped, %d wound wrong; after %d other grids: "
+              "%d, %d\n",
+    first.branchPoints, first.flipped, first.wrongWindings, regridded.regrids, regridded.flipped,
+    regridded.wrongWindings);
+  ASSERT_GT(first.flipped + first.wrongWindings, 0) << "the case this test is about";
+  EXPECT_EQ(first.regrids, 0);
+  EXPECT_GE(regridded.regrids, 1);
+  EXPECT_EQ(regridded.flipped, 0);
+  EXPECT_EQ(regridded.wrongWindings, 0);
+  EXPECT_EQ(regridded.branchPointsOnGrid, regridded.branchPoints);
+  EXPECT_LT(regridded.maxSeamError, 1e-9) << "still seamless";
+  // the components whose first map had no defect keep it exactly
+  int same = 0, changed = 0;
+  for (int f = 0; f < components.s.F.rows(); ++f)
+  {
+    (first.cornerUV.row(f) == regridded.cornerUV.row(f) ? same : changed) += 1;
+  }
+  EXPECT_GT(same, changed);
+  // a map without defects is never touched
+  const Chain c = runChain(testSurface("sphere"), 3000);
+  ASSERT_EQ(c.map.flipped + c.map.wrongWindings, 0);
+  EXPECT_EQ(c.map.regrids, 0);
+}

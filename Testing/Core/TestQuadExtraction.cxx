@@ -307,6 +307,43 @@ TEST(QuadExtraction, CellCentresOnEdgesAndPointsGiveOneQuad)
   }
 }
 
+TEST(QuadExtraction, GridPointsNextToSurfacePointsAreSharedByEveryCell)
+{
+  // A torus of 20 x 10 segments under a map with 10 x 4 cells: every other point of its outer
+  // and inner equators lies next to a grid point, off by a little (the solver's rounding; on
+  // Data/components.obj 6e-8 grid units). Within about the barycentric tolerance some triangles
+  // of such a point's fan called the grid point the surface point and others a point on an
+  // edge, so the cells around it did not share their corner and the torus lost a band of quads.
+  const int nu = 20, nv = 10, cellsAround = 10, cellsAcross = 4;
+  const Surface s = makeTorus(1.0, 0.35, nu, nv);
+  const MeshTopology topo = buildTopology(s.F, static_cast<int>(s.V.rows()));
+  for (const double offset : { 0.0, 2e-8, 6e-8, 1e-7, 2e-7, 1e-6 })
+  {
+    SCOPED_TRACE(offset);
+    Eigen::MatrixXd uv(s.F.rows(), 6);
+    for (int f = 0; f < s.F.rows(); ++f)
+    {
+      const int i0 = s.F(f, 0) / nv, j0 = s.F(f, 0) % nv;
+      for (int k = 0; k < 3; ++k)
+      {
+        int i = s.F(f, k) / nv, j = s.F(f, k) % nv;
+        i += i - i0 > nu / 2 ? -nu : (i0 - i > nu / 2 ? nu : 0); // unwrapped across the seams
+        j += j - j0 > nv / 2 ? -nv : (j0 - j > nv / 2 ? nv : 0);
+        uv(f, 2 * k) = static_cast<double>(i) * cellsAround / nu + offset;
+        uv(f, 2 * k + 1) = static_cast<double>(j) * cellsAcross / nv + 0.5 * offset;
+      }
+    }
+    const QuadMesh q = extractQuads(s.V, s.F, topo, uv);
+    const QuadQuality m = measureQuads(q.V, q.Q);
+    EXPECT_EQ(m.quads, cellsAround * cellsAcross);
+    EXPECT_EQ(m.boundaryEdges, 0);
+    EXPECT_EQ(m.nonManifoldEdges, 0);
+    EXPECT_EQ(m.eulerCharacteristic, 0);
+    EXPECT_EQ(m.components, 1);
+    EXPECT_EQ(m.vertices, cellsAround * cellsAcross);
+  }
+}
+
 TEST(QuadExtraction, QuadVerticesLieOnTheSurfaceAndFacesAreConsistentlyOriented)
 {
   const Chain c = runChain(testSurface("sphere"), 800);
