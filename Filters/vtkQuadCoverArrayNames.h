@@ -14,7 +14,7 @@
 namespace vtkQuadCoverArrayNames
 {
 // ---- vtkQuadCoverSurfaceRepair (field data, 1 x int each: what the repair changed) ----
-/// duplicate points merged into one (exactly coincident coordinates)
+/// duplicate points merged into one (coincident to round-off: 1e-12 of the bounding-box diagonal)
 constexpr const char* MergedPoints = "MergedPoints";
 /// vertex and line cells, and triangles left with a repeated point, removed
 constexpr const char* RemovedCells = "RemovedCells";

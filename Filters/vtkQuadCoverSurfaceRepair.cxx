@@ -260,10 +260,10 @@ void vtkQuadCoverSurfaceRepair::Execute(vtkQuadCoverSurface& in, vtkInformationV
   vtkPolyData* tri = triangles->GetOutput();
   this->UpdateProgress(0.25);
 
-  // Merge exactly coincident points; triangles left with a repeated point are removed.
+  // Merge coincident points (to round-off); triangles left with a repeated point are removed.
   vtkNew<vtkCleanPolyData> clean;
   clean->PointMergingOn();
-  clean->SetTolerance(0.0);
+  clean->SetTolerance(1e-12); // of the bounding box diagonal: round-off (parametric seams)
   clean->ConvertPolysToLinesOff();
   clean->ConvertLinesToPointsOff();
   clean->ConvertStripsToPolysOff();

@@ -7,7 +7,8 @@
  * - polygons with more than three sides and triangle strips are triangulated, vertex and line
  *   cells dropped (TriangulatedPolygons; the dropped cells go to RemovedCells); triangulating
  *   first keeps the repeated-point joins of strips from becoming triangles;
- * - exactly coincident points are merged into one, as OBJ files that repeat a point per texture
+ * - coincident points (to round-off: within 1e-12 of the bounding box's diagonal) are merged into
+ *   one, as the seams of VTK's parametric sources and OBJ files that repeat a point per texture
  *   coordinate need (MergedPoints), unused points dropped, and triangles left with a repeated
  *   point removed (RemovedCells);
  * - edges shared by three or more triangles are cut apart into manifold sheets (CutEdges):

@@ -432,7 +432,7 @@ void PrintUsage(std::ostream& os, const std::vector<Option>& options)
   }
   os << "\n"
         "Repaired silently (stage repair, counted in --stats): polygons and strips\n"
-        "triangulated, vertex and line cells dropped, exactly coincident points merged,\n"
+        "triangulated, vertex and line cells dropped, coincident points merged (to round-off),\n"
         "triangles with a repeated point removed, edges of more than two triangles cut apart\n"
         "into manifold sheets, a point where separate fans of triangles touch split into one\n"
         "copy per fan, triangles reoriented to agree with their neighbours (each\n"

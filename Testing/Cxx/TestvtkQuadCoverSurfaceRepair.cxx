@@ -387,3 +387,46 @@ TEST(vtkQuadCoverSurfaceRepair, RefinesACoarseConeInterpolatingItsData)
   off->Update();
   EXPECT_EQ(off->GetOutput()->GetNumberOfPolys(), 2 * n);
 }
+
+TEST(vtkQuadCoverSurfaceRepair, MergesTheRoundOffSeamsOfAParametricSurface)
+{
+  // A torus as VTK's parametric sources make it: the grid's last row and column are computed at
+  // 2 pi, which round-off puts about 1e-15 away from the first's, and the triangles join them.
+  const int n = 24;
+  std::vector<std::vector<double>> points;
+  std::vector<std::vector<vtkIdType>> cells;
+  const double twoPi = 2 * 3.14159265358979323846;
+  for (int i = 0; i <= n; ++i)
+  {
+    for (int j = 0; j <= n; ++j)
+    {
+      const double u = twoPi * i / n, v = twoPi * j / n;
+      points.push_back({ (1 + 0.4 * std::cos(v)) * std::cos(u),
+        (1 + 0.4 * std::cos(v)) * std::sin(u), 0.4 * std::sin(v) });
+    }
+  }
+  auto id = [&](int i, int j) { return static_cast<vtkIdType>(i * (n + 1) + j); };
+  for (int i = 0; i < n; ++i)
+  {
+    for (int j = 0; j < n; ++j)
+    {
+      cells.push_back({ id(i, j), id(i + 1, j), id(i + 1, j + 1) });
+      cells.push_back({ id(i, j), id(i + 1, j + 1), id(i, j + 1) });
+    }
+  }
+  Repaired r = Repair(Make(points, cells));
+  ASSERT_EQ(r.error, "");
+  const int seamPoints = 2 * (n + 1) - 1;
+  int exact = 0; // seam points that are exactly equal (sin(0) and cos(0) computed alike)
+  for (int k = 0; k <= n; ++k)
+  {
+    exact += points[id(0, k)] == points[id(n, k)];
+    exact += k < n && points[id(k, 0)] == points[id(k, n)];
+  }
+  ASSERT_LT(exact, seamPoints) << "the test needs seams that round-off moved";
+  EXPECT_EQ(r.Count(names::MergedPoints), seamPoints);
+  const quadcover::MeshTopology topo = Topology(r.output);
+  EXPECT_TRUE(topo.isClosed());
+  EXPECT_EQ(topo.eulerCharacteristic(), 0);
+  EXPECT_EQ(topo.numComponents(), 1);
+}
