@@ -233,6 +233,12 @@ def needle_sphere(folder):
     return _write(folder, "needles.obj", _obj_text(m.uv_sphere(4, 200)))
 
 
+def seamed_torus(folder):
+    path = os.path.join(folder, "seamed_torus.vtp")  # double precision: the round-off survives
+    m.write_vtp(path, m.seamed_torus())
+    return path
+
+
 def genus_5(folder):
     return _write(folder, "genus5.obj", _obj_text(m.genus(5)))
 
@@ -351,6 +357,7 @@ CASES = {
     "cube_12": (cube_12, Quads(1, 2)),
     "coarse_cone": (coarse_cone, Quads(1, 2)),
     "needle_sphere": (needle_sphere, Quads(1, 2)),
+    "seamed_torus": (seamed_torus, Quads(1, 0)),
     "genus_5": (genus_5, Quads(1, -8)),
     "twenty_spheres": (twenty_spheres, Quads(20, 40)),
     # cut apart: one pair of the three stays joined or none does; every piece is a disk

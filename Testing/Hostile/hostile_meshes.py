@@ -131,6 +131,24 @@ def uv_sphere(rings, segments, radius=1.0):
     return points, faces
 
 
+def seamed_torus(n=40, radius=1.0, tube=0.4):
+    """A torus as VTK's parametric sources make it: an (n + 1) x (n + 1) grid whose last row and
+    column, computed at 2 pi, lie round-off (about 1e-16) away from the first's."""
+    points = []
+    for i in range(n + 1):
+        for j in range(n + 1):
+            u, v = 2 * math.pi * i / n, 2 * math.pi * j / n
+            points.append(((radius + tube * math.cos(v)) * math.cos(u),
+                           (radius + tube * math.cos(v)) * math.sin(u), tube * math.sin(v)))
+    index = lambda i, j: i * (n + 1) + j
+    faces = []
+    for i in range(n):
+        for j in range(n):
+            faces += [(index(i, j), index(i + 1, j), index(i + 1, j + 1)),
+                      (index(i, j), index(i + 1, j + 1), index(i, j + 1))]
+    return points, faces
+
+
 def moebius(around=48, across=4, radius=1.0, width=0.3):
     """A Moebius strip: a band whose ends are glued after half a turn."""
     points = []
