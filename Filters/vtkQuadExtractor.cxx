@@ -203,6 +203,13 @@ void vtkQuadExtractor::Execute(vtkQuadCoverSurface& in, vtkInformationVector* ou
       " holes inside the surface are left open (odd, pinched or very long loops, or a band around "
       "a handle)");
   }
+  if (r.turnedQuads > 0 || r.invertedFinal > 0)
+  {
+    this->Warn(std::to_string(r.turnedQuads) + " quads face against the input and " +
+      std::to_string(r.invertedFinal) +
+      " have a corner turned inside out (TurnedQuads, InvertedQuads): the map is too distorted "
+      "there (slivers, a part thinner than the quads)");
+  }
   if (quads.Q.rows() == 0)
   {
     throw std::invalid_argument("no grid cell of the map gave a quad (is the grid much coarser "
