@@ -305,7 +305,7 @@ TEST_P(QuadsOn, ManifoldAllQuadMeshWithTheInputsTopology)
 
 INSTANTIATE_TEST_SUITE_P(Surfaces, QuadsOn,
   ::testing::Values("sphere", "torus", "knot", "cylinder", "roundedcube", "bunny-lowres", "spot",
-    "fandisk", "rocker-arm", "cheburashka", "teapot", "lion"));
+    "fandisk", "rocker-arm", "cheburashka", "teapot", "lion", "plate", "bracket"));
 
 TEST(vtkQuadExtractor, NoQuadFacesAgainstACoarseInput)
 {
