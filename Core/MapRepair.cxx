@@ -95,13 +95,11 @@ public:
   /// Freed, a fan laid out again can close up once more as its surroundings untangle (on fine
   /// meshes a cone's fan is small against a grid cell); held, it cannot, though its
   /// surroundings may then keep folds. This runs the first attempt again with its fans held
-  /// throughout; the run with fewer defects wins. It gives up at the first neighbourhood size
-  /// that unfolds none of its flipped triangles: with the fans held, the larger ones did not
-  /// either (armadillo: 19 flipped at 2, 4, 8 and 16 rings, a fifth of all the untangling).
+  /// throughout; the run with fewer defects wins.
   void heldRun(Eigen::VectorXd& x, Defects& defects, int& regions)
   {
     Snapshot& held = firstHeld_;
-    const int heldRegions = untangleRings(16, held.xs, held.xr, held.flipped, held.frozen, true);
+    const int heldRegions = untangleRings(16, held.xs, held.xr, held.flipped, held.frozen);
     std::vector<int> heldWrong = wrongIn(held.xr);
     if (held.flipped.size() + heldWrong.size() < defects.count())
     {
@@ -134,10 +132,9 @@ private:
 
   /// Untangles neighbourhoods of 2, 4, ... maxRings rings around the flipped triangles while
   /// any are left, the frozen unknowns held; xs (symbols) and x (columns) move together.
-  /// Returns the number of neighbourhoods untangled. With `giveUp`, it stops after a
-  /// neighbourhood that unfolds none of the flipped triangles.
+  /// Returns the number of neighbourhoods untangled.
   int untangleRings(int maxRings, Eigen::VectorXd& xs, Eigen::VectorXd& x,
-    std::vector<int>& flipped, const std::vector<char>& frozen, bool giveUp = false)
+    std::vector<int>& flipped, const std::vector<char>& frozen)
   {
     int regions = 0;
     for (int rings = 2; rings <= maxRings && !flipped.empty() && !untangler_.spent(); rings *= 2)
@@ -146,12 +143,7 @@ private:
         halving(progress_, runs_++));
       ++regions;
       x.head(sys_.numReal) = xs.head(sys_.numReal);
-      const std::size_t before = flipped.size();
       flipped = flippedIn(x);
-      if (giveUp && flipped.size() >= before)
-      {
-        break;
-      }
     }
     return regions;
   }
