@@ -1,8 +1,6 @@
 // Untangler.cxx: foldover-free untangling of flipped triangles with L-BFGS.
 #include "Untangler.h"
 
-#include "UnionFind.h"
-
 #include <Eigen/LU>
 
 #include <algorithm>
@@ -380,74 +378,18 @@ std::vector<int> Untangler::facesUsing(const std::vector<int>& columns) const
   return faces;
 }
 
-std::vector<std::pair<std::vector<int>, std::vector<int>>> Untangler::pieces(
-  const std::vector<int>& columns, const std::vector<int>& faces) const
-{
-  // free unknowns are joined when a face's rows use both
-  std::vector<int> indexOf(Dc.cols(), -1);
-  for (int i = 0; i < static_cast<int>(columns.size()); ++i)
-  {
-    indexOf[columns[i]] = i;
-  }
-  std::vector<int> parent(columns.size());
-  for (int i = 0; i < static_cast<int>(parent.size()); ++i)
-  {
-    parent[i] = i;
-  }
-  std::vector<int> faceColumn(faces.size(), -1);
-  for (std::size_t j = 0; j < faces.size(); ++j)
-  {
-    for (int i = 0; i < 4; ++i)
-    {
-      for (RowMajorMatrix::InnerIterator it(Dr, 4 * faces[j] + i); it; ++it)
-      {
-        const int c = indexOf[it.col()];
-        if (c >= 0)
-        {
-          faceColumn[j] < 0 ? void(faceColumn[j] = c) : unite(parent, faceColumn[j], c);
-        }
-      }
-    }
-  }
-  // in the order of their first column, columns and faces each in their order
-  std::vector<int> pieceOf(columns.size(), -1);
-  std::vector<std::pair<std::vector<int>, std::vector<int>>> result;
-  for (int i = 0; i < static_cast<int>(columns.size()); ++i)
-  {
-    const int root = findRoot(parent, i);
-    if (pieceOf[root] < 0)
-    {
-      pieceOf[root] = static_cast<int>(result.size());
-      result.emplace_back();
-    }
-    result[pieceOf[root]].first.push_back(columns[i]);
-  }
-  for (std::size_t j = 0; j < faces.size(); ++j)
-  {
-    if (faceColumn[j] >= 0)
-    {
-      result[pieceOf[findRoot(parent, faceColumn[j])]].second.push_back(faces[j]);
-    }
-  }
-  return result;
-}
-
 void Untangler::run(const MeshTopology& topo, const Eigen::MatrixX3i& F,
   const std::vector<int>& flipped, int rings, int maxRounds, Eigen::VectorXd& x,
   const std::vector<char>& frozen, const Progress& progress) const
 {
-  // free unknowns: the real ones the region's rows use; energy: every face they touch. The
-  // pieces that share no free unknown are untangled one by one: in one L-BFGS the folds of one
-  // piece set every piece's eps and keep all of them iterating.
-  const std::vector<int> columns = freeColumns(regionAround(topo, F, flipped, rings), frozen);
+  // free unknowns: the real ones the region's rows use; energy: every face they touch
+  std::vector<int> columns = freeColumns(regionAround(topo, F, flipped, rings), frozen);
+  const std::vector<int> faces = facesUsing(columns);
   int evaluations = 0;
-  for (auto& piece : pieces(columns, facesUsing(columns)))
-  {
-    LocalEnergy energy(*this, std::move(piece.first), piece.second, x, evaluations);
-    Eigen::VectorXd y = energy.restrictTo(x);
-    untangle(energy, y, maxRounds, progress);
-    energy.scatter(y, x);
-  }
+  LocalEnergy energy(*this, std::move(columns), faces, x, evaluations);
+  Eigen::VectorXd y = energy.restrictTo(x);
+  untangle(energy, y, maxRounds, progress);
+  energy.scatter(y, x);
 }
 }
 }
