@@ -98,15 +98,15 @@ def genus(holes, n=2):
 
 
 def cone(around=64, height=2.0, radius=1.0):
-    """A closed cone as VTK's cone source makes it: a fan of long needles around the tip and
-    another around the centre of the base (2 * around triangles)."""
-    points = [(0.0, 0.0, height), (0.0, 0.0, 0.0)]
+    """A closed cone as VTK's cone source makes it: a fan of long needles around the tip, and the
+    base one polygon of `around` sides (the repair triangulates it)."""
+    points = [(0.0, 0.0, height)]
     faces = []
     for i in range(around):
         a = 2 * math.pi * i / around
         points.append((radius * math.cos(a), radius * math.sin(a), 0.0))
-        p, q = 2 + i, 2 + (i + 1) % around
-        faces += [(0, p, q), (1, q, p)]
+        faces.append((0, 1 + i, 1 + (i + 1) % around))
+    faces.append(tuple(range(around, 0, -1)))
     return points, faces
 
 
