@@ -1,13 +1,13 @@
 // QuadFacing.cxx: quadFacing, turnedQuads and repairFacing.
 #include "QuadFacing.h"
 
+#include "QuadMeshAdjacency.h"
 #include "ScaledJacobian.h"
 
 #include <Eigen/Geometry>
 
 #include <algorithm>
 #include <cmath>
-#include <map>
 #include <utility>
 
 namespace quadcover
@@ -61,32 +61,10 @@ public:
     return list;
   }
 
-  /// The vertices of the quads and of those within `rings` quad rings of them.
+  /// The vertices that may move of the quads and of those within `rings` quad rings of them.
   std::vector<int> region(const std::vector<int>& quads, int rings) const
   {
-    std::vector<char> in(mesh_.V.rows(), 0);
-    for (const int i : quads)
-    {
-      for (int k = 0; k < 4; ++k)
-      {
-        in[mesh_.Q(i, k)] = 1;
-      }
-    }
-    for (int ring = 0; ring < rings; ++ring)
-    {
-      std::vector<char> grown = in;
-      for (int v = 0; v < static_cast<int>(in.size()); ++v)
-      {
-        for (int j = offsets_[v]; in[v] && j < offsets_[v + 1]; ++j)
-        {
-          for (int k = 0; k < 4; ++k)
-          {
-            grown[mesh_.Q(quadsOf_[j], k)] = 1;
-          }
-        }
-      }
-      in.swap(grown);
-    }
+    const std::vector<char> in = verticesNear(mesh_, quads, rings);
     std::vector<int> list;
     for (int v = 0; v < static_cast<int>(in.size()); ++v)
     {
@@ -182,77 +160,20 @@ private:
 
   void collectVertexQuads()
   {
-    const int nV = static_cast<int>(mesh_.V.rows());
-    offsets_.assign(nV + 1, 0);
-    for (int i = 0; i < mesh_.Q.rows(); ++i)
-    {
-      for (int k = 0; k < 4; ++k)
-      {
-        ++offsets_[mesh_.Q(i, k) + 1];
-      }
-    }
-    for (int v = 0; v < nV; ++v)
-    {
-      offsets_[v + 1] += offsets_[v];
-    }
-    quadsOf_.resize(offsets_.back());
-    std::vector<int> fill(offsets_.begin(), offsets_.end() - 1);
-    for (int i = 0; i < mesh_.Q.rows(); ++i)
-    {
-      for (int k = 0; k < 4; ++k)
-      {
-        quadsOf_[fill[mesh_.Q(i, k)]++] = i;
-      }
-    }
+    VertexQuads adjacency = vertexQuads(mesh_);
+    offsets_ = std::move(adjacency.offsets);
+    quadsOf_ = std::move(adjacency.quads);
   }
 
   /// Vertices on the quad mesh's boundary, on the surface's boundary, or in no triangle.
   void findFixed()
   {
-    fixed_.assign(mesh_.V.rows(), 0);
-    std::map<std::pair<int, int>, int> edgeCount;
-    for (int i = 0; i < mesh_.Q.rows(); ++i)
-    {
-      for (int k = 0; k < 4; ++k)
-      {
-        const int a = mesh_.Q(i, k), b = mesh_.Q(i, (k + 1) % 4);
-        ++edgeCount[{ std::min(a, b), std::max(a, b) }];
-      }
-    }
-    for (const auto& [edge, count] : edgeCount)
-    {
-      if (count != 2)
-      {
-        fixed_[edge.first] = fixed_[edge.second] = 1;
-      }
-    }
+    fixed_ = quadMeshBoundary(mesh_);
     for (int v = 0; v < static_cast<int>(fixed_.size()); ++v)
     {
       const int t = mesh_.vertexTriangle[v];
-      fixed_[v] |= t < 0 || t >= F_.rows() || onSurfaceBoundary(v);
+      fixed_[v] |= t < 0 || t >= F_.rows() || onSurfaceBoundary(V_, F_, topo_, mesh_, v);
     }
-  }
-
-  bool onSurfaceBoundary(int v) const
-  {
-    if (mesh_.vertexPoint[v] >= 0)
-    {
-      return topo_.boundaryVertex[mesh_.vertexPoint[v]] != 0;
-    }
-    const int t = mesh_.vertexTriangle[v];
-    const Eigen::Vector3d p = mesh_.V.row(v);
-    for (int k = 0; k < 3; ++k)
-    {
-      if (topo_.faceNeighbors(t, k) < 0)
-      {
-        const Eigen::Vector3d a = V_.row(F_(t, k)), b = V_.row(F_(t, (k + 1) % 3));
-        if ((closestOnSegment(p, a, b) - p).norm() <= 1e-7 * (b - a).norm())
-        {
-          return true;
-        }
-      }
-    }
-    return false;
   }
 
   /// The longest edge of v's quads.

@@ -1,6 +1,7 @@
 // QuadPatching.cxx: patchQuadMesh, the holes inside the surface filled with quads.
 #include "QuadPatching.h"
 
+#include "QuadMeshAdjacency.h"
 #include "ScaledJacobian.h"
 #include "SurfaceLocator.h"
 
@@ -52,7 +53,7 @@ public:
     removed_.assign(quads_.size(), 0);
     for (int v = 0; v < static_cast<int>(q.V.rows()); ++v)
     {
-      onBoundary_.push_back(onSurfaceBoundary(v) ? 1 : 0);
+      onBoundary_.push_back(onSurfaceBoundary(V, F, topo, q, v) ? 1 : 0);
     }
   }
 
@@ -187,31 +188,7 @@ private:
     return (surfacePoint(F_(t, 1)) - a).cross(surfacePoint(F_(t, 2)) - a);
   }
 
-  /// Whether quad vertex v lies on a boundary edge of the surface.
-  bool onSurfaceBoundary(int v) const
-  {
-    if (q_.vertexPoint[v] >= 0)
-    {
-      return topo_.boundaryVertex[q_.vertexPoint[v]] != 0; // on a point of the surface
-    }
-    const int t = q_.vertexTriangle[v];
-    if (t < 0)
-    {
-      return false;
-    }
-    for (int k = 0; k < 3; ++k)
-    {
-      if (topo_.faceNeighbors(t, k) < 0)
-      {
-        const Eigen::Vector3d a = surfacePoint(F_(t, k)), b = surfacePoint(F_(t, (k + 1) % 3));
-        if ((closestOnSegment(point(v), a, b) - point(v)).norm() <= 1e-7 * (b - a).norm())
-        {
-          return true;
-        }
-      }
-    }
-    return false;
-  }
+
 
   /// Whether the quad faces against the surface triangle closest to its centre.
   bool turned(const Eigen::Vector4i& c) const

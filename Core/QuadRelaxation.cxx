@@ -2,6 +2,7 @@
 // repairInvertedQuads.
 #include "QuadRelaxation.h"
 
+#include "QuadMeshAdjacency.h"
 #include "ScaledJacobian.h"
 #include "SurfaceLocator.h"
 
@@ -152,25 +153,8 @@ private:
   /// Fixed vertices: on the quad mesh's boundary, or on an input crease or boundary.
   void fixVertices()
   {
-    const int nV = static_cast<int>(mesh.V.rows());
-    fixed.assign(nV, 0);
-    std::map<std::pair<int, int>, int> edgeCount;
-    for (int i = 0; i < static_cast<int>(mesh.Q.rows()); ++i)
-    {
-      for (int k = 0; k < 4; ++k)
-      {
-        const int a = mesh.Q(i, k), b = mesh.Q(i, (k + 1) % 4);
-        ++edgeCount[{ std::min(a, b), std::max(a, b) }];
-      }
-    }
-    for (const auto& [edge, count] : edgeCount)
-    {
-      if (count != 2)
-      {
-        fixed[edge.first] = fixed[edge.second] = 1;
-      }
-    }
-    for (int v = 0; v < nV; ++v)
+    fixed = quadMeshBoundary(mesh);
+    for (int v = 0; v < static_cast<int>(mesh.V.rows()); ++v)
     {
       fixed[v] |= onCrease(v);
     }
@@ -202,29 +186,9 @@ private:
   /// The quads of each vertex (CSR: offsets, quadsOf).
   void collectVertexQuads()
   {
-    const int nV = static_cast<int>(mesh.V.rows());
-    const int nQ = static_cast<int>(mesh.Q.rows());
-    offsets.assign(nV + 1, 0);
-    quadsOf.resize(4 * static_cast<std::size_t>(nQ));
-    for (int i = 0; i < nQ; ++i)
-    {
-      for (int k = 0; k < 4; ++k)
-      {
-        ++offsets[mesh.Q(i, k) + 1];
-      }
-    }
-    for (int v = 0; v < nV; ++v)
-    {
-      offsets[v + 1] += offsets[v];
-    }
-    std::vector<int> fill(offsets.begin(), offsets.end() - 1);
-    for (int i = 0; i < nQ; ++i)
-    {
-      for (int k = 0; k < 4; ++k)
-      {
-        quadsOf[fill[mesh.Q(i, k)]++] = i;
-      }
-    }
+    VertexQuads adjacency = vertexQuads(mesh);
+    offsets = std::move(adjacency.offsets);
+    quadsOf = std::move(adjacency.quads);
   }
 
   void measureMeanEdge()
@@ -411,34 +375,6 @@ private:
   std::vector<int> candidates;     ///< gatherCandidates' result (its memory reused)
 };
 
-/// The quads' vertices and those within `rings` quad rings of them.
-std::vector<char> verticesNear(const QuadMesh& mesh, const std::vector<int>& quads, int rings)
-{
-  std::vector<char> near(mesh.V.rows(), 0);
-  for (const int i : quads)
-  {
-    for (int k = 0; k < 4; ++k)
-    {
-      near[mesh.Q(i, k)] = 1;
-    }
-  }
-  // grow by quad rings: every vertex of a quad with a vertex already in
-  for (int ring = 0; ring < rings; ++ring)
-  {
-    std::vector<char> grown = near;
-    for (int i = 0; i < mesh.Q.rows(); ++i)
-    {
-      const bool touches =
-        near[mesh.Q(i, 0)] || near[mesh.Q(i, 1)] || near[mesh.Q(i, 2)] || near[mesh.Q(i, 3)];
-      for (int k = 0; k < 4 && touches; ++k)
-      {
-        grown[mesh.Q(i, k)] = 1;
-      }
-    }
-    near.swap(grown);
-  }
-  return near;
-}
 }
 
 QuadRelaxReport relaxQuads(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F,
