@@ -131,6 +131,7 @@ void addComponent(const Inputs& in, const Component& part, const MeshTopology& t
   out.regrids += map.regrids;
   out.untangleSeconds += map.untangleSeconds;
   out.untangleBudgetSpent = out.untangleBudgetSpent || map.untangleBudgetSpent;
+  out.untangleEvaluations += map.untangleEvaluations;
   out.maxSeamError = std::max(out.maxSeamError, map.maxSeamError);
   out.solveSeconds.insert(out.solveSeconds.end(), map.solveSeconds.begin(), map.solveSeconds.end());
   out.solver = map.solver;

@@ -64,6 +64,7 @@ void regridDefectiveMap(const Inputs& in, const Field& field, SeamlessSystem& sy
     trial.edgeLength = edgeLength / scale;
     trial.untangleRegions = 0;
     trial.separatedBranchPoints = 0;
+    trial.untangleEvaluations = 0;
     const Progress part = halving(progress, i);
     Eigen::VectorXd xt = continuous * scale;
     const Eigen::VectorXd integers =
@@ -76,12 +77,14 @@ void regridDefectiveMap(const Inputs& in, const Field& field, SeamlessSystem& sy
     found.wrong = wrongWindings(trialIn, field, trial, sys.uv(xt));
     repairMap(trialIn, field, sys, xt, found, trial, part.part(0.1, 1.0));
     ++out.regrids;
+    out.untangleEvaluations += trial.untangleEvaluations;
     // only a map without defects replaces the first: one with fewer can still give worse quads
     // (the teapot's spout, smoothest field: 9 defects and valid quads; 1 defect at 4 times the
     // quads, a -1/4 cone closed up, and a quad against the surface)
     if (found.count() == 0)
     {
       trial.regrids = out.regrids;
+      trial.untangleEvaluations = out.untangleEvaluations;
       out = std::move(trial);
       x = std::move(xt);
       defects = std::move(found);

@@ -50,7 +50,8 @@ public:
     , out_(out)
     , Dr_(sys.D)
     , sqrtArea_(areaRoots(sys.faceArea))
-    , work_(static_cast<long long>(in.options.untangleWork) * in.numFaces())
+    , given_(static_cast<long long>(in.options.untangleWork) * in.numFaces())
+    , work_(given_)
     , untangler_{ Dr_, sys.D, sqrtArea_, out.edgeLength, sys.numReal, &work_ }
     , progress_(progress)
   {}
@@ -92,6 +93,8 @@ public:
   }
 
   bool spent() const { return untangler_.spent(); }
+  /// The triangle energy evaluations spent so far.
+  long long used() const { return given_ - work_; }
   /// Freed, a fan laid out again can close up once more as its surroundings untangle (on fine
   /// meshes a cone's fan is small against a grid cell); held, it cannot, though its
   /// surroundings may then keep folds. This runs the first attempt again with its fans held
@@ -244,6 +247,7 @@ private:
   const Parameterization& out_;
   const Eigen::SparseMatrix<double, Eigen::RowMajor> Dr_;
   const Eigen::VectorXd sqrtArea_;
+  const long long given_;     // the untangling's budget
   long long work_;            // what the untangling may still spend, in triangle energy evaluations
   const Untangler untangler_; // in symbols: only the real ones move, and they are the real columns
   Snapshot firstHeld_;
@@ -313,6 +317,7 @@ void repairMap(const Inputs& in, const Field& field, const SeamlessSystem& sys, 
   }
   out.untangleSeconds = seconds(started);
   out.untangleBudgetSpent = repair.spent();
+  out.untangleEvaluations += repair.used();
   progress.report(1.0);
 }
 }

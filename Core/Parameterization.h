@@ -127,6 +127,8 @@ struct Parameterization
   int wrongWindings = 0;
   int untangleRegions = 0;          ///< neighbourhoods untangled (each growing the last)
   bool untangleBudgetSpent = false; ///< the untangling stopped at options.untangleWork
+  /// the untangling's work: triangle energy evaluations, every repair and regrid trial summed
+  long long untangleEvaluations = 0;
   /// other grid sizes tried because the repaired map kept defects (maximumRegrids)
   int regrids = 0;
   double untangleSeconds = 0.0;

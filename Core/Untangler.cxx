@@ -1,12 +1,19 @@
 // Untangler.cxx: foldover-free untangling of flipped triangles with L-BFGS.
 #include "Untangler.h"
 
+#include "Parallel.h"
+#include "UnionFind.h"
+
 #include <Eigen/LU>
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <cstddef>
+#include <exception>
 #include <limits>
+#include <numeric>
+#include <thread>
 #include <utility>
 
 namespace quadcover
@@ -316,11 +323,15 @@ void untangle(LocalEnergy& energy, Eigen::VectorXd& y, int maxRounds, const Prog
     const double eps = lowest < 0 ? std::sqrt(1e-8 + 0.04 * lowest * lowest) : 1e-8;
     const double e = minimize(energy, y, eps, progress);
     const std::pair<double, int> after = energy.folds(y);
-    if (after.first > 0 && previous - e <= 1e-3 * std::abs(e))
+    // settled: unfolded, and a round at the final eps gained little over the one before. Only
+    // energies of the same eps compare: a smaller eps raises the energy of the same map, which
+    // once stopped a run that had just unfolded its last triangle to a determinant of 0.002.
+    const bool finalEps = !(lowest < 0);
+    if (after.first > 0 && finalEps && previous - e <= 1e-3 * std::abs(e))
     {
       break;
     }
-    previous = e;
+    previous = finalEps ? e : std::numeric_limits<double>::max();
     const bool better =
       after.second < best.second || after.first > best.first + 0.01 * std::abs(best.first);
     best = { std::max(best.first, after.first), std::min(best.second, after.second) };
@@ -378,18 +389,149 @@ std::vector<int> Untangler::facesUsing(const std::vector<int>& columns) const
   return faces;
 }
 
+std::vector<std::pair<std::vector<int>, std::vector<int>>> Untangler::pieces(
+  const std::vector<int>& columns, const std::vector<int>& faces) const
+{
+  // free unknowns are joined when a face's rows use both
+  std::vector<int> indexOf(Dc.cols(), -1);
+  for (int i = 0; i < static_cast<int>(columns.size()); ++i)
+  {
+    indexOf[columns[i]] = i;
+  }
+  std::vector<int> parent(columns.size());
+  for (int i = 0; i < static_cast<int>(parent.size()); ++i)
+  {
+    parent[i] = i;
+  }
+  std::vector<int> faceColumn(faces.size(), -1);
+  for (std::size_t j = 0; j < faces.size(); ++j)
+  {
+    for (int i = 0; i < 4; ++i)
+    {
+      for (RowMajorMatrix::InnerIterator it(Dr, 4 * faces[j] + i); it; ++it)
+      {
+        const int c = indexOf[it.col()];
+        if (c >= 0)
+        {
+          faceColumn[j] < 0 ? void(faceColumn[j] = c) : unite(parent, faceColumn[j], c);
+        }
+      }
+    }
+  }
+  // in the order of their first column, columns and faces each in their order
+  std::vector<int> pieceOf(columns.size(), -1);
+  std::vector<std::pair<std::vector<int>, std::vector<int>>> result;
+  for (int i = 0; i < static_cast<int>(columns.size()); ++i)
+  {
+    const int root = findRoot(parent, i);
+    if (pieceOf[root] < 0)
+    {
+      pieceOf[root] = static_cast<int>(result.size());
+      result.emplace_back();
+    }
+    result[pieceOf[root]].first.push_back(columns[i]);
+  }
+  for (std::size_t j = 0; j < faces.size(); ++j)
+  {
+    if (faceColumn[j] >= 0)
+    {
+      result[pieceOf[findRoot(parent, faceColumn[j])]].second.push_back(faces[j]);
+    }
+  }
+  return result;
+}
+
 void Untangler::run(const MeshTopology& topo, const Eigen::MatrixX3i& F,
   const std::vector<int>& flipped, int rings, int maxRounds, Eigen::VectorXd& x,
   const std::vector<char>& frozen, const Progress& progress) const
 {
-  // free unknowns: the real ones the region's rows use; energy: every face they touch
-  std::vector<int> columns = freeColumns(regionAround(topo, F, flipped, rings), frozen);
-  const std::vector<int> faces = facesUsing(columns);
-  int evaluations = 0;
-  LocalEnergy energy(*this, std::move(columns), faces, x, evaluations);
-  Eigen::VectorXd y = energy.restrictTo(x);
-  untangle(energy, y, maxRounds, progress);
-  energy.scatter(y, x);
+  // free unknowns: the real ones the region's rows use; energy: every face they touch. The
+  // pieces that share no free unknown are untangled each on its own: in one L-BFGS the folds of
+  // one piece set every piece's eps and keep all of them iterating.
+  const std::vector<int> columns = freeColumns(regionAround(topo, F, flipped, rings), frozen);
+  std::vector<std::pair<std::vector<int>, std::vector<int>>> list =
+    pieces(columns, facesUsing(columns));
+  // Each piece reads only its own free unknowns and symbols no piece moves, and writes only its
+  // own: the pieces run on several threads with the result of one. Each gets a share of the
+  // work left in proportion to its faces, fixed beforehand, so that what a piece may spend does
+  // not depend on the order the threads take them in.
+  std::size_t totalFaces = 0;
+  for (const auto& piece : list)
+  {
+    totalFaces += piece.second.size();
+  }
+  std::vector<long long> share(list.size(), 0);
+  for (std::size_t i = 0; i < list.size() && work; ++i)
+  {
+    share[i] = std::max(1LL,
+      static_cast<long long>(static_cast<double>(*work) * list[i].second.size() /
+        std::max<std::size_t>(1, totalFaces)));
+  }
+  const std::vector<long long> given = share;
+  // the largest first, so that no thread is left with a large piece at the end
+  std::vector<int> order(list.size());
+  std::iota(order.begin(), order.end(), 0);
+  std::stable_sort(order.begin(), order.end(),
+    [&](int a, int b) { return list[a].second.size() > list[b].second.size(); });
+  // the calling thread, the one that reports, takes the largest piece (its progress then does
+  // not depend on how the threads share the pieces) and counts its evaluations across its pieces
+  // (its fractions only grow)
+  std::atomic<int> next{ 1 };
+  std::atomic<bool> stop{ false };
+  auto untanglePieces = [&](int n, const Progress& report) {
+    int evaluations = 0;
+    for (; n < static_cast<int>(order.size()) && !stop; n = next++)
+    {
+      const int i = order[n];
+      Untangler own = *this;
+      own.work = work ? &share[i] : nullptr;
+      LocalEnergy energy(own, std::move(list[i].first), list[i].second, x, evaluations);
+      Eigen::VectorXd y = energy.restrictTo(x);
+      untangle(energy, y, maxRounds, report);
+      energy.scatter(y, x);
+    }
+  };
+  const int threads = std::min(defaultThreadCount(), static_cast<int>(list.size()));
+  std::vector<std::exception_ptr> failed(std::max(1, threads));
+  std::vector<std::thread> workers;
+  for (int t = 1; t < threads; ++t)
+  {
+    workers.emplace_back([&, t]() {
+      try
+      {
+        untanglePieces(next++, Progress()); // only the calling thread reports
+      }
+      catch (...)
+      {
+        failed[t] = std::current_exception();
+        stop = true;
+      }
+    });
+  }
+  try
+  {
+    untanglePieces(0, progress);
+  }
+  catch (...)
+  {
+    failed[0] = std::current_exception();
+    stop = true;
+  }
+  for (std::thread& w : workers)
+  {
+    w.join();
+  }
+  for (const std::exception_ptr& e : failed)
+  {
+    if (e)
+    {
+      std::rethrow_exception(e);
+    }
+  }
+  for (std::size_t i = 0; i < list.size() && this->work; ++i)
+  {
+    *this->work -= given[i] - share[i];
+  }
 }
 }
 }

@@ -9,6 +9,7 @@
 #include <Eigen/Core>
 #include <Eigen/Sparse>
 
+#include <utility>
 #include <vector>
 
 namespace quadcover
@@ -54,6 +55,9 @@ private:
     const std::vector<char>& inRegion, const std::vector<char>& frozen) const;
   /// The faces (with area) whose rows use any of the columns.
   std::vector<int> facesUsing(const std::vector<int>& columns) const;
+  /// The columns split into pieces that no face's rows join, each with the faces using it.
+  std::vector<std::pair<std::vector<int>, std::vector<int>>> pieces(
+    const std::vector<int>& columns, const std::vector<int>& faces) const;
 };
 }
 }

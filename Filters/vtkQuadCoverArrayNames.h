@@ -112,6 +112,9 @@ constexpr const char* FlippedTriangles = "FlippedTriangles";
 /// field, 1 x int: inner points around which the map's angles do not add up to 2 pi (1 - index)
 /// (the map winds around them unlike the frame field; 0 unless untangling failed there).
 constexpr const char* WindingErrors = "WindingErrors";
+/// field, 1 x double: the untangling's work, in triangle energy evaluations per triangle of the
+/// surface (bounded by UntangleWork; 0 when no triangle was flipped).
+constexpr const char* UntangleWork = "UntangleWork";
 /// field, 1 x double, 3 tuples: sum_f A_f |grad phi - K|^2 / (A |K|^2) of the continuous
 /// minimizer, after rounding, and of the output map (0 is a perfect fit, 1 a constant map).
 constexpr const char* ParameterizationEnergy = "ParameterizationEnergy";

@@ -18,6 +18,7 @@
 
 #include "Parameterization.h"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -101,6 +102,8 @@ void AddFigures(
   using vtkQuadCoverEigen::AddField;
   AddField<vtkDoubleArray>(fd, names::EdgeLength, { in.InWorldUnits(map.edgeLength) });
   AddField<vtkIntArray>(fd, names::WindingErrors, { double(map.wrongWindings) });
+  AddField<vtkDoubleArray>(fd, names::UntangleWork,
+    { double(map.untangleEvaluations) / std::max<vtkIdType>(1, in.NumberOfTriangles()) });
   AddField<vtkIntArray>(fd, names::FlippedTriangles,
     { double(map.flippedContinuous), double(map.flippedRounded), double(map.flipped) });
   AddField<vtkDoubleArray>(fd, names::ParameterizationEnergy,

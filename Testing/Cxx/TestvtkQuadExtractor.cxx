@@ -26,6 +26,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <map>
@@ -298,8 +299,14 @@ TEST_P(QuadsOn, ManifoldAllQuadMeshWithTheInputsTopology)
       Field(out, names::ScaledJacobianStatistics, 1), hausdorff,
       Field(out, names::DroppedCells, 0) + Field(out, names::DroppedCells, 1) +
         Field(out, names::DroppedCells, 2));
-    // the quads stay within 5% of the bounding-box diagonal
-    EXPECT_LT(hausdorff, 5.0);
+    // the quads stay within 5% of the bounding-box diagonal, or 4 quad edges where they are
+    // larger: a spike thinner than a quad (cheburashka's fingers at 3,000 quads, 1.5% edges) is
+    // cut off up to a few quads from its tip
+    double bounds[6];
+    surface->GetBounds(bounds);
+    const double diagonal = std::sqrt(std::pow(bounds[1] - bounds[0], 2) +
+      std::pow(bounds[3] - bounds[2], 2) + std::pow(bounds[5] - bounds[4], 2));
+    EXPECT_LT(hausdorff, std::max(5.0, 400 * Field(map, names::EdgeLength) / diagonal));
   }
 }
 
