@@ -60,9 +60,12 @@ struct ParameterizationOptions
   int maximumUntangleRounds = 30;
   /// The untangling's budget, so that its time stays bounded by a multiple of the solve's: at
   /// most this many energy evaluations per triangle of the surface, in all (counted as work, not
-  /// time, so that every machine gives the same map). With the defaults at 6,500 quads the shared
-  /// meshes' maps spend 7 to 940 (decimated-knight; armadillo 910), the teapot's lid, which
-  /// does not come right, 5,200.
+  /// time, so that every machine gives the same map). On the shared and generated meshes at 1,000
+  /// and 6,500 quads, both with the defaults and the smoothest field, every map that came out of
+  /// its repair without a flipped triangle spent at most 2,033 (the teapot at 1,000 quads); only
+  /// maps that kept flips spent more, up to 3,810 (armadillo, smoothest field, 1,000 quads).
+  /// (A budget of 2,500 cut those short, but also the repair of small components that their
+  /// trials on other grids then put right: Data/components.obj's small tori.)
   int untangleWork = 10000;
   /// Each component of the surface gets a map of its own, with at least this many quads: its
   /// share of targetQuadCount by area, or targetEdgeLength made shorter where that would give

@@ -114,7 +114,7 @@ constexpr const char* FlippedTriangles = "FlippedTriangles";
 constexpr const char* WindingErrors = "WindingErrors";
 /// field, 1 x double: the untangling's work, in triangle energy evaluations per triangle of the
 /// surface (bounded by UntangleWork; 0 when no triangle was flipped).
-constexpr const char* UntangleWork = "UntangleWork";
+constexpr const char* UntangleWorkSpent = "UntangleWorkSpent";
 /// field, 1 x double, 3 tuples: sum_f A_f |grad phi - K|^2 / (A |K|^2) of the continuous
 /// minimizer, after rounding, and of the output map (0 is a perfect fit, 1 a constant map).
 constexpr const char* ParameterizationEnergy = "ParameterizationEnergy";

@@ -102,7 +102,7 @@ void AddFigures(
   using vtkQuadCoverEigen::AddField;
   AddField<vtkDoubleArray>(fd, names::EdgeLength, { in.InWorldUnits(map.edgeLength) });
   AddField<vtkIntArray>(fd, names::WindingErrors, { double(map.wrongWindings) });
-  AddField<vtkDoubleArray>(fd, names::UntangleWork,
+  AddField<vtkDoubleArray>(fd, names::UntangleWorkSpent,
     { double(map.untangleEvaluations) / std::max<vtkIdType>(1, in.NumberOfTriangles()) });
   AddField<vtkIntArray>(fd, names::FlippedTriangles,
     { double(map.flippedContinuous), double(map.flippedRounded), double(map.flipped) });
