@@ -43,7 +43,7 @@ void regridDefectiveMap(const Inputs& in, const Field& field, SeamlessSystem& sy
   // the scale (in 1 / edgeLength) of the best map so far; 1: the first
   double bestScale = 1.0;
   const double cells = sys.faceArea.sum() / (edgeLength * edgeLength);
-  if (cells > in.options.maximumRegridQuads)
+  if (cells > in.options.maximumRegridQuadCount)
   {
     // a large map keeps its grid: its defects are local, each trial costs a repair of the whole
     // map, and a grid twice as fine (rocker-arm, smoothest field) changed a valid mesh of 6,500

@@ -79,7 +79,7 @@ struct ParameterizationOptions
   int maximumRegrids = 4;
   /// Only maps of at most this many quads are tried on other grids: a small component's grid is
   /// coarse against its singularities, and its trials are cheap.
-  double maximumRegridQuads = 1000;
+  double maximumRegridQuadCount = 1000;
 };
 
 /**

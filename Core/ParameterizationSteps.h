@@ -230,7 +230,7 @@ void repairMap(const Inputs& in, const Field& field, const SeamlessSystem& sys, 
 /// never fewer than minimumComponentQuadCount), repairs each, and keeps the first without
 /// defects, if any: x, defects and out (its figures and edgeLength) follow it, and sys is left
 /// scaled for it. Not when the first repair spent its untangling budget, nor for maps of more
-/// than maximumRegridQuads quads. Counts the grids tried in out.regrids.
+/// than maximumRegridQuadCount quads. Counts the grids tried in out.regrids.
 void regridDefectiveMap(const Inputs& in, const Field& field, SeamlessSystem& sys,
   const HessianFactor& factor, const Eigen::VectorXd& continuous, bool greedy, Eigen::VectorXd& x,
   Defects& defects, Parameterization& out, const Progress& progress);

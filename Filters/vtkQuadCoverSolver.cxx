@@ -130,6 +130,9 @@ vtkQuadCoverSolver::vtkQuadCoverSolver()
   this->MaximumUntangleRounds = defaults.maximumUntangleRounds;
   this->UntangleWork = defaults.untangleWork;
   this->MinimumComponentQuadCount = defaults.minimumComponentQuadCount;
+  this->CurvatureEdgeLength = defaults.curvatureEdgeLength;
+  this->MaximumRegrids = defaults.maximumRegrids;
+  this->MaximumRegridQuadCount = defaults.maximumRegridQuadCount;
   this->SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_CELLS, names::FrameU);
   this->SetInputArrayToProcess(1, 0, 0, vtkDataObject::FIELD_ASSOCIATION_CELLS, names::Matching);
 }
@@ -151,7 +154,9 @@ void vtkQuadCoverSolver::Execute(vtkQuadCoverSurface& in, vtkInformationVector* 
 
   const quadcover::FrameGeometry geometry = quadcover::computeFrameGeometry(in.V, in.F, in.topo);
   vtkQuadCoverEigen::RequireNumbers({ { "TargetEdgeLength", this->TargetEdgeLength },
-    { "BoundaryTolerance", this->BoundaryTolerance } });
+    { "BoundaryTolerance", this->BoundaryTolerance },
+    { "CurvatureEdgeLength", this->CurvatureEdgeLength },
+    { "MaximumRegridQuadCount", this->MaximumRegridQuadCount } });
   quadcover::ParameterizationOptions options;
   options.targetEdgeLength = in.InCoreUnits(this->TargetEdgeLength); // for the scaled surface
   options.targetQuadCount = this->TargetQuadCount;
@@ -162,6 +167,9 @@ void vtkQuadCoverSolver::Execute(vtkQuadCoverSurface& in, vtkInformationVector* 
   options.maximumUntangleRounds = this->MaximumUntangleRounds;
   options.untangleWork = this->UntangleWork;
   options.minimumComponentQuadCount = this->MinimumComponentQuadCount;
+  options.curvatureEdgeLength = this->CurvatureEdgeLength;
+  options.maximumRegrids = this->MaximumRegrids;
+  options.maximumRegridQuadCount = this->MaximumRegridQuadCount;
   const quadcover::Parameterization map = quadcover::computeParameterization(in.V, in.F, in.topo,
     geometry, U, matching, options, vtkQuadCoverEigen::CoreProgress(this, 0.15, 0.95));
   if (map.wrongWindings > 0)
@@ -232,5 +240,8 @@ void vtkQuadCoverSolver::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "MaximumUntangleRounds: " << this->MaximumUntangleRounds << "\n";
   os << indent << "UntangleWork: " << this->UntangleWork << "\n";
   os << indent << "MinimumComponentQuadCount: " << this->MinimumComponentQuadCount << "\n";
+  os << indent << "CurvatureEdgeLength: " << this->CurvatureEdgeLength << "\n";
+  os << indent << "MaximumRegrids: " << this->MaximumRegrids << "\n";
+  os << indent << "MaximumRegridQuadCount: " << this->MaximumRegridQuadCount << "\n";
   os << indent << "SplitSeams: " << (this->SplitSeams ? "On" : "Off") << "\n";
 }

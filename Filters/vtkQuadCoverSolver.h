@@ -127,6 +127,29 @@ public:
   ///@}
 
   ///@{
+  /** With TargetQuadCount, the edge length is at most this over the surface's mean curvature,
+   * in [0, 100] (default 1.5), so that a thin tube gets at least 4 quads around it; 0: no
+   * limit. */
+  vtkSetClampMacro(CurvatureEdgeLength, double, 0.0, 100.0);
+  vtkGetMacro(CurvatureEdgeLength, double);
+  ///@}
+
+  ///@{
+  /** A map that keeps flipped triangles or points wound the wrong way after its repair is
+   * rounded and repaired again on up to this many other grids (2, 1/2, 4 and 1/4 times the
+   * quads), in [0, 4] (default 4); the first without defects replaces it; 0: none. */
+  vtkSetClampMacro(MaximumRegrids, int, 0, 4);
+  vtkGetMacro(MaximumRegrids, int);
+  ///@}
+
+  ///@{
+  /** Only maps (components) of at most this many quads are tried on other grids, in
+   * [0, 100000000] (default 1000): each trial repairs the whole map again. */
+  vtkSetClampMacro(MaximumRegridQuadCount, double, 0.0, 1e8);
+  vtkGetMacro(MaximumRegridQuadCount, double);
+  ///@}
+
+  ///@{
   /** Cut the output open along the seams, with point texture coordinates (default off). */
   vtkSetMacro(SplitSeams, bool);
   vtkGetMacro(SplitSeams, bool);
@@ -161,6 +184,9 @@ protected:
   int MaximumUntangleRounds;
   int UntangleWork;
   int MinimumComponentQuadCount;
+  double CurvatureEdgeLength;
+  int MaximumRegrids;
+  double MaximumRegridQuadCount;
   bool SplitSeams = false;
 
 private:
