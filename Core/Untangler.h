@@ -38,7 +38,10 @@ struct Untangler
   /// when it is spent (nullptr: no limit). Counting work, not seconds, keeps the result the same
   /// on every machine.
   long long* work = nullptr;
-  double theta = 0.25;
+  static constexpr double DefaultTheta = 0.25;
+  double theta = DefaultTheta;
+  /// Worker threads (0: defaultThreadCount()); the result does not depend on it.
+  int numberOfThreads = 0;
 
   bool spent() const { return work && *work <= 0; }
 

@@ -133,6 +133,7 @@ vtkQuadCoverSolver::vtkQuadCoverSolver()
   this->CurvatureEdgeLength = defaults.curvatureEdgeLength;
   this->MaximumRegrids = defaults.maximumRegrids;
   this->MaximumRegridQuadCount = defaults.maximumRegridQuadCount;
+  this->NumberOfThreads = defaults.numberOfThreads;
   this->SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_CELLS, names::FrameU);
   this->SetInputArrayToProcess(1, 0, 0, vtkDataObject::FIELD_ASSOCIATION_CELLS, names::Matching);
 }
@@ -170,6 +171,7 @@ void vtkQuadCoverSolver::Execute(vtkQuadCoverSurface& in, vtkInformationVector* 
   options.curvatureEdgeLength = this->CurvatureEdgeLength;
   options.maximumRegrids = this->MaximumRegrids;
   options.maximumRegridQuadCount = this->MaximumRegridQuadCount;
+  options.numberOfThreads = this->NumberOfThreads;
   const quadcover::Parameterization map = quadcover::computeParameterization(in.V, in.F, in.topo,
     geometry, U, matching, options, vtkQuadCoverEigen::CoreProgress(this, 0.15, 0.95));
   if (map.wrongWindings > 0)
@@ -243,5 +245,6 @@ void vtkQuadCoverSolver::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "CurvatureEdgeLength: " << this->CurvatureEdgeLength << "\n";
   os << indent << "MaximumRegrids: " << this->MaximumRegrids << "\n";
   os << indent << "MaximumRegridQuadCount: " << this->MaximumRegridQuadCount << "\n";
+  os << indent << "NumberOfThreads: " << this->NumberOfThreads << "\n";
   os << indent << "SplitSeams: " << (this->SplitSeams ? "On" : "Off") << "\n";
 }

@@ -150,6 +150,13 @@ public:
   ///@}
 
   ///@{
+  /** Number of threads for the untangling, 0 for all cores (default 0). The result does not
+   * depend on it. */
+  vtkSetClampMacro(NumberOfThreads, int, 0, 1024);
+  vtkGetMacro(NumberOfThreads, int);
+  ///@}
+
+  ///@{
   /** Cut the output open along the seams, with point texture coordinates (default off). */
   vtkSetMacro(SplitSeams, bool);
   vtkGetMacro(SplitSeams, bool);
@@ -187,6 +194,7 @@ protected:
   double CurvatureEdgeLength;
   int MaximumRegrids;
   double MaximumRegridQuadCount;
+  int NumberOfThreads;
   bool SplitSeams = false;
 
 private:

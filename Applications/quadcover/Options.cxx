@@ -301,7 +301,8 @@ std::vector<Option> StageOptions(Pipeline& p)
       "refine components with fewer triangles (the surface stays), 0: none"),
     QC_NUMBER("curvature", curvature, NeighborhoodRadius,
       "radius of the curvature neighbourhood, in median edge lengths"),
-    QC_NUMBER("curvature", curvature, NumberOfThreads, "worker threads, 0 for all cores"),
+    QC_NUMBER2("curvature", curvature, solver, NumberOfThreads,
+      "worker threads (curvature, untangling), 0 for all cores"),
     QC_SWITCH("curvature", curvature, UseInputFrames,
       "use a FrameU cell array of the input as the guidance field"),
     QC_NUMBER(
