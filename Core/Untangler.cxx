@@ -85,10 +85,13 @@ public:
     }
     rowBegin_.reserve(4 * faces.size() + 1);
     rowBegin_.push_back(0);
-    scale_.reserve(faces.size());
+    area_.reserve(faces.size());
+    toUnitCell_.reserve(faces.size());
     for (const int f : faces)
     {
-      scale_.push_back(untangler.sqrtArea[f]);
+      const double scale = untangler.sqrtArea[f];
+      area_.push_back(scale * scale);
+      toUnitCell_.push_back(untangler.edgeLength / scale);
       for (int i = 0; i < 4; ++i)
       {
         for (RowMajorMatrix::InnerIterator it(untangler.Dr, 4 * f + i); it; ++it)
@@ -140,13 +143,13 @@ public:
     ++evaluations_;
     if (untangler_.work)
     {
-      *untangler_.work -= static_cast<long long>(scale_.size());
+      *untangler_.work -= static_cast<long long>(area_.size());
     }
     z_.head(size()) = y;
     gradient_.setZero();
     const double theta = untangler_.theta;
     double total = 0.0;
-    for (int j = 0; j < static_cast<int>(scale_.size()); ++j)
+    for (int j = 0; j < static_cast<int>(area_.size()); ++j)
     {
       const Eigen::Matrix2d J = jacobian(j);
       const double det = J.determinant();
@@ -154,7 +157,7 @@ public:
       const double chi = 0.5 * (det + root);
       const double chiPrime = 0.5 * (1.0 + det / root);
       const double trace = J.squaredNorm();
-      const double area = scale_[j] * scale_[j];
+      const double area = area_[j];
       total += area * ((1 - theta) * trace / chi + theta * (det * det + 1) / chi);
       Eigen::Matrix2d dDet;
       dDet << J(1, 1), -J(1, 0), -J(0, 1), J(0, 0);
@@ -163,7 +166,7 @@ public:
         theta * (2.0 * det / chi - (det * det + 1) * chiPrime / (chi * chi)) * dDet;
       for (int i = 0; i < 4; ++i)
       {
-        const double gi = area * dE(i / 2, i % 2) * untangler_.edgeLength / scale_[j];
+        const double gi = area * dE(i / 2, i % 2) * toUnitCell_[j];
         for (int t = rowBegin_[4 * j + i]; t < rowBegin_[4 * j + i + 1]; ++t)
         {
           gradient_[slot_[t]] += gi * coefficient_[t];
@@ -181,7 +184,7 @@ public:
     z_.head(size()) = y;
     double lowest = std::numeric_limits<double>::max();
     int count = 0;
-    for (int j = 0; j < static_cast<int>(scale_.size()); ++j)
+    for (int j = 0; j < static_cast<int>(area_.size()); ++j)
     {
       const double det = jacobian(j).determinant();
       lowest = std::min(lowest, det);
@@ -202,14 +205,15 @@ private:
       {
         value += coefficient_[t] * z_[slot_[t]];
       }
-      J(i / 2, i % 2) = value * untangler_.edgeLength / scale_[j];
+      J(i / 2, i % 2) = value * toUnitCell_[j];
     }
     return J;
   }
 
   const Untangler& untangler_;
   const std::vector<int> columns_;
-  std::vector<double> scale_;       // per face of the energy: sqrt of its area
+  std::vector<double> area_;        // per face of the energy: its area
+  std::vector<double> toUnitCell_;  // per face: edgeLength / sqrt(area), J relative to the cell
   std::vector<int> rowBegin_;       // per row (4 per face): where its terms begin
   std::vector<double> coefficient_; // per term: D's coefficient
   std::vector<int> slot_;           // per term: the slot of its symbol
