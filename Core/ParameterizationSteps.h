@@ -226,11 +226,13 @@ void repairMap(const Inputs& in, const Field& field, const SeamlessSystem& sys, 
 // ---- maps that keep defects (MapRegrid.cxx) ----
 
 /// When the repaired map x still has defects: rounds the continuous minimizer `continuous` at
-/// other grid sizes (ParameterizationOptions::maximumRegrids of 2, 1/2, 4, 1/4 times the quads,
-/// never fewer than minimumComponentQuadCount), repairs each, and keeps the first without
-/// defects, if any: x, defects and out (its figures and edgeLength) follow it, and sys is left
-/// scaled for it. Not when the first repair spent its untangling budget, nor for maps of more
-/// than maximumRegridQuads quads. Counts the grids tried in out.regrids.
+/// other grid sizes (ParameterizationOptions::maximumRegrids of 2, 1/2, 4, 1/4, 8, 16 times the
+/// quads, never fewer than minimumComponentQuadCount, 8 and 16 only up to maximumRegridQuads
+/// quads), repairs each, and keeps the first without defects (but flat triangles, a sliver laid
+/// on a line, which no grid gives area), if any: x, defects and out (its figures and edgeLength)
+/// follow it, and sys is left scaled for it. Not when the first repair spent its untangling budget
+/// on a surface of more than 10 maximumRegridQuads triangles, nor for maps of more than
+/// maximumRegridQuads quads. Counts the grids tried in out.regrids.
 void regridDefectiveMap(const Inputs& in, const Field& field, SeamlessSystem& sys,
   const HessianFactor& factor, const Eigen::VectorXd& continuous, bool greedy, Eigen::VectorXd& x,
   Defects& defects, Parameterization& out, const Progress& progress);
