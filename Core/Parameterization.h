@@ -64,9 +64,12 @@ struct ParameterizationOptions
   /// meshes' maps spend 7 to 940 (decimated-knight; armadillo 910), the teapot's lid, which
   /// does not come right, 5,200.
   int untangleWork = 10000;
-  /// Each component of the surface gets a map of its own, with at least this many quads: its
-  /// share of targetQuadCount by area, or targetEdgeLength made shorter where that would give
-  /// fewer. (A component far smaller than a grid cell would otherwise get no quad at all.)
+  /// Each component of the surface gets a map of its own, with at least this many quads for each
+  /// of its holes and handles (2 minus its Euler characteristic, at least 1: a disk or a sphere
+  /// this many, a wheel of 14 boundary loops 14 times as many): its share of targetQuadCount by
+  /// area, or targetEdgeLength made shorter where that would give fewer. (A component far smaller
+  /// than a grid cell would otherwise get no quad at all, and one of many holes on a few dozen
+  /// quads loses them.)
   int minimumComponentQuadCount = 24;
   /// A map that keeps flipped triangles or points wound the wrong way after its repair is
   /// rounded and repaired again with up to this many other grid sizes (2, 1/2, 4, 1/4, 8 and 16

@@ -72,8 +72,8 @@ struct Field
 };
 
 /// The map of a surface of several components: computeParameterization on each, with its own
-/// edge length (ParameterizationOptions::minimumComponentQuadCount), put together
-/// (ComponentMaps.cxx). Parameterization::edgeLength is the largest component's.
+/// edge length (ParameterizationOptions::minimumComponentQuadCount per hole and handle), put
+/// together (ComponentMaps.cxx). Parameterization::edgeLength is the largest component's.
 Parameterization mapEachComponent(const Inputs& in, const Progress& progress);
 
 // ---- the surface cut open (CutSurface.cxx) ----

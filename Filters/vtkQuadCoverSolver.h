@@ -119,9 +119,10 @@ public:
   ///@}
 
   ///@{
-  /** Each connected component gets a map of its own with at least this many quads, in
-   * [1, 100000] (default 24): its share of TargetQuadCount by area, or TargetEdgeLength made
-   * shorter where that would give fewer, so that small components keep a coarse quad mesh. */
+  /** Each connected component gets a map of its own with at least this many quads per hole and
+   * handle (2 minus its Euler characteristic, at least 1), in [1, 100000] (default 24): its
+   * share of TargetQuadCount by area, or TargetEdgeLength made shorter where that would give
+   * fewer, so that small components keep a coarse quad mesh with all their holes. */
   vtkSetClampMacro(MinimumComponentQuadCount, int, 1, 100000);
   vtkGetMacro(MinimumComponentQuadCount, int);
   ///@}
