@@ -67,13 +67,17 @@ std::vector<Component> splitComponents(const Inputs& in)
   return parts;
 }
 
-/// The options for one component: at least minimumComponentQuadCount quads on it, else its share
-/// of the whole surface's target.
+/// The options for one component: at least minimumComponentQuadCount quads on it for each of its
+/// holes and handles (2 - its Euler characteristic, at least 1), else its share of the whole
+/// surface's target.
 ParameterizationOptions componentOptions(
-  const ParameterizationOptions& options, double area, double totalArea)
+  const ParameterizationOptions& options, double area, double totalArea, const MeshTopology& topo)
 {
   ParameterizationOptions own = options;
-  const double fewest = std::max(1, options.minimumComponentQuadCount);
+  // 2 - chi = 2 genus + boundary loops: a grid coarse enough to leave a hole or a handle only a
+  // few cells loses it (the truck's wheels of 14 loops on 24 quads came apart)
+  const double fewest =
+    std::max(1, options.minimumComponentQuadCount) * std::max(1, 2 - topo.eulerCharacteristic());
   if (options.targetEdgeLength > 0)
   {
     own.targetEdgeLength = std::min(options.targetEdgeLength, std::sqrt(area / fewest));
@@ -160,7 +164,8 @@ Parameterization mapEachComponent(const Inputs& in, const Progress& progress)
   {
     const MeshTopology topo = buildTopology(part.F, static_cast<int>(part.V.rows()));
     const FrameGeometry geometry = computeFrameGeometry(part.V, part.F, topo);
-    const ParameterizationOptions options = componentOptions(in.options, part.area, totalArea);
+    const ParameterizationOptions options =
+      componentOptions(in.options, part.area, totalArea, topo);
     const double share = static_cast<double>(part.faces.size()) / in.numFaces();
     const Parameterization map = computeParameterization(part.V, part.F, topo, geometry,
       part.frameU, part.matching, options, progress.part(done, done + share));

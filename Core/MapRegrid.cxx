@@ -18,8 +18,41 @@ namespace
 /// The factors (in the number of quads) tried in turn, finer first: a map that cannot follow
 /// its field between singularities that are close against a grid cell (a small torus of the
 /// smoothest field: 16 branch points on 24 quads) needs more quads; one that folds where the
-/// grid is fine against the triangles, fewer.
-constexpr double QuadFactors[] = { 2.0, 0.5, 4.0, 0.25 };
+/// grid is fine against the triangles, fewer. The last two, only while the trial has at most
+/// maximumRegridQuadCount quads, are for a small component whose holes or strips are narrow against
+/// its share of the quads (pieces of the truck with 24 quads: a tube whose boundary loops are 4.6
+/// quads long, a strip whose fans wound the wrong way until the grid was 8 times finer).
+constexpr double QuadFactors[] = { 2.0, 0.5, 4.0, 0.25, 8.0, 16.0 };
+
+/// A flipped triangle whose (u, v) area is at most this times its longest (u, v) edge squared is
+/// flat: a sliver that the map lays on a line (between a boundary's grid line and a branch point
+/// on it, say) keeps no area on any grid, and the quads cross it
+/// (QuadExtractionOptions::flatTolerance). Other grids are tried for the other defects only.
+constexpr double FlatArea = 1e-4;
+
+/// The defects of map uv that are not flat triangles.
+std::size_t defectsBeyondFlat(
+  const Defects& defects, const Eigen::MatrixX2d& uv, const std::vector<int>& cornerSector)
+{
+  std::size_t count = defects.wrong.size();
+  for (const int f : defects.flipped)
+  {
+    double longest = 0.0;
+    for (int k = 0; k < 3; ++k)
+    {
+      longest = std::max(longest,
+        (uv.row(cornerSector[3 * f + (k + 1) % 3]) - uv.row(cornerSector[3 * f + k]))
+          .squaredNorm());
+    }
+    count += !(std::abs(twiceUVArea(uv, cornerSector, f)) <= FlatArea * longest);
+  }
+  return count;
+}
+
+/// A repair that spent its untangling budget is tried on other grids only on a surface of at
+/// most this many triangles per quad of maximumRegridQuadCount: there the trials (which share one
+/// more budget) cost seconds; on a large surface (armadillo) minutes, for nothing.
+constexpr double SpentTrianglesPerQuad = 10.0;
 }
 
 void regridDefectiveMap(const Inputs& in, const Field& field, SeamlessSystem& sys,
@@ -27,13 +60,15 @@ void regridDefectiveMap(const Inputs& in, const Field& field, SeamlessSystem& sy
   Defects& defects, Parameterization& out, const Progress& progress)
 {
   const int tries = std::min(in.options.maximumRegrids, static_cast<int>(std::size(QuadFactors)));
-  if (defects.count() == 0 || tries <= 0 || sys.numInteger == 0 || out.untangleBudgetSpent)
+  if (defectsBeyondFlat(defects, sys.uv(x), out.cornerSector) == 0 || tries <= 0 ||
+    sys.numInteger == 0 ||
+    (out.untangleBudgetSpent &&
+      in.numFaces() > SpentTrianglesPerQuad * in.options.maximumRegridQuadCount))
   {
     return;
   }
   // the trials share one repair's untangling budget: a map that no grid can repair (the
-  // teapot's sliver cone) costs at most twice the time, not five times; and a repair that spent
-  // its budget is not tried again (armadillo: minutes more for nothing)
+  // teapot's sliver cone) costs at most twice the time, not seven times
   ParameterizationOptions trialOptions = in.options;
   trialOptions.untangleWork = std::max(1, in.options.untangleWork / tries);
   const Inputs trialIn{ in.V, in.F, in.topo, in.geometry, in.frameU, in.matching, trialOptions };
@@ -50,12 +85,17 @@ void regridDefectiveMap(const Inputs& in, const Field& field, SeamlessSystem& sy
     // quads into one of 13,000 with a quad against the surface
     return;
   }
-  for (int i = 0; i < tries && defects.count() > 0; ++i)
+  bool kept = false; // a trial replaced the first map
+  for (int i = 0; i < tries && !kept; ++i)
   {
     const double q = QuadFactors[i];
     if (q < 1.0 && cells * q < in.options.minimumComponentQuadCount)
     {
       continue; // never fewer quads than a component must have
+    }
+    if (q > 4.0 && cells * q > in.options.maximumRegridQuadCount)
+    {
+      continue; // the finest grids only while the trial stays small
     }
     const double scale = std::sqrt(q);
     sys.rhs = rhs * scale;
@@ -78,11 +118,12 @@ void regridDefectiveMap(const Inputs& in, const Field& field, SeamlessSystem& sy
     repairMap(trialIn, field, sys, xt, found, trial, part.part(0.1, 1.0));
     ++out.regrids;
     out.untangleEvaluations += trial.untangleEvaluations;
-    // only a map without defects replaces the first: one with fewer can still give worse quads
-    // (the teapot's spout, smoothest field: 9 defects and valid quads; 1 defect at 4 times the
-    // quads, a -1/4 cone closed up, and a quad against the surface)
-    if (found.count() == 0)
+    // only a map without defects (but flat triangles) replaces the first: one with fewer can
+    // still give worse quads (the teapot's spout, smoothest field: 9 defects and valid quads; 1
+    // defect at 4 times the quads, a -1/4 cone closed up, and a quad against the surface)
+    if (defectsBeyondFlat(found, sys.uv(xt), trial.cornerSector) == 0)
     {
+      kept = true;
       trial.regrids = out.regrids;
       trial.untangleEvaluations = out.untangleEvaluations;
       out = std::move(trial);

@@ -70,16 +70,22 @@ struct ParameterizationOptions
   /// Worker threads of the untangling (0: defaultThreadCount()). Results do not depend on it.
   /// The same concept as CurvatureOptions::numberOfThreads, and its default.
   int numberOfThreads = 0;
-  /// Each component of the surface gets a map of its own, with at least this many quads: its
-  /// share of targetQuadCount by area, or targetEdgeLength made shorter where that would give
-  /// fewer. (A component far smaller than a grid cell would otherwise get no quad at all.)
+  /// Each component of the surface gets a map of its own, with at least this many quads for each
+  /// of its holes and handles (2 minus its Euler characteristic, at least 1: a disk or a sphere
+  /// this many, a wheel of 14 boundary loops 14 times as many): its share of targetQuadCount by
+  /// area, or targetEdgeLength made shorter where that would give fewer. (A component far smaller
+  /// than a grid cell would otherwise get no quad at all, and one of many holes on a few dozen
+  /// quads loses them.)
   int minimumComponentQuadCount = 24;
   /// A map that keeps flipped triangles or points wound the wrong way after its repair is
-  /// rounded and repaired again with up to this many other grid sizes (2, 1/2, 4 and 1/4 times
-  /// the quads, in turn, never fewer than minimumComponentQuadCount) until one has no defects,
-  /// which replaces it; 0 keeps the first. Maps without defects are never touched, nor maps whose
-  /// repair spent its whole untangleWork (time); the trials share one untangleWork.
-  int maximumRegrids = 4;
+  /// rounded and repaired again with up to this many other grid sizes (2, 1/2, 4, 1/4, 8 and 16
+  /// times the quads, in turn, never fewer than minimumComponentQuadCount, 8 and 16 times only
+  /// up to maximumRegridQuadCount) until one has no defects (but flat triangles: slivers the map lays
+  /// on a line, which no grid gives area), which replaces it; 0 keeps the first.
+  /// Maps without defects are never touched, nor maps of more than 10 maximumRegridQuadCount
+  /// triangles whose repair spent its whole untangleWork (time); the trials share one
+  /// untangleWork.
+  int maximumRegrids = 6;
   /// Only maps of at most this many quads are tried on other grids: a small component's grid is
   /// coarse against its singularities, and its trials are cheap.
   double maximumRegridQuadCount = 1000;

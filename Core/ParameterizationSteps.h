@@ -72,8 +72,8 @@ struct Field
 };
 
 /// The map of a surface of several components: computeParameterization on each, with its own
-/// edge length (ParameterizationOptions::minimumComponentQuadCount), put together
-/// (ComponentMaps.cxx). Parameterization::edgeLength is the largest component's.
+/// edge length (ParameterizationOptions::minimumComponentQuadCount per hole and handle), put
+/// together (ComponentMaps.cxx). Parameterization::edgeLength is the largest component's.
 Parameterization mapEachComponent(const Inputs& in, const Progress& progress);
 
 // ---- the surface cut open (CutSurface.cxx) ----
@@ -226,11 +226,13 @@ void repairMap(const Inputs& in, const Field& field, const SeamlessSystem& sys, 
 // ---- maps that keep defects (MapRegrid.cxx) ----
 
 /// When the repaired map x still has defects: rounds the continuous minimizer `continuous` at
-/// other grid sizes (ParameterizationOptions::maximumRegrids of 2, 1/2, 4, 1/4 times the quads,
-/// never fewer than minimumComponentQuadCount), repairs each, and keeps the first without
-/// defects, if any: x, defects and out (its figures and edgeLength) follow it, and sys is left
-/// scaled for it. Not when the first repair spent its untangling budget, nor for maps of more
-/// than maximumRegridQuadCount quads. Counts the grids tried in out.regrids.
+/// other grid sizes (ParameterizationOptions::maximumRegrids of 2, 1/2, 4, 1/4, 8, 16 times the
+/// quads, never fewer than minimumComponentQuadCount, 8 and 16 only up to maximumRegridQuadCount
+/// quads), repairs each, and keeps the first without defects (but flat triangles, a sliver laid
+/// on a line, which no grid gives area), if any: x, defects and out (its figures and edgeLength)
+/// follow it, and sys is left scaled for it. Not when the first repair spent its untangling budget
+/// on a surface of more than 10 maximumRegridQuadCount triangles, nor for maps of more than
+/// maximumRegridQuadCount quads. Counts the grids tried in out.regrids.
 void regridDefectiveMap(const Inputs& in, const Field& field, SeamlessSystem& sys,
   const HessianFactor& factor, const Eigen::VectorXd& continuous, bool greedy, Eigen::VectorXd& x,
   Defects& defects, Parameterization& out, const Progress& progress);

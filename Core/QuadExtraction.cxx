@@ -3,6 +3,7 @@
 #include "QuadExtraction.h"
 
 #include "QuadOverlaps.h"
+#include "UnionFind.h"
 
 #include <Eigen/Geometry>
 
@@ -37,9 +38,11 @@ Complex turn(Complex z, int r)
 
 /// Where a grid point was found: identity (kind: 0 point, 1 edge, 2 inside a triangle; the
 /// element; integer (u, v) in the element's chart), triangle and barycentric coordinates.
+using Key = std::tuple<int, int, long long, long long>;
+
 struct Location
 {
-  std::tuple<int, int, long long, long long> key;
+  Key key;
   int triangle = -1;
   Eigen::Vector3d bary;
 };
@@ -60,14 +63,20 @@ public:
   {
     const int nF = static_cast<int>(F.rows());
     flipped.assign(nF, 0);
+    flat.assign(nF, 0);
     for (int f = 0; f < nF; ++f)
     {
-      flipped[f] = !(cross(z(f, 1) - z(f, 0), z(f, 2) - z(f, 0)) > 0);
+      const double area = cross(z(f, 1) - z(f, 0), z(f, 2) - z(f, 0));
+      flipped[f] = !(area > 0);
+      const double longest = std::max({ std::norm(z(f, 1) - z(f, 0)), std::norm(z(f, 2) - z(f, 1)),
+        std::norm(z(f, 0) - z(f, 2)) });
+      flat[f] = flipped[f] && std::abs(area) <= options.flatTolerance * longest;
     }
     // transitions z_g = i^r z_f + t across every inner edge, read off the map
     rotation = Eigen::MatrixX3i::Zero(nF, 3);
     translation.assign(3 * static_cast<std::size_t>(nF), Complex(0, 0));
     forEachNeighbor(topo, [&](int f, int k, int) { readTransition(f, k); });
+    gluePoints();
   }
 
   /// Every cell whose centre a triangle holds, in the order of the triangles, then the overlaps
@@ -132,6 +141,43 @@ private:
     translation[3 * f + k] = t;
   }
 
+  /// Points the map puts at one place: the ends of an edge whose image is a point, and the
+  /// corners opposite an edge on its two sides (a flat triangle's corner on the edge, where its
+  /// neighbour's is). A grid point there is one vertex, whichever triangle finds it (a branch
+  /// point next to a boundary corner on the boundary's line, the two joined by slivers, gave two
+  /// vertices and tore the quads apart). A map without flipped triangles glues no points.
+  void gluePoints()
+  {
+    const int nV = static_cast<int>(V.rows());
+    std::vector<int> parent(nV);
+    for (int v = 0; v < nV; ++v)
+    {
+      parent[v] = v;
+    }
+    const double near = options.pointTolerance;
+    forEachNeighbor(topo, [&](int f, int k, int g) {
+      if (!flipped[f] && !flipped[g])
+      {
+        return; // two triangles of positive area: their opposite corners are on either side
+      }
+      if (std::abs(z(f, k) - z(f, (k + 1) % 3)) <= near)
+      {
+        unite(parent, F(f, k), F(f, (k + 1) % 3));
+      }
+      const int d =
+        3 - MeshTopology::cornerOf(F, g, F(f, k)) - MeshTopology::cornerOf(F, g, F(f, (k + 1) % 3));
+      if (std::abs(across(f, k, z(f, (k + 2) % 3)) - z(g, d)) <= near)
+      {
+        unite(parent, F(f, (k + 2) % 3), F(g, d));
+      }
+    });
+    pointAlias.resize(nV);
+    for (int v = 0; v < nV; ++v)
+    {
+      pointAlias[v] = findRoot(parent, v);
+    }
+  }
+
   Eigen::Vector3d barycentric(int f, Complex q) const
   {
     const Complex a = z(f, 0), b = z(f, 1), c = z(f, 2);
@@ -153,9 +199,49 @@ private:
     int entered = -1; // the edge of f we came in through
     for (int step = 0; step < options.maximumWalk; ++step)
     {
-      if (flipped[f])
+      if (flipped[f] && !(flat[f] && entered >= 0))
       {
         return false;
+      }
+      if (flipped[f])
+      {
+        // A triangle whose image is a segment (a sliver next to a boundary line, or a cone's
+        // point on that line: nothing can give it area) holds no cell, but the segment p -> q
+        // crosses it: out through the other edge whose image p lies on.
+        int exit = -1;
+        double nearest = 1e300;
+        for (int edge = 0; edge < 3; ++edge)
+        {
+          if (edge == entered)
+          {
+            continue;
+          }
+          const Complex a = z(f, edge), d = z(f, (edge + 1) % 3) - a;
+          const double t = std::norm(d) > 0
+            ? std::clamp(std::real((p - a) * std::conj(d)) / std::norm(d), 0.0, 1.0)
+            : 0.0;
+          const double distance = std::abs(a + t * d - p);
+          if (distance < nearest)
+          {
+            nearest = distance;
+            exit = edge;
+          }
+        }
+        const int g = topo.faceNeighbors(f, exit);
+        if (g < 0)
+        {
+          return false;
+        }
+        const int shared = topo.faceEdges(f, exit);
+        p = across(f, exit, p);
+        q = across(f, exit, q);
+        f = g;
+        entered = -1;
+        for (int k = 0; k < 3; ++k)
+        {
+          entered = topo.faceEdges(f, k) == shared ? k : entered;
+        }
+        continue;
       }
       const Eigen::Vector3d bq = barycentric(f, q);
       if (bq.minCoeff() >= -options.tolerance)
@@ -275,7 +361,7 @@ private:
     {
       at.triangle = f;
       at.bary = Eigen::Vector3d::Unit(nearest);
-      at.key = { 0, F(f, nearest), 0, 0 };
+      at.key = { 0, pointAlias[F(f, nearest)], 0, 0 };
       return;
     }
     int zeros = 0;
@@ -297,22 +383,74 @@ private:
     {
       int k = 0;
       b.maxCoeff(&k);
-      at.key = { 0, F(f, k), 0, 0 };
+      at.key = { 0, pointAlias[F(f, k)], 0, 0 };
       return;
     }
     if (zeros == 1)
     {
-      const int edge = (zero + 1) % 3;
-      const int e = topo.faceEdges(f, edge);
-      const int owner = topo.edgeFaces(e, 0);
-      if (owner != f && topo.faceNeighbors(f, edge) == owner)
-      {
-        q = across(f, edge, q);
-      }
-      at.key = { 1, e, std::llround(q.real()), std::llround(q.imag()) };
+      at.key = edgeKey(f, (zero + 1) % 3, q);
       return;
     }
     at.key = { 2, f, std::llround(q.real()), std::llround(q.imag()) };
+  }
+
+  /// The identity of grid point q (f's chart) on edge k of f: the edge and q in the chart of the
+  /// edge's first triangle.
+  Key ownEdgeKey(int f, int k, Complex q) const
+  {
+    const int e = topo.faceEdges(f, k);
+    const int owner = topo.edgeFaces(e, 0);
+    if (owner != f && topo.faceNeighbors(f, k) == owner)
+    {
+      q = across(f, k, q);
+    }
+    return { 1, e, std::llround(q.real()), std::llround(q.imag()) };
+  }
+
+  /// The identity of grid point q (f's chart) on edge k of f. Beyond the edge, flat triangles
+  /// may lie on the same line in (u, v) (a strip the map squeezed onto a boundary's line): the
+  /// grid point is on their edges and points too, and the triangles on the strip's other side
+  /// find it there. It gets the least identity of all those, whichever side finds it (else the
+  /// quads on the two sides of the strip do not share their corners, and come apart).
+  Key edgeKey(int f, int k, Complex q) const
+  {
+    Key best = ownEdgeKey(f, k, q);
+    std::vector<std::pair<int, Complex>> stack;
+    std::vector<int> seen;
+    const int g = topo.faceNeighbors(f, k);
+    if (g >= 0 && flat[g])
+    {
+      stack.emplace_back(g, across(f, k, q));
+      seen.push_back(g);
+    }
+    while (!stack.empty())
+    {
+      const auto [h, qh] = stack.back();
+      stack.pop_back();
+      for (int j = 0; j < 3; ++j)
+      {
+        if (std::abs(z(h, j) - qh) <= options.pointTolerance)
+        {
+          best = std::min(best, Key{ 0, pointAlias[F(h, j)], 0, 0 });
+        }
+        const Complex a = z(h, j), d = z(h, (j + 1) % 3) - a;
+        const double t = std::norm(d) > 0
+          ? std::clamp(std::real((qh - a) * std::conj(d)) / std::norm(d), 0.0, 1.0)
+          : 0.0;
+        if (std::abs(a + t * d - qh) > options.pointTolerance)
+        {
+          continue; // q is not on this edge
+        }
+        best = std::min(best, ownEdgeKey(h, j, qh));
+        const int n = topo.faceNeighbors(h, j);
+        if (n >= 0 && flat[n] && std::find(seen.begin(), seen.end(), n) == seen.end())
+        {
+          stack.emplace_back(n, across(h, j, qh));
+          seen.push_back(n);
+        }
+      }
+    }
+    return best;
   }
 
   /// Does triangle f hold the cell centre c (in its chart), up to the tolerance? A centre on an
@@ -447,11 +585,13 @@ private:
   const QuadExtractionOptions& options;
   QuadMesh& out;
   std::vector<char> flipped;        ///< per triangle: its (u, v) image not counterclockwise
+  std::vector<char> flat;           ///< of those, the ones whose image is a segment (flatTolerance)
+  std::vector<int> pointAlias;      ///< #V: the point a vertex on this point is identified by
   Eigen::MatrixX3i rotation;        ///< #F x 3: the quarter turns r of the transitions
   std::vector<Complex> translation; ///< 3 #F: the translations t of the transitions
   /// the vertex of each corner identity, and the vertices' positions (out.vertexTriangle and
   /// out.vertexPoint hold the rest until keepUsedVertices)
-  std::map<std::tuple<int, int, long long, long long>, int> vertexOf;
+  std::map<Key, int> vertexOf;
   std::vector<Eigen::Vector3d> positions;
   std::vector<std::array<int, 4>> quads; ///< found so far, with out.quadTriangle
 };

@@ -25,6 +25,9 @@ struct QuadExtractionOptions
   /// A grid point within this (u, v) distance of a point of the surface (in grid units) is that
   /// point, seen alike from every triangle around it.
   double pointTolerance = 1e-5;
+  /// A flipped triangle whose (u, v) area is at most this times its longest (u, v) edge squared
+  /// is flat: its image is a segment, which a walk crosses (it holds no cell).
+  double flatTolerance = 1e-4;
   /// Triangles a walk from a cell's centre to one of its corners may cross.
   int maximumWalk = 10000;
 };

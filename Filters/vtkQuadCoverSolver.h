@@ -119,9 +119,10 @@ public:
   ///@}
 
   ///@{
-  /** Each connected component gets a map of its own with at least this many quads, in
-   * [1, 100000] (default 24): its share of TargetQuadCount by area, or TargetEdgeLength made
-   * shorter where that would give fewer, so that small components keep a coarse quad mesh. */
+  /** Each connected component gets a map of its own with at least this many quads per hole and
+   * handle (2 minus its Euler characteristic, at least 1), in [1, 100000] (default 24): its
+   * share of TargetQuadCount by area, or TargetEdgeLength made shorter where that would give
+   * fewer, so that small components keep a coarse quad mesh with all their holes. */
   vtkSetClampMacro(MinimumComponentQuadCount, int, 1, 100000);
   vtkGetMacro(MinimumComponentQuadCount, int);
   ///@}
@@ -136,9 +137,10 @@ public:
 
   ///@{
   /** A map that keeps flipped triangles or points wound the wrong way after its repair is
-   * rounded and repaired again on up to this many other grids (2, 1/2, 4 and 1/4 times the
-   * quads), in [0, 4] (default 4); the first without defects replaces it; 0: none. */
-  vtkSetClampMacro(MaximumRegrids, int, 0, 4);
+   * rounded and repaired again on up to this many other grids (2, 1/2, 4, 1/4, 8 and 16 times
+   * the quads, 8 and 16 only up to MaximumRegridQuadCount), in [0, 6] (default 6); the first
+   * without defects replaces it; 0: none. */
+  vtkSetClampMacro(MaximumRegrids, int, 0, 6);
   vtkGetMacro(MaximumRegrids, int);
   ///@}
 

@@ -763,7 +763,8 @@ TEST(Parameterization, AMapThatKeepsDefectsIsTriedOnOtherGrids)
   const SmoothestComponents components;
   ParameterizationOptions options;
   options.targetQuadCount = 6500;
-  options.curvatureEdgeLength = 0.0; // the small tori as coarse as their share says
+  options.curvatureEdgeLength = 0.0;      // the small tori as coarse as their share says
+  options.minimumComponentQuadCount = 12; // per handle: 24 on a torus, as this case was found
   options.maximumRegrids = 0;
   const Parameterization first = components.map(options);
   options.maximumRegrids = ParameterizationOptions().maximumRegrids;
@@ -790,4 +791,31 @@ TEST(Parameterization, AMapThatKeepsDefectsIsTriedOnOtherGrids)
   const Chain c = runChain(testSurface("sphere"), 3000);
   ASSERT_EQ(c.map.flipped + c.map.wrongWindings, 0);
   EXPECT_EQ(c.map.regrids, 0);
+}
+
+TEST(Parameterization, AComponentGetsItsMinimumOfQuadsForEachHandle)
+{
+  // A sphere with a small torus beside it: by area the torus would get about 11 of 600 quads;
+  // it gets at least minimumComponentQuadCount for each of its two generators (2 - chi), as a
+  // sphere or a disk gets it once.
+  Surface s = makeIcosphere(1.0, 4);
+  const Surface torus = makeTorus(0.12, 0.05, 48, 24);
+  const Eigen::Index nv = s.V.rows(), nf = s.F.rows();
+  s.V.conservativeResize(nv + torus.V.rows(), 3);
+  s.F.conservativeResize(nf + torus.F.rows(), 3);
+  s.V.bottomRows(torus.V.rows()) = torus.V.rowwise() + Eigen::RowVector3d(5.0, 0.0, 0.0);
+  s.F.bottomRows(torus.F.rows()) = torus.F.array() + static_cast<int>(nv);
+  s.kappa.resize(0, 2);
+  s.direction1.resize(0, 3);
+  const Chain c = runChain(s, 600);
+  ASSERT_EQ(c.topo.numComponents(), 2);
+  double torusCells = 0.0; // the (u, v) area of the torus' map: about its quads
+  for (Eigen::Index f = nf; f < c.s.F.rows(); ++f)
+  {
+    const auto t = c.map.cornerUV.row(f);
+    torusCells += 0.5 * ((t[2] - t[0]) * (t[5] - t[1]) - (t[3] - t[1]) * (t[4] - t[0]));
+  }
+  const int fewest = ParameterizationOptions().minimumComponentQuadCount;
+  EXPECT_GT(torusCells, 1.6 * fewest);
+  EXPECT_LT(torusCells, 3.0 * fewest);
 }

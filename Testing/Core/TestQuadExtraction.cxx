@@ -721,3 +721,61 @@ TEST(QuadRelaxation, RepairReportsProgressAndStopsWhenAsked)
     repairInvertedQuads(c.s.V, c.s.F, c.topo, q, 2, 10, 3, stopping.progress()), Cancelled);
   EXPECT_EQ(stopping.fractions.size(), 3u);
 }
+
+TEST(QuadExtraction, WalksCrossFlatTrianglesAndPointsTheMapJoinsAreOneVertex)
+{
+  // A strip of squares, 8 long and 3 rows high on the surface, whose middle row the map squeezes
+  // onto one line (a row of slivers on a boundary's grid line: nothing can give it area). Cells
+  // across that line must still be cut out, and the points on either side of it that the map
+  // puts at one grid point must be one vertex, or the quads come apart there.
+  const int n = 8;
+  struct Case
+  {
+    double offset;      // of u against the grid
+    double levels[4];   // v of the rows of points; the middle row of squares is flat
+    const char* what;
+  };
+  for (const Case& c : { Case{ 0.25, { 0.0, 1.5, 1.5, 3.0 }, "cell centres on the flat line" },
+         Case{ 0.0, { 0.0, 1.0, 1.0, 3.0 }, "grid points on the flat line's points" } })
+  {
+    SCOPED_TRACE(c.what);
+    const double heights[4] = { 0.0, 1.0, 1.001, 2.0 }; // on the surface, every row has area
+    Eigen::MatrixX3d V((n + 1) * 4, 3);
+    for (int j = 0; j < 4; ++j)
+    {
+      for (int i = 0; i <= n; ++i)
+      {
+        V.row(j * (n + 1) + i) << i, heights[j], 0.0;
+      }
+    }
+    Eigen::MatrixX3i F(2 * n * 3, 3);
+    Eigen::MatrixXd uv(F.rows(), 6);
+    for (int j = 0, f = 0; j < 3; ++j)
+    {
+      for (int i = 0; i < n; ++i, f += 2)
+      {
+        const int a = j * (n + 1) + i, b = a + 1, d = a + n + 1, e = d + 1;
+        F.row(f) << a, b, e;
+        F.row(f + 1) << a, e, d;
+        for (int t = 0; t < 2; ++t)
+        {
+          for (int k = 0; k < 3; ++k)
+          {
+            const int p = F(f + t, k);
+            uv(f + t, 2 * k) = p % (n + 1) + c.offset;
+            uv(f + t, 2 * k + 1) = c.levels[p / (n + 1)];
+          }
+        }
+      }
+    }
+    const MeshTopology topo = buildTopology(F, static_cast<int>(V.rows()));
+    const QuadMesh q = extractQuads(V, F, topo, uv);
+    const QuadQuality m = measureQuads(q.V, q.Q);
+    const int columns = c.offset == 0.0 ? n : n - 1; // the cells inside [offset, n + offset]
+    EXPECT_EQ(m.quads, 3 * columns);
+    EXPECT_EQ(m.components, 1);
+    EXPECT_EQ(m.eulerCharacteristic, 1);
+    EXPECT_EQ(m.boundaryLoops, 1);
+    EXPECT_EQ(m.nonManifoldEdges, 0);
+  }
+}
