@@ -211,15 +211,50 @@ void spreadHops(const Steps& steps, int limit, std::vector<int> front, std::vect
   }
 }
 
+/// Length of the shortest edge path from the points in front (0 there), spread while shorter
+/// than `limit`; the points beyond get infinity.
+void spreadLengths(const Steps& steps, const FrameGeometry& geometry, double limit,
+  const std::vector<int>& front, std::vector<double>& length)
+{
+  std::fill(length.begin(), length.end(), std::numeric_limits<double>::infinity());
+  using Item = std::pair<double, int>;
+  std::priority_queue<Item, std::vector<Item>, std::greater<Item>> queue;
+  for (const int v : front)
+  {
+    length[v] = 0.0;
+    queue.push({ 0.0, v });
+  }
+  while (!queue.empty())
+  {
+    const auto [d, u] = queue.top();
+    queue.pop();
+    if (d > length[u])
+    {
+      continue;
+    }
+    for (const Step& s : steps[u])
+    {
+      const double nd = d + geometry.edgeLength(s.g, s.kg);
+      if (nd < length[s.to] && nd < limit)
+      {
+        length[s.to] = nd;
+        queue.push({ nd, s.to });
+      }
+    }
+  }
+}
+
 /// Where one quarter of a's index can go: the end of the cheapest path (ties: fewer edges) over
-/// regular points to one at least `distance` edges from a along the path and outside every
-/// neighbourhood `hops` marks; -1 when the search finds none.
-int findSplitTarget(
-  Optimizer& o, int a, int distance, const std::vector<int>& hops, std::vector<int>& pathHops)
+/// regular points to one at least `distance` edges and `length` long from a along the path and
+/// outside every neighbourhood `hops` and `near` mark; -1 when the search finds none.
+int findSplitTarget(Optimizer& o, int a, int distance, double length,
+  const std::vector<int>& hops, const std::vector<double>& near, std::vector<int>& pathHops,
+  std::vector<double>& pathLength)
 {
   PathSearch& S = o.search;
   S.begin(a);
   pathHops[a] = 0;
+  pathLength[a] = 0.0;
   int visited = 0;
   while (!S.queue.empty() && visited < o.options.maximumSearchSize)
   {
@@ -230,8 +265,8 @@ int findSplitTarget(
       continue;
     }
     ++visited;
-    if (u != a && pathHops[u] >= distance &&
-      hops[u] == std::numeric_limits<int>::max())
+    if (u != a && pathHops[u] >= distance && pathLength[u] >= length &&
+      hops[u] == std::numeric_limits<int>::max() && near[u] >= length)
     {
       return u;
     }
@@ -246,6 +281,7 @@ int findSplitTarget(
       if (S.relax(u, i, s.to, d + std::max(0.0, added) + 1e-9)) // ties: fewer edges
       {
         pathHops[s.to] = pathHops[u] + 1;
+        pathLength[s.to] = pathLength[u] + o.geometry.edgeLength(s.g, s.kg);
       }
     }
   }
@@ -256,10 +292,11 @@ int findSplitTarget(
 /// turns once around a point (index 1 maps to a corner of angle 0), and index 1/2 makes a quad
 /// vertex of valence 2. Each quarter moves along the cheapest path to a regular point at least
 /// splitDistance edges from the singularity, from the quarters placed before and from other
-/// singularities; where there is no such point (a coarse surface), a quarter of what is still
-/// 3/4 or more goes one edge nearer, down to one (a +1/2 stays: a valence-2 quad vertex is valid,
-/// and quarters one or two edges apart distort the grid around them: decimated-knight's edge RSD
-/// went from 26% to 45%).
+/// singularities, and with lengthScaledCost as far along the surface: splitDistance reference
+/// lengths along its path and from the others. Where there is no such point (a coarse surface), a
+/// quarter of what is still 3/4 or more goes one edge (and one reference length) nearer, down to
+/// one (a +1/2 stays: a valence-2 quad vertex is valid, and quarters one or two edges apart
+/// distort the grid around them: decimated-knight's edge RSD went from 26% to 45%).
 void splitHighSingularities(Optimizer& o, BranchPointReport& report, const Progress& progress)
 {
   const int nv = o.topo.numVertices;
@@ -274,6 +311,15 @@ void splitHighSingularities(Optimizer& o, BranchPointReport& report, const Progr
   // hops from the nearest other singular point or placed quarter
   std::vector<int> hops(nv, std::numeric_limits<int>::max());
   std::vector<int> pathHops(nv, 0);
+  std::vector<double> near(nv), pathLength(nv, 0.0);
+  // With length-scaled costs the distance is one of the surface too, in reference lengths (about
+  // the edges of a 4,000-triangle mesh of it). Counted in edges alone, 4 edges of a fan of slivers
+  // (the poles of Data/dumbbell.obj, of VTK's sphere source at 200 x 100) put the quarters within
+  // three quads of the pole at 6,500 quads; the map between them folded, and quads faced against
+  // the surface there.
+  const double unit = o.options.lengthScaledCost && o.geometry.edgeLength.rows() > 0
+    ? o.geometry.referenceLength
+    : 0.0;
   for (std::size_t i = 0; i < high.size(); ++i)
   {
     const int a = high[i];
@@ -297,7 +343,9 @@ void splitHighSingularities(Optimizer& o, BranchPointReport& report, const Progr
       {
         std::fill(hops.begin(), hops.end(), std::numeric_limits<int>::max());
         spreadHops(o.steps, distance, others, hops);
-        target = findSplitTarget(o, a, distance, hops, pathHops);
+        spreadLengths(o.steps, o.geometry, distance * unit, others, near);
+        target =
+          findSplitTarget(o, a, distance, distance * unit, hops, near, pathHops, pathLength);
       }
       if (target < 0)
       {

@@ -86,7 +86,9 @@ struct BranchPointOptions
   int maximumSearchSize = 20000;
   int maximumPasses = 10;
   /// Inner singularities of index >= 1/2 are split first into quarters placed at least this
-  /// many edges apart (and from other singularities); 0 leaves them alone.
+  /// many edges apart (and from other singularities), with lengthScaledCost also this many
+  /// referenceLengths along the surface (a fan of slivers is many edges in a short distance);
+  /// 0 leaves them alone.
   int splitDistance = 4;
   /// Singularities of index at least this many quarters are split (2: +1/2 and more).
   int splitQuarters = 2;

@@ -77,7 +77,9 @@ public:
   /**
    * Count each edge's matching angle in proportion to its length (default on), so that the
    * cost of merging two singularities grows with their distance on the surface rather than
-   * with the number of edges between them; off, every edge counts once (the paper's cost).
+   * with the number of edges between them; off, every edge counts once (the paper's cost). The
+   * quarters of a split singularity then also go at least 4 times sqrt(area / 2000) along the
+   * surface (not only 4 edges: a fan of slivers has many in a short distance).
    */
   vtkSetMacro(LengthScaledCost, bool);
   vtkGetMacro(LengthScaledCost, bool);

@@ -322,7 +322,7 @@ std::vector<Option> StageOptions(Pipeline& p)
     QC_NUMBER("matching", matching, BranchPointWeight,
       "cost of one singular point, in radians of matching angle"),
     QC_SWITCH("matching", matching, LengthScaledCost,
-      "count each edge's matching angle by its length (off: once per edge)"),
+      "count each edge by its length in merge costs and split distances (off: once)"),
     QC_NUMBER("matching", matching, MaximumSearchSize, "points one merge search may visit"),
     QC_SWITCH("matching", matching, FitFramesToMatchings,
       "turn the frames to agree with changed matchings"),

@@ -12,7 +12,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <map>
+#include <queue>
 #include <random>
 
 using namespace quadcover;
@@ -403,6 +405,84 @@ TEST(Matchings, WholeTurnSingularitiesAreSplitIntoQuarters)
   opt.splitDistance = 0;
   EXPECT_EQ(optimizeBranchPoints(m.s.F, m.topo, m.geometry, U, kept, opt).split, 0);
   EXPECT_EQ(kept.singularities, 2);
+}
+
+TEST(Matchings, QuartersOfASplitPoleOfSliversGoAsFarAsOnACoarseMesh)
+{
+  // A pole of 200 slivers (a latitude-longitude sphere of 200 x 100, as VTK's sphere source makes
+  // it): 4 edges from the pole are 0.13 of the radius, less than a quad at a few thousand quads,
+  // and the map between quarters so close folded. With length-scaled costs the quarters go at
+  // least 4 reference lengths (the edges of a 4,000-triangle mesh) along their paths, and as far
+  // from each other along the surface; counted in edges, as before, without.
+  const Mesh m = prepare(latLongSphere(200, 100));
+  const Eigen::MatrixX3d U = parallelField(m, 0);
+  BranchPointOptions opt;
+  FrameTopology t = computeMatchings(m.s.F, m.topo, m.geometry, U);
+  const BranchPointReport r = optimizeBranchPoints(m.s.F, m.topo, m.geometry, U, t, opt);
+  EXPECT_EQ(r.split, 2);
+  EXPECT_EQ(r.splitFailed, 0);
+  const double length = opt.splitDistance * m.geometry.referenceLength;
+  // shortest edge path between points, by length
+  auto pathLength = [&](int from, int to) {
+    std::vector<double> d(m.s.V.rows(), std::numeric_limits<double>::infinity());
+    using Item = std::pair<double, int>;
+    std::priority_queue<Item, std::vector<Item>, std::greater<Item>> queue;
+    d[from] = 0.0;
+    queue.push({ 0.0, from });
+    while (!queue.empty())
+    {
+      const auto [du, u] = queue.top();
+      queue.pop();
+      if (du > d[u])
+        continue;
+      for (int j = m.topo.ringOffsets[u]; j < m.topo.ringOffsets[u + 1]; ++j)
+      {
+        const int f = m.topo.ringFaces[j];
+        for (int k = 0; k < 3; ++k)
+        {
+          const int w = m.s.F(f, k);
+          const double dw = du + (m.s.V.row(w) - m.s.V.row(u)).norm();
+          if (dw < d[w])
+          {
+            d[w] = dw;
+            queue.push({ dw, w });
+          }
+        }
+      }
+    }
+    return d[to];
+  };
+  std::vector<int> quarters;
+  for (int v = 0; v < m.topo.numVertices; ++v)
+  {
+    if (t.index[v] != 0.0)
+    {
+      EXPECT_NEAR(t.index[v], 0.25, 1e-9) << v;
+      quarters.push_back(v);
+      // a quarter of the north pole (point 0) or of the south pole (1)
+      const int pole = m.s.V(v, 2) > 0 ? 0 : 1;
+      EXPECT_GE(pathLength(pole, v), 0.9 * length) << v;
+    }
+  }
+  ASSERT_EQ(quarters.size(), 8u);
+  for (std::size_t i = 0; i < quarters.size(); ++i)
+  {
+    for (std::size_t j = i + 1; j < quarters.size(); ++j)
+    {
+      EXPECT_GE(pathLength(quarters[i], quarters[j]), length);
+    }
+  }
+  // every edge counted once: 4 edges from the pole, as the edge count asks
+  opt.lengthScaledCost = false;
+  FrameTopology counted = computeMatchings(m.s.F, m.topo, m.geometry, U);
+  optimizeBranchPoints(m.s.F, m.topo, m.geometry, U, counted, opt);
+  for (int v = 0; v < m.topo.numVertices; ++v)
+  {
+    if (counted.index[v] != 0.0)
+    {
+      EXPECT_LT(pathLength(m.s.V(v, 2) > 0 ? 0 : 1, v), 0.5 * length) << v;
+    }
+  }
 }
 
 TEST(Matchings, WithoutTheOptimizationWholeTurnsAreStillSplitButNothingMerges)
