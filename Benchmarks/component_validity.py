@@ -14,24 +14,12 @@ from collections import defaultdict
 import vtk
 
 sys.path.insert(0, os.path.dirname(__file__))
-from validity import components, faces, read  # noqa: E402
+from validity import components, faces, join_points, read  # noqa: E402
 
 
 def pieces(F):
     """The faces of F grouped by connected piece (through shared points)."""
-    parent = {}
-
-    def find(a):
-        while parent.setdefault(a, a) != a:
-            parent[a] = parent[parent[a]]
-            a = parent[a]
-        return a
-
-    for f in F:
-        for v in f[1:]:
-            ra, rb = find(f[0]), find(v)
-            if ra != rb:
-                parent[ra] = rb
+    find, _ = join_points(F)
     groups = defaultdict(list)
     for f in F:
         groups[find(f[0])].append(f)

@@ -32,8 +32,9 @@ def faces(pd):
     return [conn[offs[i]:offs[i + 1]] for i in range(len(offs) - 1)]
 
 
-def components(F):
-    """Per connected component (through shared points): (Euler characteristic, boundary loops)."""
+def join_points(F):
+    """(find, parent): the points of F joined through the faces (union-find); find(p) is the
+    root of p's connected piece, parent has every point."""
     parent = {}
 
     def find(a):
@@ -47,6 +48,12 @@ def components(F):
             ra, rb = find(f[0]), find(v)
             if ra != rb:
                 parent[ra] = rb
+    return find, parent
+
+
+def components(F):
+    """Per connected component (through shared points): (Euler characteristic, boundary loops)."""
+    find, parent = join_points(F)
     edges = defaultdict(int)
     for f in F:
         for k in range(len(f)):

@@ -197,6 +197,18 @@ private:
   bool walkLine(int f, Complex p, Complex q, Location& at) const
   {
     int entered = -1; // the edge of f we came in through
+    // into the neighbour g across f's edge: p and q in its chart, the edge it is entered by
+    auto crossInto = [&](int edge, int g) {
+      const int shared = topo.faceEdges(f, edge);
+      p = across(f, edge, p);
+      q = across(f, edge, q);
+      f = g;
+      entered = -1;
+      for (int k = 0; k < 3; ++k)
+      {
+        entered = topo.faceEdges(f, k) == shared ? k : entered;
+      }
+    };
     for (int step = 0; step < options.maximumWalk; ++step)
     {
       if (flipped[f] && !(flat[f] && entered >= 0))
@@ -232,15 +244,7 @@ private:
         {
           return false;
         }
-        const int shared = topo.faceEdges(f, exit);
-        p = across(f, exit, p);
-        q = across(f, exit, q);
-        f = g;
-        entered = -1;
-        for (int k = 0; k < 3; ++k)
-        {
-          entered = topo.faceEdges(f, k) == shared ? k : entered;
-        }
+        crossInto(exit, g);
         continue;
       }
       const Eigen::Vector3d bq = barycentric(f, q);
@@ -278,15 +282,7 @@ private:
         return false; // beyond the boundary
       }
       p += first * (q - p);
-      const int shared = topo.faceEdges(f, edge);
-      p = across(f, edge, p);
-      q = across(f, edge, q);
-      f = g;
-      entered = -1;
-      for (int k = 0; k < 3; ++k)
-      {
-        entered = topo.faceEdges(f, k) == shared ? k : entered;
-      }
+      crossInto(edge, g);
     }
     return false;
   }
