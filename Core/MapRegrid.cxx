@@ -3,6 +3,7 @@
 // kept. The continuous map is linear in 1 / edgeLength, so each grid size costs a rounding, one
 // back-substitution and a repair: no new factorization.
 #include "ParameterizationSteps.h"
+#include "QuadExtraction.h"
 
 #include <algorithm>
 #include <cmath>
@@ -24,16 +25,15 @@ namespace
 /// quads long, a strip whose fans wound the wrong way until the grid was 8 times finer).
 constexpr double QuadFactors[] = { 2.0, 0.5, 4.0, 0.25, 8.0, 16.0 };
 
-/// A flipped triangle whose (u, v) area is at most this times its longest (u, v) edge squared is
-/// flat: a sliver that the map lays on a line (between a boundary's grid line and a branch point
-/// on it, say) keeps no area on any grid, and the quads cross it
-/// (QuadExtractionOptions::flatTolerance). Other grids are tried for the other defects only.
-constexpr double FlatArea = 1e-4;
-
-/// The defects of map uv that are not flat triangles.
+/// The defects of map uv that are not flat triangles: a flipped triangle whose (u, v) area is at
+/// most QuadExtractionOptions::flatTolerance times its longest (u, v) edge squared is a sliver
+/// that the map lays on a line (between a boundary's grid line and a branch point on it, say),
+/// keeps no area on any grid, and the quads cross it. Other grids are tried for the other
+/// defects only.
 std::size_t defectsBeyondFlat(
   const Defects& defects, const Eigen::MatrixX2d& uv, const std::vector<int>& cornerSector)
 {
+  const double flatArea = QuadExtractionOptions().flatTolerance; // as the extraction sees it
   std::size_t count = defects.wrong.size();
   for (const int f : defects.flipped)
   {
@@ -44,7 +44,7 @@ std::size_t defectsBeyondFlat(
         (uv.row(cornerSector[3 * f + (k + 1) % 3]) - uv.row(cornerSector[3 * f + k]))
           .squaredNorm());
     }
-    count += !(std::abs(twiceUVArea(uv, cornerSector, f)) <= FlatArea * longest);
+    count += !(std::abs(twiceUVArea(uv, cornerSector, f)) <= flatArea * longest);
   }
   return count;
 }

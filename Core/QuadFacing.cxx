@@ -90,14 +90,13 @@ public:
   /// -0.13); true when it moved.
   bool improve(int v)
   {
-    const double now = vertexScore(v);
-    if (now >= Fine)
+    const Score now = vertexScore(v);
+    if (now.worst >= Fine)
     {
       return false;
     }
-    const int againstNow = facingAgainst(v);
     const Eigen::Vector3d old = mesh_.V.row(v);
-    double best = now + 1e-3;
+    double best = now.worst + 1e-3;
     const Candidate* chosen = nullptr;
     const std::vector<Candidate> candidates = candidatesOf(v);
     for (const Candidate& c : candidates)
@@ -107,10 +106,10 @@ public:
       {
         continue; // the score is at most the shape's
       }
-      const double score = vertexScore(v);
-      if (score > best && facingAgainst(v) <= againstNow)
+      const Score score = vertexScore(v);
+      if (score.worst > best && score.against <= now.against)
       {
-        best = score;
+        best = score.worst;
         chosen = &c;
       }
     }
@@ -142,26 +141,25 @@ private:
     return std::min(quadFacing(surface_, mesh_, i), quadScaledJacobian(mesh_.V, mesh_.Q, i));
   }
 
-  double vertexScore(int v) const
+  /// Of v's quads: the worst quality, and how many face against the surface (quadFacing below
+  /// 0), each quad measured once.
+  struct Score
   {
     double worst = 1.0;
-    for (int j = offsets_[v]; j < offsets_[v + 1]; ++j)
-    {
-      worst = std::min(worst, quality(quadsOf_[j]));
-    }
-    return worst;
-  }
-
-  /// How many of v's quads face against the surface (quadFacing below 0).
-  int facingAgainst(int v) const
+    int against = 0;
+  };
+  Score vertexScore(int v) const
   {
-    int count = 0;
+    Score s;
     for (int j = offsets_[v]; j < offsets_[v + 1]; ++j)
     {
+      const int i = quadsOf_[j];
       ++evaluations_;
-      count += quadFacing(surface_, mesh_, quadsOf_[j]) < 0.0;
+      const double facing = quadFacing(surface_, mesh_, i);
+      s.worst = std::min({ s.worst, facing, quadScaledJacobian(mesh_.V, mesh_.Q, i) });
+      s.against += facing < 0.0;
     }
-    return count;
+    return s;
   }
 
   /// The smallest quadScaledJacobian of v's quads (an upper bound of vertexScore).

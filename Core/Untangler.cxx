@@ -403,10 +403,7 @@ std::vector<std::pair<std::vector<int>, std::vector<int>>> Untangler::pieces(
     indexOf[columns[i]] = i;
   }
   std::vector<int> parent(columns.size());
-  for (int i = 0; i < static_cast<int>(parent.size()); ++i)
-  {
-    parent[i] = i;
-  }
+  std::iota(parent.begin(), parent.end(), 0);
   std::vector<int> faceColumn(faces.size(), -1);
   for (std::size_t j = 0; j < faces.size(); ++j)
   {
