@@ -12,6 +12,7 @@
 #include <cmath>
 #include <complex>
 #include <map>
+#include <numeric>
 #include <stdexcept>
 #include <tuple>
 #include <vector>
@@ -25,6 +26,15 @@ using Complex = std::complex<double>;
 double cross(Complex a, Complex b)
 {
   return a.real() * b.imag() - a.imag() * b.real();
+}
+
+/// The distance from p to the segment from a to b.
+double distanceToSegment(Complex p, Complex a, Complex b)
+{
+  const Complex d = b - a;
+  const double t =
+    std::norm(d) > 0 ? std::clamp(std::real((p - a) * std::conj(d)) / std::norm(d), 0.0, 1.0) : 0.0;
+  return std::abs(a + t * d - p);
 }
 
 Complex turn(Complex z, int r)
@@ -150,10 +160,7 @@ private:
   {
     const int nV = static_cast<int>(V.rows());
     std::vector<int> parent(nV);
-    for (int v = 0; v < nV; ++v)
-    {
-      parent[v] = v;
-    }
+    std::iota(parent.begin(), parent.end(), 0);
     const double near = options.pointTolerance;
     forEachNeighbor(topo, [&](int f, int k, int g) {
       if (!flipped[f] && !flipped[g])
@@ -228,11 +235,7 @@ private:
           {
             continue;
           }
-          const Complex a = z(f, edge), d = z(f, (edge + 1) % 3) - a;
-          const double t = std::norm(d) > 0
-            ? std::clamp(std::real((p - a) * std::conj(d)) / std::norm(d), 0.0, 1.0)
-            : 0.0;
-          const double distance = std::abs(a + t * d - p);
+          const double distance = distanceToSegment(p, z(f, edge), z(f, (edge + 1) % 3));
           if (distance < nearest)
           {
             nearest = distance;
@@ -429,11 +432,7 @@ private:
         {
           best = std::min(best, Key{ 0, pointAlias[F(h, j)], 0, 0 });
         }
-        const Complex a = z(h, j), d = z(h, (j + 1) % 3) - a;
-        const double t = std::norm(d) > 0
-          ? std::clamp(std::real((qh - a) * std::conj(d)) / std::norm(d), 0.0, 1.0)
-          : 0.0;
-        if (std::abs(a + t * d - qh) > options.pointTolerance)
+        if (distanceToSegment(qh, z(h, j), z(h, (j + 1) % 3)) > options.pointTolerance)
         {
           continue; // q is not on this edge
         }
