@@ -619,6 +619,111 @@ double objective(const Eigen::MatrixX3i& F, const MeshTopology& topo, const Fram
   return options.branchPointWeight * topology.singularities +
     scaledMatchingCost(F, topo, geometry, topology, options.lengthScaledCost);
 }
+
+/// The nearest point (along edge paths over regular points, at most maxLength long) where a
+/// path from a with delta = -q(a) quarter turns cancels a singularity of the opposite index; -1
+/// when there is none. Ties: the first the search reaches.
+int findCancelPartner(Optimizer& o, int a, double maxLength,
+  const std::set<std::pair<int, int>>& twistRejected)
+{
+  const int delta = -o.q[a];
+  PathSearch& S = o.search;
+  S.begin(a);
+  int visited = 0;
+  while (!S.queue.empty() && visited < o.options.maximumSearchSize)
+  {
+    const auto [d, u] = S.queue.top();
+    S.queue.pop();
+    if (d > S.dist[u] || d > maxLength)
+    {
+      continue; // stale, or too far
+    }
+    ++visited;
+    if (u != a && o.q[u] != 0)
+    {
+      if (o.q[u] == delta && twistRejected.count({ std::min(a, u), std::max(a, u) }) == 0)
+      {
+        return u;
+      }
+      continue; // paths through another singularity would disturb it
+    }
+    for (int i = 0; i < static_cast<int>(o.steps[u].size()); ++i)
+    {
+      const Step& s = o.steps[u][i];
+      double added = 0.0;
+      if (o.stepCost(s, delta, added)) // no residual wrapped past +-pi (see findMergeTarget)
+      {
+        S.relax(u, i, s.to, d + o.geometry.edgeLength(s.g, s.kg));
+      }
+    }
+  }
+  return -1;
+}
+}
+
+int cancelClosePairs(const Eigen::MatrixX3i& F, const MeshTopology& topo,
+  const FrameGeometry& geometry, const Eigen::MatrixX3d& frameU, FrameTopology& topology,
+  double maxLength, std::vector<char>& changedFaces)
+{
+  changedFaces.assign(F.rows(), 0);
+  if (!(maxLength > 0) || topology.singularities < 2 || geometry.edgeLength.rows() == 0)
+  {
+    return 0;
+  }
+  const BranchPointOptions options;
+  Optimizer o(F, topo, geometry, frameU, topology, options);
+  TwistCheck twist(o);
+  std::set<std::pair<int, int>> twistRejected;
+  // Only on components without handles: there a path also turns the field along every handle's
+  // loop that it crosses, which no index accounts for (the smoothest field's small tori in
+  // Data/components.obj, cancelled down to a pair or none, kept folds on every grid).
+  // The closest pairs first: each quarter's distance to its nearest partner, then in that order.
+  std::vector<std::pair<double, int>> order;
+  for (int a = 0; a < topo.numVertices; ++a)
+  {
+    if (std::abs(o.q[a]) == 1 && !topo.boundaryVertex[a] &&
+      topo.components[topo.vertexComponent[a]].genus == 0)
+    {
+      const int u = findCancelPartner(o, a, maxLength, twistRejected);
+      if (u >= 0)
+      {
+        order.emplace_back(o.search.dist[u], a);
+      }
+    }
+  }
+  std::sort(order.begin(), order.end());
+  int cancelled = 0;
+  for (const auto& [distance, a] : order)
+  {
+    if (std::abs(o.q[a]) != 1)
+    {
+      continue; // cancelled with an earlier one
+    }
+    const int u = findCancelPartner(o, a, maxLength, twistRejected);
+    if (u < 0)
+    {
+      continue;
+    }
+    const int delta = -o.q[a];
+    o.changePath(a, u, delta);
+    if (twist.twisted(topo.vertexComponent[a]))
+    {
+      o.changePath(a, u, -delta);
+      twistRejected.insert({ std::min(a, u), std::max(a, u) });
+      continue;
+    }
+    for (int x = u; x != a; x = o.search.cameFrom[x])
+    {
+      const Step& s = o.search.stepTo(o.steps, x);
+      changedFaces[s.g] = changedFaces[s.f] = 1;
+    }
+    ++cancelled;
+  }
+  if (cancelled > 0)
+  {
+    topology = evaluateMatchings(F, topo, geometry, frameU, topology.matching);
+  }
+  return cancelled;
 }
 
 double scaledMatchingCost(const Eigen::MatrixX3i& F, const MeshTopology& topo,

@@ -132,6 +132,24 @@ BranchPointReport optimizeBranchPoints(const Eigen::MatrixX3i& F, const MeshTopo
   const BranchPointOptions& options = BranchPointOptions(), const Progress& progress = Progress());
 
 /**
+ * Cancels pairs of opposite inner quarter singularities (+1/4 with -1/4) that lie closer than
+ * maxLength along an edge path over regular inner points: the matchings along the shortest such
+ * path change by a quarter turn, which clears both ends and leaves the points between alone.
+ * The closest pairs go first; a cancellation that would leave a tube twisted (see
+ * optimizeBranchPoints) is undone. Only on components without handles (genus 0): there a path
+ * changes the field's turning only along loops around its ends, which the indices account for;
+ * across a handle it also turns the field along the handle's loops, and a flat torus has no
+ * such turning (the smoothest field's small tori of Data/components.obj kept folds on every
+ * grid). A grid cannot keep two singularities closer than about one
+ * of its edges apart: both must lie on grid points. Updates `topology` in place.
+ * @param[out] changedFaces #F, 1 for the faces on both sides of a changed edge
+ * @return the number of pairs cancelled
+ */
+int cancelClosePairs(const Eigen::MatrixX3i& F, const MeshTopology& topo,
+  const FrameGeometry& geometry, const Eigen::MatrixX3d& frameU, FrameTopology& topology,
+  double maxLength, std::vector<char>& changedFaces);
+
+/**
  * Turns the frames so that they agree with given matchings: the angles alpha minimizing
  *   8 lambda sum_{inner edges fg} (A_f + A_g)/3 (delta_fg + alpha_g - alpha_f)^2
  *     + (1 - lambda) sum_f A_f w_f alpha_f^2

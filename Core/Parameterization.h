@@ -89,6 +89,11 @@ struct ParameterizationOptions
   /// Only maps of at most this many quads are tried on other grids: a small component's grid is
   /// coarse against its singularities, and its trials are cheap.
   double maximumRegridQuadCount = 1000;
+  /// Opposite quarter singularities (+1/4 and -1/4) closer than this many grid edges along the
+  /// surface cancel before the map is cut (cancelClosePairs), the frames around the changed edges
+  /// turned to agree; 0 keeps every one. Both would have to lie on grid points: a pair closer
+  /// than a grid edge folds the map or stretches the quads between them.
+  double minimumSingularitySeparation = 1.5;
 };
 
 /**
@@ -114,6 +119,8 @@ struct Parameterization
   /// the edge length used (world length of one grid unit): options.targetEdgeLength, or the one
   /// targetQuadCount gave
   double edgeLength = 0.0;
+  /// pairs of opposite singularities cancelled (options.minimumSingularitySeparation)
+  int cancelledPairs = 0;
   int branchPoints = 0;         ///< inner points with a non-zero layer shift
   int branchPointsOnGrid = 0;   ///< of those, mapped to integer (u, v) within 1e-6
   int seamEdges = 0;            ///< cut edges

@@ -122,6 +122,9 @@ constexpr const char* ParameterizationEnergy = "ParameterizationEnergy";
 constexpr const char* SeamEdgeCount = "SeamEdgeCount";
 /// field, 1 x int: boundary edges put on integer grid lines (AlignToBoundary).
 constexpr const char* AlignedBoundaryEdges = "AlignedBoundaryEdges";
+/// field, 1 x int: pairs of opposite singularities closer than MinimumSingularitySeparation grid
+/// edges that the solver cancelled (their branch points are gone from its map).
+constexpr const char* CancelledSingularityPairs = "CancelledSingularityPairs";
 /// field, 1 x int, 2 tuples: branch points, and those mapped to a grid point.
 constexpr const char* BranchPointsOnGrid = "BranchPointsOnGrid";
 /// field, 1 x double: largest distance of a seam translation from Z^2 (grid units).

@@ -110,6 +110,7 @@ void AddFigures(
     { map.energyContinuous, map.energyRounded, map.energyFinal });
   AddField<vtkIntArray>(fd, names::SeamEdgeCount, { double(map.seamEdges) });
   AddField<vtkIntArray>(fd, names::AlignedBoundaryEdges, { double(map.alignedBoundaryEdges) });
+  AddField<vtkIntArray>(fd, names::CancelledSingularityPairs, { double(map.cancelledPairs) });
   AddField<vtkIntArray>(
     fd, names::BranchPointsOnGrid, { double(map.branchPoints), double(map.branchPointsOnGrid) });
   AddField<vtkDoubleArray>(fd, names::SeamTranslationError, { map.maxSeamError });
@@ -133,6 +134,7 @@ vtkQuadCoverSolver::vtkQuadCoverSolver()
   this->CurvatureEdgeLength = defaults.curvatureEdgeLength;
   this->MaximumRegrids = defaults.maximumRegrids;
   this->MaximumRegridQuadCount = defaults.maximumRegridQuadCount;
+  this->MinimumSingularitySeparation = defaults.minimumSingularitySeparation;
   this->NumberOfThreads = defaults.numberOfThreads;
   this->SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_CELLS, names::FrameU);
   this->SetInputArrayToProcess(1, 0, 0, vtkDataObject::FIELD_ASSOCIATION_CELLS, names::Matching);
@@ -157,7 +159,8 @@ void vtkQuadCoverSolver::Execute(vtkQuadCoverSurface& in, vtkInformationVector* 
   vtkQuadCoverEigen::RequireNumbers({ { "TargetEdgeLength", this->TargetEdgeLength },
     { "BoundaryTolerance", this->BoundaryTolerance },
     { "CurvatureEdgeLength", this->CurvatureEdgeLength },
-    { "MaximumRegridQuadCount", this->MaximumRegridQuadCount } });
+    { "MaximumRegridQuadCount", this->MaximumRegridQuadCount },
+    { "MinimumSingularitySeparation", this->MinimumSingularitySeparation } });
   quadcover::ParameterizationOptions options;
   options.targetEdgeLength = in.InCoreUnits(this->TargetEdgeLength); // for the scaled surface
   options.targetQuadCount = this->TargetQuadCount;
@@ -171,6 +174,7 @@ void vtkQuadCoverSolver::Execute(vtkQuadCoverSurface& in, vtkInformationVector* 
   options.curvatureEdgeLength = this->CurvatureEdgeLength;
   options.maximumRegrids = this->MaximumRegrids;
   options.maximumRegridQuadCount = this->MaximumRegridQuadCount;
+  options.minimumSingularitySeparation = this->MinimumSingularitySeparation;
   options.numberOfThreads = this->NumberOfThreads;
   const quadcover::Parameterization map = quadcover::computeParameterization(in.V, in.F, in.topo,
     geometry, U, matching, options, vtkQuadCoverEigen::CoreProgress(this, 0.15, 0.95));
@@ -245,6 +249,8 @@ void vtkQuadCoverSolver::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "CurvatureEdgeLength: " << this->CurvatureEdgeLength << "\n";
   os << indent << "MaximumRegrids: " << this->MaximumRegrids << "\n";
   os << indent << "MaximumRegridQuadCount: " << this->MaximumRegridQuadCount << "\n";
+  os << indent << "MinimumSingularitySeparation: " << this->MinimumSingularitySeparation
+     << "\n";
   os << indent << "NumberOfThreads: " << this->NumberOfThreads << "\n";
   os << indent << "SplitSeams: " << (this->SplitSeams ? "On" : "Off") << "\n";
 }

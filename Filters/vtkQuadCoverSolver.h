@@ -32,7 +32,7 @@
  * Output: the surface with cell data CornerUV (6 x double: u0 v0 u1 v1 u2 v2 at the triangle's
  * points) and Seam (3 x unsigned char: 1 where edge k, from point k to k+1, is on the cut), field
  * data EdgeLength, FlippedTriangles, WindingErrors, ParameterizationEnergy, SeamEdgeCount,
- * AlignedBoundaryEdges, BranchPointsOnGrid and SeamTranslationError (see
+ * AlignedBoundaryEdges, CancelledSingularityPairs, BranchPointsOnGrid and SeamTranslationError (see
  * vtkQuadCoverArrayNames.h). With SplitSeams
  * the surface is cut open along the seams instead: one point per sector of a point between seam
  * edges, point data UV (the active texture coordinates) and SurfacePointId, so a checkerboard
@@ -152,6 +152,16 @@ public:
   ///@}
 
   ///@{
+  /** Opposite quarter singularities (+1/4 and -1/4) closer than this many grid edges along the
+   * surface cancel before the surface is cut (on components without handles), the frames
+   * around them turned to agree, in
+   * [0, 100] (default 1.5); 0 keeps every one. Both would have to lie on grid points: so close,
+   * the map folds or the quads between them stretch. Counted in CancelledSingularityPairs. */
+  vtkSetClampMacro(MinimumSingularitySeparation, double, 0.0, 100.0);
+  vtkGetMacro(MinimumSingularitySeparation, double);
+  ///@}
+
+  ///@{
   /** Number of threads for the untangling, 0 for all cores (default 0). The result does not
    * depend on it. */
   vtkSetClampMacro(NumberOfThreads, int, 0, 1024);
@@ -196,6 +206,7 @@ protected:
   double CurvatureEdgeLength;
   int MaximumRegrids;
   double MaximumRegridQuadCount;
+  double MinimumSingularitySeparation;
   int NumberOfThreads;
   bool SplitSeams = false;
 

@@ -346,6 +346,8 @@ std::vector<Option> StageOptions(Pipeline& p)
       "other grids (2, 1/2, 4, 1/4, 8, 16 times the quads) tried for a map left with defects"),
     QC_NUMBER("param", solver, MaximumRegridQuadCount,
       "only maps of at most this many quads are tried on other grids"),
+    QC_NUMBER("param", solver, MinimumSingularitySeparation,
+      "opposite singularities closer than this many grid edges cancel, 0: keep all"),
     QC_SWITCH("param", solver, SplitSeams,
       "write the surface cut open along the seams, with UV texture coordinates"),
     QC_SWITCH("quads", extractor, RepairInvertedQuads,

@@ -16,6 +16,7 @@
 #include <map>
 #include <queue>
 #include <random>
+#include <string>
 
 using namespace quadcover;
 
@@ -278,6 +279,57 @@ TEST(Matchings, BranchPointOptimizationNeverCreatesSingularities)
         EXPECT_LE(t.singularities, before.singularities);
         EXPECT_NEAR(t.index.sum(), m.topo.eulerCharacteristic(), 1e-9);
       }
+    }
+  }
+}
+
+TEST(Matchings, CloseOppositeQuartersCancelAndNothingElseChanges)
+{
+  for (const char* name : { "sphere", "saddle", "roundedcube", "torus", "knot" })
+  {
+    const Mesh m = prepare(testSurface(name));
+    // a smooth field with noise: pairs of opposite quarters at every distance
+    Eigen::VectorXd a(m.s.F.rows());
+    std::mt19937 rng(7);
+    for (Eigen::Index f = 0; f < a.size(); ++f)
+    {
+      const Eigen::Vector3d c = (m.s.V.row(m.s.F(f, 0)) + m.s.V.row(m.s.F(f, 1))) / 2.0;
+      a[f] = 3.0 * c.x() + 2.0 * c.y() + 1.2 * (rng() / 4294967296.0 - 0.5);
+    }
+    const Eigen::MatrixX3d U = angleVectors(m.geometry.bases, a);
+    const FrameTopology before = computeMatchings(m.s.F, m.topo, m.geometry, U);
+    const bool handles = m.topo.components[0].genus > 0;
+    std::vector<char> changed;
+    FrameTopology none = before;
+    EXPECT_EQ(cancelClosePairs(m.s.F, m.topo, m.geometry, U, none, 0.0, changed), 0);
+    EXPECT_EQ(none.matching, before.matching);
+    for (double edges : { 2.0, 4.0 })
+    {
+      SCOPED_TRACE(std::string(name) + " within " + std::to_string(edges) + " edges");
+      FrameTopology t = before;
+      const int cancelled = cancelClosePairs(
+        m.s.F, m.topo, m.geometry, U, t, edges * m.geometry.referenceLength, changed);
+      std::printf("[ %s ] %d singularities, %d pairs within %.0f edges cancelled\n", name,
+        before.singularities, cancelled, edges);
+      // a surface with handles keeps its pairs: a path also turns the field along the loops
+      // around the handles it crosses
+      EXPECT_EQ(cancelled > 0, !handles);
+      EXPECT_EQ(t.singularities, before.singularities - 2 * cancelled);
+      EXPECT_EQ(std::count(changed.begin(), changed.end(), 1) > 0, cancelled > 0);
+      // only opposite quarters went, in pairs; no point changed its index otherwise
+      double removedSum = 0.0;
+      for (int v = 0; v < m.topo.numVertices; ++v)
+      {
+        if (t.index[v] != before.index[v])
+        {
+          ASSERT_EQ(t.index[v], 0.0) << v;
+          ASSERT_EQ(std::abs(before.index[v]), 0.25) << v;
+          removedSum += before.index[v];
+        }
+      }
+      EXPECT_EQ(removedSum, 0.0);
+      EXPECT_NEAR(t.index.sum(), m.topo.eulerCharacteristic(), 1e-9);
+      EXPECT_LT(t.maxIndexError, 1e-9);
     }
   }
 }
