@@ -1,8 +1,10 @@
 #include "QuadMeshing.h"
 
+#include "Parallel.h"
 #include "QuadFacing.h"
 #include "QuadRelaxation.h"
 #include "ScaledJacobian.h"
+#include "SurfaceLocator.h"
 
 #include <algorithm>
 #include <stdexcept>
@@ -160,6 +162,22 @@ HausdorffSamples hausdorffSamples(const Eigen::MatrixX3d& V, const Eigen::Matrix
       (s.surfacePoints.colwise().maxCoeff() - s.surfacePoints.colwise().minCoeff()).norm();
   }
   return s;
+}
+
+double largestDistance(const Eigen::MatrixX3d& points, const Eigen::MatrixX3d& V,
+  const Eigen::MatrixX3i& F, int threads)
+{
+  const SurfaceLocator locator(V, F);
+  const int n = static_cast<int>(points.rows());
+  std::vector<double> largest(std::max(1, threads > 0 ? threads : defaultThreadCount()), 0.0);
+  // each thread keeps its own largest: a maximum does not depend on how the points are shared
+  parallelFor(n, threads, [&](int begin, int end, int thread) {
+    for (int i = begin; i < end; ++i)
+    {
+      largest[thread] = std::max(largest[thread], locator.closest(points.row(i).transpose()).distance);
+    }
+  });
+  return *std::max_element(largest.begin(), largest.end());
 }
 
 }

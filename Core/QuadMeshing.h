@@ -94,6 +94,12 @@ struct HausdorffSamples
 HausdorffSamples hausdorffSamples(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F,
   const Eigen::MatrixX3d& quadV, const Eigen::MatrixX4i& Q);
 
+/// The largest distance from the points to the triangles (V, F) (0 without points, infinity
+/// without a triangle of positive area), on `threads` threads (0: defaultThreadCount()); the
+/// same on any number of them.
+double largestDistance(const Eigen::MatrixX3d& points, const Eigen::MatrixX3d& V,
+  const Eigen::MatrixX3i& F, int threads = 0);
+
 }
 
 #endif

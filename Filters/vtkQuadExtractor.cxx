@@ -8,17 +8,16 @@
 #include "vtkDataObject.h"
 #include "vtkDoubleArray.h"
 #include "vtkFieldData.h"
-#include "vtkGenericCell.h"
 #include "vtkIntArray.h"
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
-#include "vtkStaticCellLocator.h"
 
 #include "QuadMeshing.h"
 
 #include <algorithm>
+#include <cmath>
 #include <stdexcept>
 
 vtkStandardNewMacro(vtkQuadExtractor);
@@ -26,29 +25,6 @@ vtkStandardNewMacro(vtkQuadExtractor);
 namespace
 {
 namespace names = vtkQuadCoverArrayNames;
-
-/// Largest distance from the points to the triangles (#T x 3 into V).
-double LargestDistance(
-  const Eigen::MatrixX3d& points, const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& T)
-{
-  vtkSmartPointer<vtkPolyData> surface = vtkQuadCoverEigen::ToPolyData(V, T);
-  vtkNew<vtkStaticCellLocator> locator;
-  locator->SetDataSet(surface);
-  locator->BuildLocator();
-  vtkNew<vtkGenericCell> cell;
-  double largest = 0.0;
-  for (Eigen::Index i = 0; i < points.rows(); ++i)
-  {
-    double x[3] = { points(i, 0), points(i, 1), points(i, 2) };
-    double closest[3];
-    vtkIdType cellId = -1;
-    int subId = 0;
-    double d2 = 0.0;
-    locator->FindClosestPoint(x, closest, cell, cellId, subId, d2);
-    largest = std::max(largest, d2);
-  }
-  return std::sqrt(largest);
-}
 
 /// The solver's SplitSeams output: its points joined back through SurfacePointId (when the
 /// points of one id lie together, as the solver writes them). Returns a warning or "".
@@ -144,8 +120,12 @@ void AddHausdorffDistance(
   vtkFieldData* fd, const vtkQuadCoverSurface& in, const quadcover::QuadMesh& quads)
 {
   const quadcover::HausdorffSamples s = quadcover::hausdorffSamples(in.V, in.F, quads.V, quads.Q);
-  const double toQuads = LargestDistance(s.surfacePoints, quads.V, s.quadTriangles);
-  const double toSurface = LargestDistance(s.quadPoints, in.V, in.F);
+  const double toQuads = quadcover::largestDistance(s.surfacePoints, quads.V, s.quadTriangles);
+  const double toSurface = quadcover::largestDistance(s.quadPoints, in.V, in.F);
+  if (!std::isfinite(toQuads) || !std::isfinite(toSurface))
+  {
+    return; // no quad (or surface triangle) of positive area to measure against
+  }
   vtkQuadCoverEigen::AddField<vtkDoubleArray>(fd, names::HausdorffDistance,
     { 100.0 * std::max(toQuads, toSurface) / s.diagonal, 100.0 * toQuads / s.diagonal,
       100.0 * toSurface / s.diagonal });

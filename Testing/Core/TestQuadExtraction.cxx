@@ -5,6 +5,7 @@
 #include "GridMapChecks.h"
 #include "QuadExtraction.h"
 #include "QuadFacing.h"
+#include "QuadMeshing.h"
 #include "QuadPatching.h"
 #include "TestChain.h"
 #include "TestSurfaces.h"
@@ -778,4 +779,27 @@ TEST(QuadExtraction, WalksCrossFlatTrianglesAndPointsTheMapJoinsAreOneVertex)
     EXPECT_EQ(m.boundaryLoops, 1);
     EXPECT_EQ(m.nonManifoldEdges, 0);
   }
+}
+
+TEST(QuadMeshing, LargestDistanceIsExactAndTheSameOnAnyNumberOfThreads)
+{
+  // points above a unit square (two triangles in z = 0), at heights 0 to 2.5 and beyond its
+  // corner: the largest distance is that of the farthest, whatever the threads
+  const Eigen::MatrixX3d V = (Eigen::MatrixX3d(4, 3) << 0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0).finished();
+  const Eigen::MatrixX3i F = (Eigen::MatrixX3i(2, 3) << 0, 1, 2, 0, 2, 3).finished();
+  Eigen::MatrixX3d points(5001, 3);
+  std::mt19937 rng(3);
+  for (int i = 0; i < 5000; ++i)
+  {
+    points.row(i) << rng() / 4294967296.0, rng() / 4294967296.0, 2.5 * (rng() / 4294967296.0);
+  }
+  points.row(5000) << 4.0, 5.0, 0.0; // 5 from the corner (1, 1, 0)
+  for (int threads : { 1, 2, 3 })
+  {
+    EXPECT_DOUBLE_EQ(largestDistance(points, V, F, threads), 5.0) << threads;
+    EXPECT_EQ(largestDistance(points.topRows(5000), V, F, threads),
+      largestDistance(points.topRows(5000), V, F, 1));
+    EXPECT_LE(largestDistance(points.topRows(5000), V, F, threads), 2.5);
+  }
+  EXPECT_EQ(largestDistance(Eigen::MatrixX3d(0, 3), V, F), 0.0);
 }
