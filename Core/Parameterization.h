@@ -127,6 +127,9 @@ struct Parameterization
   /// branch points rounded to the next nearest grid point because the nearest was taken by a
   /// branch point of the same triangle
   int separatedBranchPoints = 0;
+  /// boundary lines rounded away from the nearest integer because it closed the thin hole or cut
+  /// the thin strip between them and a line facing them
+  int separatedBoundaryLines = 0;
   /// Energy sum A_f |grad phi - K|^2 / (area * |K|^2) (0 for a perfect fit): the continuous
   /// minimizer, the rounded map before untangling, and the final map.
   double energyContinuous = 0.0;
