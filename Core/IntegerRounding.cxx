@@ -5,6 +5,7 @@
 #include <Eigen/Cholesky>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <set>
 #include <stdexcept>
@@ -71,13 +72,13 @@ class KeptApart
 {
 public:
   KeptApart(const Inputs& in, const Field& field, const Parameterization& out,
-    const SeamlessSystem& sys, const Eigen::VectorXd& x)
+    const SeamlessSystem& sys, const Eigen::VectorXd& x, bool aroundPoints)
     : sys_(sys)
     , pairsOf_(sys.numInteger)
   {
     if (in.options.pureQuads)
     {
-      addBranchPairs(in, field, out);
+      addBranchPairs(in, field, out, aroundPoints);
     }
     addLinePairs(in, out, sys.uv(x));
   }
@@ -135,16 +136,40 @@ private:
     Eigen::Vector3d middle;
   };
 
-  void addBranchPairs(const Inputs& in, const Field& field, const Parameterization& out)
+  /// The branch points of one triangle, pairwise; with `aroundPoints`, those of the faces around
+  /// each point that lie in one of its sectors (one chart: no cut between them): also those two
+  /// edges apart (packed cones, where one grid point for both closed one of them up).
+  void addBranchPairs(
+    const Inputs& in, const Field& field, const Parameterization& out, bool aroundPoints)
   {
-    for (int f = 0; f < in.numFaces(); ++f)
+    std::set<std::pair<int, int>> seen; // sector pairs
+    for (int r = 0; r < in.numVertices(); ++r)
     {
-      for (int k = 0; k < 3; ++k)
+      std::vector<std::array<int, 4>> found; // r's sector, the branch point, its sector, the face
+      for (int i = in.topo.ringOffsets[r]; i < in.topo.ringOffsets[r + 1]; ++i)
       {
-        const int sa = out.cornerSector[3 * f + k];
-        const int sb = out.cornerSector[3 * f + (k + 1) % 3];
-        if (field.branch[in.F(f, k)] && field.branch[in.F(f, (k + 1) % 3)])
+        const int f = in.topo.ringFaces[i];
+        const int around = out.cornerSector[3 * f + MeshTopology::cornerOf(in.F, f, r)];
+        for (int k = 0; k < 3; ++k)
         {
+          if (field.branch[in.F(f, k)])
+          {
+            found.push_back({ around, in.F(f, k), out.cornerSector[3 * f + k], f });
+          }
+        }
+      }
+      for (std::size_t a = 0; a < found.size(); ++a)
+      {
+        for (std::size_t b = a + 1; b < found.size(); ++b)
+        {
+          const int sa = found[a][2], sb = found[b][2];
+          const bool oneTriangle = found[a][3] == found[b][3];
+          if (found[a][0] != found[b][0] || found[a][1] == found[b][1] ||
+            !(aroundPoints || oneTriangle) ||
+            !seen.insert({ std::min(sa, sb), std::max(sa, sb) }).second)
+          {
+            continue;
+          }
           Pair pair;
           pair.d[0] = difference(sys_.sectorExpr[2 * sa], sys_.sectorExpr[2 * sb]);
           pair.d[1] = difference(sys_.sectorExpr[2 * sa + 1], sys_.sectorExpr[2 * sb + 1]);
@@ -386,12 +411,12 @@ void correctEdgeLength(
 // block of H^-1), which is the re-solve with the same factorization.
 Eigen::VectorXd roundIntegers(const Inputs& in, const Field& field, const SeamlessSystem& sys,
   const Eigen::VectorXd& x, const HessianFactor& factor, bool greedy, Parameterization& out,
-  const Progress& progress)
+  const Progress& progress, bool packedCones)
 {
   const int numInteger = sys.numInteger;
   Eigen::VectorXd xi = x.tail(numInteger);
   Eigen::MatrixXd S = factor.S;
-  const KeptApart pairs(in, field, out, sys, x);
+  const KeptApart pairs(in, field, out, sys, x, packedCones);
   std::vector<char> fixed(numInteger, 0);
   Eigen::VectorXd values = xi.array().round().matrix();
   for (int step = 0; step < numInteger; ++step)

@@ -151,8 +151,13 @@ void regridDefectiveMap(const Inputs& in, const Field& field, SeamlessSystem& sy
     trial.untangleEvaluations = 0;
     const Progress part = halving(progress, i);
     Eigen::VectorXd xt = continuous * scale;
+    // a trial also keeps apart the branch points around one point, not only those of one
+    // triangle: cones packed closer than a cell, two on one grid point, close one of them up (a
+    // piece of the truck of genus 3: 16 cones, 11 points wound the wrong way on every grid). On
+    // every map it changed valid meshes into invalid ones (cheburashka and decimated-knight,
+    // smoothest field, 1,000 quads).
     const Eigen::VectorXd integers =
-      roundIntegers(trialIn, field, sys, xt, factor, greedy, trial, part.part(0.0, 0.1));
+      roundIntegers(trialIn, field, sys, xt, factor, greedy, trial, part.part(0.0, 0.1), true);
     solveWithIntegersFixed(sys, factor, integers, greedy, xt, trial);
     Defects found;
     found.flipped = flippedFaces(sys.uv(xt), trial.cornerSector);

@@ -194,11 +194,12 @@ void correctEdgeLength(
 
 /// The integer unknowns' values (numInteger), rounded from the continuous minimizer x, greedy
 /// (with exact conditioning through factor.S) or simple, never putting two branch points of one
-/// triangle on one grid point nor two boundary lines that face each other across a thin hole or
-/// strip on one line; sets out.separatedBranchPoints and separatedBoundaryLines.
+/// triangle (with packedCones: of the faces around one point, in one chart) on one grid point
+/// nor two boundary lines that face each other across a thin hole or strip on one line; sets
+/// out.separatedBranchPoints and separatedBoundaryLines.
 Eigen::VectorXd roundIntegers(const Inputs& in, const Field& field, const SeamlessSystem& sys,
   const Eigen::VectorXd& x, const HessianFactor& factor, bool greedy, Parameterization& out,
-  const Progress& progress);
+  const Progress& progress, bool packedCones = false);
 
 /// The minimizer x (#columns) with the integer unknowns fixed to `integers`.
 void solveWithIntegersFixed(const SeamlessSystem& sys, const HessianFactor& factor,
