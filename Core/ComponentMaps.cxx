@@ -128,6 +128,7 @@ void addComponent(const Inputs& in, const Component& part, const MeshTopology& t
   out.constraints += map.constraints;
   out.nonUnitPivots += map.nonUnitPivots;
   out.separatedBranchPoints += map.separatedBranchPoints;
+  out.separatedBoundaryLines += map.separatedBoundaryLines;
   out.flippedContinuous += map.flippedContinuous;
   out.flippedRounded += map.flippedRounded;
   out.flipped += map.flipped;

@@ -4,7 +4,10 @@
 
 #include <Eigen/Cholesky>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
+#include <set>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -56,54 +59,51 @@ void integerBlockOfInverse(
   }
 }
 
-/// Two branch points of one triangle must not land on the same grid point (their triangles
-/// would collapse): the differences of their (u, v), in integer unknowns.
-class BranchPairs
+/**
+ * Pairs that the rounding must keep apart. Two branch points of one triangle must not land on
+ * the same grid point (their triangles would collapse). Two boundary lines that face each other
+ * across a thin hole or a thin strip of the surface (less than 1.5 grid cells apart, overlapping
+ * along their direction, near on the surface) must neither meet nor cross: met, the hole closes
+ * or the strip is cut through (the truck's body at 6,500 quads: slots of a grille and slits
+ * 0.4 cells wide closed, and 17 of its 39 holes were lost). Each pair is its differences in
+ * integer unknowns: (u, v) for branch points, the constant coordinate for lines.
+ */
+class KeptApart
 {
 public:
-  BranchPairs(
-    const Inputs& in, const Field& field, const Parameterization& out, const SeamlessSystem& sys)
+  KeptApart(const Inputs& in, const Field& field, const Parameterization& out,
+    const SeamlessSystem& sys, const Eigen::VectorXd& x, bool aroundPoints)
     : sys_(sys)
     , pairsOf_(sys.numInteger)
   {
-    if (!in.options.pureQuads)
+    if (in.options.pureQuads)
     {
-      return;
+      addBranchPairs(in, field, out, aroundPoints);
     }
-    for (int f = 0; f < in.numFaces(); ++f)
-    {
-      for (int k = 0; k < 3; ++k)
-      {
-        const int sa = out.cornerSector[3 * f + k];
-        const int sb = out.cornerSector[3 * f + (k + 1) % 3];
-        if (field.branch[in.F(f, k)] && field.branch[in.F(f, (k + 1) % 3)])
-        {
-          add({ difference(sys.sectorExpr[2 * sa], sys.sectorExpr[2 * sb]),
-            difference(sys.sectorExpr[2 * sa + 1], sys.sectorExpr[2 * sb + 1]) });
-        }
-      }
-    }
+    addLinePairs(in, out, sys.uv(x));
   }
 
   /// Fixing j to `value`, the others fixed so far (`fixed`) at `values`: does it complete a
-  /// pair at the same point?
+  /// pair that meets (or, for lines, crosses)?
   bool collides(
     int j, double value, const std::vector<char>& fixed, const Eigen::VectorXd& values) const
   {
     for (const int p : pairsOf_[j])
     {
+      const Pair& pair = pairs_[p];
       bool complete = true;
-      double du = 0.0;
-      double dv = 0.0;
-      for (int c = 0; c < 2; ++c)
+      double d[2] = { 0.0, 0.0 };
+      for (int c = 0; c < pair.dims; ++c)
       {
-        for (const auto& t : c == 0 ? pairs_[p].du : pairs_[p].dv)
+        for (const auto& t : pair.d[c])
         {
           complete = complete && (fixed[t.first] || t.first == j);
-          (c == 0 ? du : dv) += t.second * (t.first == j ? value : values[t.first]);
+          d[c] += t.second * (t.first == j ? value : values[t.first]);
         }
       }
-      if (complete && std::abs(du) < 0.5 && std::abs(dv) < 0.5)
+      const bool met = pair.dims == 2 ? std::abs(d[0]) < 0.5 && std::abs(d[1]) < 0.5
+                                      : pair.order * d[0] < 0.5;
+      if (complete && met)
       {
         return true;
       }
@@ -111,11 +111,139 @@ public:
     return false;
   }
 
+  /// Is j in a pair of boundary lines (else of branch points)?
+  bool isLine(int j) const
+  {
+    return std::any_of(
+      pairsOf_[j].begin(), pairsOf_[j].end(), [&](int p) { return pairs_[p].dims == 1; });
+  }
+
 private:
   struct Pair
   {
-    Expr du, dv;
+    Expr d[2];
+    int dims = 2;       ///< 2: branch points (u and v), 1: boundary lines (their coordinate)
+    double order = 0.0; ///< lines: the sign of d[0] in the continuous map, which is kept
   };
+
+  /// A boundary edge on a grid line: which coordinate is constant, its value (in symbols and in
+  /// the continuous map), the range of the other coordinate, its middle on the surface.
+  struct LineEdge
+  {
+    int c;
+    const Expr* expr;
+    double value, lo, hi, length;
+    Eigen::Vector3d middle;
+  };
+
+  /// The branch points of one triangle, pairwise; with `aroundPoints`, those of the faces around
+  /// each point that lie in one of its sectors (one chart: no cut between them): also those two
+  /// edges apart (packed cones, where one grid point for both closed one of them up).
+  void addBranchPairs(
+    const Inputs& in, const Field& field, const Parameterization& out, bool aroundPoints)
+  {
+    std::set<std::pair<int, int>> seen; // sector pairs
+    for (int r = 0; r < in.numVertices(); ++r)
+    {
+      std::vector<std::array<int, 4>> found; // r's sector, the branch point, its sector, the face
+      for (int i = in.topo.ringOffsets[r]; i < in.topo.ringOffsets[r + 1]; ++i)
+      {
+        const int f = in.topo.ringFaces[i];
+        const int around = out.cornerSector[3 * f + MeshTopology::cornerOf(in.F, f, r)];
+        for (int k = 0; k < 3; ++k)
+        {
+          if (field.branch[in.F(f, k)])
+          {
+            found.push_back({ around, in.F(f, k), out.cornerSector[3 * f + k], f });
+          }
+        }
+      }
+      for (std::size_t a = 0; a < found.size(); ++a)
+      {
+        for (std::size_t b = a + 1; b < found.size(); ++b)
+        {
+          const int sa = found[a][2], sb = found[b][2];
+          const bool oneTriangle = found[a][3] == found[b][3];
+          if (found[a][0] != found[b][0] || found[a][1] == found[b][1] ||
+            !(aroundPoints || oneTriangle) ||
+            !seen.insert({ std::min(sa, sb), std::max(sa, sb) }).second)
+          {
+            continue;
+          }
+          Pair pair;
+          pair.d[0] = difference(sys_.sectorExpr[2 * sa], sys_.sectorExpr[2 * sb]);
+          pair.d[1] = difference(sys_.sectorExpr[2 * sa + 1], sys_.sectorExpr[2 * sb + 1]);
+          add(std::move(pair));
+        }
+      }
+    }
+  }
+
+  /// The boundary edges whose two ends share a coordinate that is an integer unknown.
+  std::vector<LineEdge> lineEdges(
+    const Inputs& in, const Parameterization& out, const Eigen::MatrixX2d& uv) const
+  {
+    std::vector<LineEdge> edges;
+    for (int f = 0; f < in.numFaces(); ++f)
+    {
+      for (int k = 0; k < 3; ++k)
+      {
+        if (in.topo.faceNeighbors(f, k) >= 0)
+        {
+          continue;
+        }
+        const int sa = out.cornerSector[3 * f + k];
+        const int sb = out.cornerSector[3 * f + (k + 1) % 3];
+        for (int c = 0; c < 2; ++c)
+        {
+          const Expr& e = sys_.sectorExpr[2 * sa + c];
+          const bool integral = std::all_of(
+            e.begin(), e.end(), [&](const auto& t) { return t.first >= sys_.numReal; });
+          if (e.empty() || !integral || e != sys_.sectorExpr[2 * sb + c])
+          {
+            continue;
+          }
+          const Eigen::Vector3d a = in.V.row(in.F(f, k)).transpose();
+          const Eigen::Vector3d b = in.V.row(in.F(f, (k + 1) % 3)).transpose();
+          edges.push_back({ c, &e, uv(sa, c), std::min(uv(sa, 1 - c), uv(sb, 1 - c)),
+            std::max(uv(sa, 1 - c), uv(sb, 1 - c)), (b - a).norm(), 0.5 * (a + b) });
+        }
+      }
+    }
+    return edges;
+  }
+
+  /// Pairs of boundary lines that face each other less than a grid cell apart.
+  void addLinePairs(const Inputs& in, const Parameterization& out, const Eigen::MatrixX2d& uv)
+  {
+    const std::vector<LineEdge> edges = lineEdges(in, out, uv);
+    std::set<std::pair<const Expr*, const Expr*>> seen;
+    const double h = out.edgeLength;
+    for (std::size_t i = 0; i < edges.size(); ++i)
+    {
+      for (std::size_t j = i + 1; j < edges.size(); ++j)
+      {
+        const LineEdge& a = edges[i];
+        const LineEdge& b = edges[j];
+        const double gap = a.value - b.value;
+        // overlapping along the lines by more than a sliver: not two ends of a step
+        const double overlap = std::min(a.hi, b.hi) - std::max(a.lo, b.lo);
+        if (a.c != b.c || !(std::abs(gap) < 1.5) || std::abs(gap) < 1e-6 || overlap < 0.05 ||
+          (a.middle - b.middle).norm() > 2 * h + 0.5 * (a.length + b.length))
+        {
+          continue;
+        }
+        Pair pair;
+        pair.dims = 1;
+        pair.order = gap > 0 ? 1.0 : -1.0;
+        pair.d[0] = difference(*a.expr, *b.expr);
+        if (!pair.d[0].empty() && seen.insert({ a.expr, b.expr }).second)
+        {
+          add(std::move(pair));
+        }
+      }
+    }
+  }
 
   /// a - b (in symbols) in integer unknowns: index j for column numReal + j, so that a real
   /// column has a negative index.
@@ -149,9 +277,9 @@ private:
   void add(Pair pair)
   {
     bool integral = true;
-    for (const Expr* e : { &pair.du, &pair.dv })
+    for (int c = 0; c < pair.dims; ++c)
     {
-      for (const auto& t : *e)
+      for (const auto& t : pair.d[c])
       {
         integral = integral && t.first >= 0;
       }
@@ -160,9 +288,9 @@ private:
     {
       return;
     }
-    for (const Expr* e : { &pair.du, &pair.dv })
+    for (int c = 0; c < pair.dims; ++c)
     {
-      for (const auto& t : *e)
+      for (const auto& t : pair.d[c])
       {
         pairsOf_[t.first].push_back(static_cast<int>(pairs_.size()));
       }
@@ -190,6 +318,27 @@ int closestToInteger(const Eigen::VectorXd& xi, const std::vector<char>& fixed, 
     }
   }
   return best;
+}
+
+/// The integer nearest to x that keeps the pairs of j apart, among the 2 MaximumShift + 1
+/// nearest; the next nearest when none does.
+double apartValue(const KeptApart& pairs, int j, double x, const std::vector<char>& fixed,
+  const Eigen::VectorXd& values)
+{
+  constexpr int MaximumShift = 2;
+  const double nearest = std::round(x);
+  const double side = x >= nearest ? 1.0 : -1.0; // the next nearest is on x's side
+  for (int shift = 1; shift <= MaximumShift; ++shift)
+  {
+    for (const double value : { nearest + side * shift, nearest - side * shift })
+    {
+      if (!pairs.collides(j, value, fixed, values))
+      {
+        return value;
+      }
+    }
+  }
+  return nearest + side;
 }
 
 /// Fixes xi[j] to `value` and conditions the others on it (S: their covariance, updated).
@@ -262,12 +411,12 @@ void correctEdgeLength(
 // block of H^-1), which is the re-solve with the same factorization.
 Eigen::VectorXd roundIntegers(const Inputs& in, const Field& field, const SeamlessSystem& sys,
   const Eigen::VectorXd& x, const HessianFactor& factor, bool greedy, Parameterization& out,
-  const Progress& progress)
+  const Progress& progress, bool packedCones)
 {
   const int numInteger = sys.numInteger;
   Eigen::VectorXd xi = x.tail(numInteger);
   Eigen::MatrixXd S = factor.S;
-  const BranchPairs pairs(in, field, out, sys);
+  const KeptApart pairs(in, field, out, sys, x, packedCones);
   std::vector<char> fixed(numInteger, 0);
   Eigen::VectorXd values = xi.array().round().matrix();
   for (int step = 0; step < numInteger; ++step)
@@ -275,12 +424,12 @@ Eigen::VectorXd roundIntegers(const Inputs& in, const Field& field, const Seamle
     reportEvery(progress, step, numInteger);
     // Simple: in order, each from the continuous minimizer
     const int best = greedy ? closestToInteger(xi, fixed, step) : step;
-    // the nearest integer, or the next nearest when the nearest collapses a pair
+    // the nearest integer, or the nearest that keeps its pairs apart
     double value = std::round(xi[best]);
     if (pairs.collides(best, value, fixed, values))
     {
-      ++out.separatedBranchPoints;
-      value = xi[best] >= value ? value + 1.0 : value - 1.0;
+      ++(pairs.isLine(best) ? out.separatedBoundaryLines : out.separatedBranchPoints);
+      value = apartValue(pairs, best, xi[best], fixed, values);
     }
     fixed[best] = 1;
     values[best] = value;

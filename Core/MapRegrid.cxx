@@ -4,6 +4,7 @@
 // back-substitution and a repair: no new factorization.
 #include "ParameterizationSteps.h"
 #include "QuadExtraction.h"
+#include "QuadPatching.h"
 
 #include <algorithm>
 #include <cmath>
@@ -53,6 +54,49 @@ std::size_t defectsBeyondFlat(
 /// most this many triangles per quad of maximumRegridQuadCount: there the trials (which share one
 /// more budget) cost seconds; on a large surface (armadillo) minutes, for nothing.
 constexpr double SpentTrianglesPerQuad = 10.0;
+
+/// Do the quads that map uv gives (cut out, their holes inside the surface filled, as the quad
+/// stage does) have the surface's topology: as many pieces, its Euler characteristic and its
+/// boundary loops, manifold? A map can be free of defects and still lose a hole (a small hole
+/// whose boundary lines meet the surface's outer one: a piece of the truck of 48 quads) or
+/// leave a band around a handle (a piece of genus 3).
+bool quadsKeepTopology(
+  const Inputs& in, const Eigen::MatrixX2d& uv, const std::vector<int>& cornerSector)
+{
+  Eigen::MatrixXd cornerUV(in.numFaces(), 6);
+  for (int f = 0; f < in.numFaces(); ++f)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      cornerUV.block<1, 2>(f, 2 * k) = uv.row(cornerSector[3 * f + k]);
+    }
+  }
+  QuadMesh quads = extractQuads(in.V, in.F, in.topo, cornerUV, QuadExtractionOptions());
+  patchQuadMesh(in.V, in.F, in.topo, quads);
+  // two triangles a quad: the same points, edges but the diagonals, loops and pieces
+  Eigen::MatrixX3i T(2 * quads.Q.rows(), 3);
+  for (Eigen::Index q = 0; q < quads.Q.rows(); ++q)
+  {
+    T.row(2 * q) << quads.Q(q, 0), quads.Q(q, 1), quads.Q(q, 2);
+    T.row(2 * q + 1) << quads.Q(q, 0), quads.Q(q, 2), quads.Q(q, 3);
+  }
+  const MeshTopology topo = buildTopology(T, static_cast<int>(quads.V.rows()));
+  return topo.isManifold() && topo.numComponents() == in.topo.numComponents() &&
+    topo.eulerCharacteristic() == in.topo.eulerCharacteristic() &&
+    topo.boundaryLoops.size() == in.topo.boundaryLoops.size();
+}
+
+/// How good a map is, best first: without defects (but flat triangles) and with quads of the
+/// surface's topology; with that topology; without defects; neither. (Without PureQuads the
+/// branch points are off the grid and the cells around them give no quads: only the defects
+/// count.)
+int rank(const Inputs& in, const Defects& defects, const Eigen::MatrixX2d& uv,
+  const std::vector<int>& cornerSector)
+{
+  const bool clean = defectsBeyondFlat(defects, uv, cornerSector) == 0;
+  const bool whole = !in.options.pureQuads || quadsKeepTopology(in, uv, cornerSector);
+  return whole ? (clean ? 0 : 1) : (clean ? 2 : 3);
+}
 }
 
 void regridDefectiveMap(const Inputs& in, const Field& field, SeamlessSystem& sys,
@@ -60,8 +104,17 @@ void regridDefectiveMap(const Inputs& in, const Field& field, SeamlessSystem& sy
   Defects& defects, Parameterization& out, const Progress& progress)
 {
   const int tries = std::min(in.options.maximumRegrids, static_cast<int>(std::size(QuadFactors)));
-  if (defectsBeyondFlat(defects, sys.uv(x), out.cornerSector) == 0 || tries <= 0 ||
-    sys.numInteger == 0 ||
+  const double edgeLength = out.edgeLength;
+  const double cells = sys.faceArea.sum() / (edgeLength * edgeLength);
+  // a large map keeps its grid: its defects are local, each trial costs a repair of the whole
+  // map, and a grid twice as fine (rocker-arm, smoothest field) changed a valid mesh of 6,500
+  // quads into one of 13,000 with a quad against the surface
+  if (tries <= 0 || sys.numInteger == 0 || cells > in.options.maximumRegridQuadCount)
+  {
+    return;
+  }
+  int bestRank = rank(in, defects, sys.uv(x), out.cornerSector);
+  if (bestRank == 0 ||
     (out.untangleBudgetSpent &&
       in.numFaces() > SpentTrianglesPerQuad * in.options.maximumRegridQuadCount))
   {
@@ -74,19 +127,9 @@ void regridDefectiveMap(const Inputs& in, const Field& field, SeamlessSystem& sy
   const Inputs trialIn{ in.V, in.F, in.topo, in.geometry, in.frameU, in.matching, trialOptions };
   const Eigen::VectorXd rhs = sys.rhs;
   const double energyNorm = sys.energyNorm;
-  const double edgeLength = out.edgeLength;
   // the scale (in 1 / edgeLength) of the best map so far; 1: the first
   double bestScale = 1.0;
-  const double cells = sys.faceArea.sum() / (edgeLength * edgeLength);
-  if (cells > in.options.maximumRegridQuadCount)
-  {
-    // a large map keeps its grid: its defects are local, each trial costs a repair of the whole
-    // map, and a grid twice as fine (rocker-arm, smoothest field) changed a valid mesh of 6,500
-    // quads into one of 13,000 with a quad against the surface
-    return;
-  }
-  bool kept = false; // a trial replaced the first map
-  for (int i = 0; i < tries && !kept; ++i)
+  for (int i = 0; i < tries && bestRank > 0; ++i)
   {
     const double q = QuadFactors[i];
     if (q < 1.0 && cells * q < in.options.minimumComponentQuadCount)
@@ -104,11 +147,17 @@ void regridDefectiveMap(const Inputs& in, const Field& field, SeamlessSystem& sy
     trial.edgeLength = edgeLength / scale;
     trial.untangleRegions = 0;
     trial.separatedBranchPoints = 0;
+    trial.separatedBoundaryLines = 0;
     trial.untangleEvaluations = 0;
     const Progress part = halving(progress, i);
     Eigen::VectorXd xt = continuous * scale;
+    // a trial also keeps apart the branch points around one point, not only those of one
+    // triangle: cones packed closer than a cell, two on one grid point, close one of them up (a
+    // piece of the truck of genus 3: 16 cones, 11 points wound the wrong way on every grid). On
+    // every map it changed valid meshes into invalid ones (cheburashka and decimated-knight,
+    // smoothest field, 1,000 quads).
     const Eigen::VectorXd integers =
-      roundIntegers(trialIn, field, sys, xt, factor, greedy, trial, part.part(0.0, 0.1));
+      roundIntegers(trialIn, field, sys, xt, factor, greedy, trial, part.part(0.0, 0.1), true);
     solveWithIntegersFixed(sys, factor, integers, greedy, xt, trial);
     Defects found;
     found.flipped = flippedFaces(sys.uv(xt), trial.cornerSector);
@@ -118,12 +167,14 @@ void regridDefectiveMap(const Inputs& in, const Field& field, SeamlessSystem& sy
     repairMap(trialIn, field, sys, xt, found, trial, part.part(0.1, 1.0));
     ++out.regrids;
     out.untangleEvaluations += trial.untangleEvaluations;
-    // only a map without defects (but flat triangles) replaces the first: one with fewer can
+    // a better map replaces the first (an earlier trial wins a tie): one with fewer defects can
     // still give worse quads (the teapot's spout, smoothest field: 9 defects and valid quads; 1
-    // defect at 4 times the quads, a -1/4 cone closed up, and a quad against the surface)
-    if (defectsBeyondFlat(found, sys.uv(xt), trial.cornerSector) == 0)
+    // defect at 4 times the quads, a -1/4 cone closed up, and a quad against the surface), so
+    // only one without defects (but flat triangles) or one whose quads keep the topology does
+    const int trialRank = rank(trialIn, found, sys.uv(xt), trial.cornerSector);
+    if (trialRank < bestRank)
     {
-      kept = true;
+      bestRank = trialRank;
       trial.regrids = out.regrids;
       trial.untangleEvaluations = out.untangleEvaluations;
       out = std::move(trial);

@@ -77,14 +77,15 @@ struct ParameterizationOptions
   /// than a grid cell would otherwise get no quad at all, and one of many holes on a few dozen
   /// quads loses them.)
   int minimumComponentQuadCount = 24;
-  /// A map that keeps flipped triangles or points wound the wrong way after its repair is
-  /// rounded and repaired again with up to this many other grid sizes (2, 1/2, 4, 1/4, 8 and 16
-  /// times the quads, in turn, never fewer than minimumComponentQuadCount, 8 and 16 times only
-  /// up to maximumRegridQuadCount) until one has no defects (but flat triangles: slivers the map lays
-  /// on a line, which no grid gives area), which replaces it; 0 keeps the first.
-  /// Maps without defects are never touched, nor maps of more than 10 maximumRegridQuadCount
-  /// triangles whose repair spent its whole untangleWork (time); the trials share one
-  /// untangleWork.
+  /// A map that keeps flipped triangles or points wound the wrong way after its repair, or whose
+  /// quads would not keep the surface's topology (pieces, Euler characteristic, boundary loops),
+  /// is rounded and repaired again with up to this many other grid sizes (2, 1/2, 4, 1/4, 8 and
+  /// 16 times the quads, in turn, never fewer than minimumComponentQuadCount, 8 and 16 times only
+  /// up to maximumRegridQuadCount) until one has neither (defects but flat triangles: slivers the
+  /// map lays on a line, which no grid gives area), which replaces it, else the first better than
+  /// the first map (the topology first); 0 keeps the first. Maps without defects whose quads keep
+  /// the topology are never touched, nor maps of more than 10 maximumRegridQuadCount triangles
+  /// whose repair spent its whole untangleWork (time); the trials share one untangleWork.
   int maximumRegrids = 6;
   /// Only maps of at most this many quads are tried on other grids: a small component's grid is
   /// coarse against its singularities, and its trials are cheap.
@@ -134,6 +135,9 @@ struct Parameterization
   /// branch points rounded to the next nearest grid point because the nearest was taken by a
   /// branch point of the same triangle
   int separatedBranchPoints = 0;
+  /// boundary lines rounded away from the nearest integer because it closed the thin hole or cut
+  /// the thin strip between them and a line facing them
+  int separatedBoundaryLines = 0;
   /// Energy sum A_f |grad phi - K|^2 / (area * |K|^2) (0 for a perfect fit): the continuous
   /// minimizer, the rounded map before untangling, and the final map.
   double energyContinuous = 0.0;

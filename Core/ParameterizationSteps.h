@@ -193,10 +193,13 @@ void correctEdgeLength(
   const Inputs& in, SeamlessSystem& sys, Eigen::VectorXd& x, Parameterization& out);
 
 /// The integer unknowns' values (numInteger), rounded from the continuous minimizer x, greedy
-/// (with exact conditioning through factor.S) or simple; sets out.separatedBranchPoints.
+/// (with exact conditioning through factor.S) or simple, never putting two branch points of one
+/// triangle (with packedCones: of the faces around one point, in one chart) on one grid point
+/// nor two boundary lines that face each other across a thin hole or strip on one line; sets
+/// out.separatedBranchPoints and separatedBoundaryLines.
 Eigen::VectorXd roundIntegers(const Inputs& in, const Field& field, const SeamlessSystem& sys,
   const Eigen::VectorXd& x, const HessianFactor& factor, bool greedy, Parameterization& out,
-  const Progress& progress);
+  const Progress& progress, bool packedCones = false);
 
 /// The minimizer x (#columns) with the integer unknowns fixed to `integers`.
 void solveWithIntegersFixed(const SeamlessSystem& sys, const HessianFactor& factor,
@@ -225,13 +228,15 @@ void repairMap(const Inputs& in, const Field& field, const SeamlessSystem& sys, 
 
 // ---- maps that keep defects (MapRegrid.cxx) ----
 
-/// When the repaired map x still has defects: rounds the continuous minimizer `continuous` at
+/// When the repaired map x still has defects, or its quads (cut out and patched as the quad stage
+/// does) would not have the surface's topology: rounds the continuous minimizer `continuous` at
 /// other grid sizes (ParameterizationOptions::maximumRegrids of 2, 1/2, 4, 1/4, 8, 16 times the
 /// quads, never fewer than minimumComponentQuadCount, 8 and 16 only up to maximumRegridQuadCount
-/// quads), repairs each, and keeps the first without defects (but flat triangles, a sliver laid
-/// on a line, which no grid gives area), if any: x, defects and out (its figures and edgeLength)
-/// follow it, and sys is left scaled for it. Not when the first repair spent its untangling budget
-/// on a surface of more than 10 maximumRegridQuadCount triangles, nor for maps of more than
+/// quads), repairs each, and keeps the first with neither (defects but flat triangles, a sliver
+/// laid on a line, which no grid gives area), else the first better than the map it has (the
+/// topology first, then no defects): x, defects and out (its figures and edgeLength) follow it,
+/// and sys is left scaled for it. Not when the first repair spent its untangling budget on a
+/// surface of more than 10 maximumRegridQuadCount triangles, nor for maps of more than
 /// maximumRegridQuadCount quads. Counts the grids tried in out.regrids.
 void regridDefectiveMap(const Inputs& in, const Field& field, SeamlessSystem& sys,
   const HessianFactor& factor, const Eigen::VectorXd& continuous, bool greedy, Eigen::VectorXd& x,

@@ -136,10 +136,11 @@ public:
   ///@}
 
   ///@{
-  /** A map that keeps flipped triangles or points wound the wrong way after its repair is
-   * rounded and repaired again on up to this many other grids (2, 1/2, 4, 1/4, 8 and 16 times
-   * the quads, 8 and 16 only up to MaximumRegridQuadCount), in [0, 6] (default 6); the first
-   * without defects replaces it; 0: none. */
+  /** A map that keeps flipped triangles or points wound the wrong way after its repair, or
+   * whose quads would lose the surface's topology, is rounded and repaired again on up to this
+   * many other grids (2, 1/2, 4, 1/4, 8 and 16 times the quads, 8 and 16 only up to
+   * MaximumRegridQuadCount), in [0, 6] (default 6); the first with neither replaces it, else
+   * the first better than it (the topology first); 0: none. */
   vtkSetClampMacro(MaximumRegrids, int, 0, 6);
   vtkGetMacro(MaximumRegrids, int);
   ///@}

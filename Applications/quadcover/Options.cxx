@@ -343,7 +343,8 @@ std::vector<Option> StageOptions(Pipeline& p)
     QC_NUMBER("param", solver, CurvatureEdgeLength,
       "edge length at most this over the mean curvature (4 quads around a tube), 0: no limit"),
     QC_NUMBER("param", solver, MaximumRegrids,
-      "other grids (2, 1/2, 4, 1/4, 8, 16 times the quads) tried for a map left with defects"),
+      "other grids (2, 1/2, 4, 1/4, 8, 16 times the quads) tried for a map left with defects or "
+      "whose quads lose the surface's topology"),
     QC_NUMBER("param", solver, MaximumRegridQuadCount,
       "only maps of at most this many quads are tried on other grids"),
     QC_NUMBER("param", solver, MinimumSingularitySeparation,

@@ -13,10 +13,12 @@
 #include <Eigen/Geometry>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <functional>
 #include <map>
 #include <random>
+#include <vector>
 
 using namespace quadcover;
 
@@ -374,6 +376,80 @@ TEST(QuadExtraction, BoundariesKeepTheirLoops)
   EXPECT_EQ(m.irregularInner, 0);
   EXPECT_EQ(m.irregularBoundary, 0);
   EXPECT_EQ(q.cellsOffSurface, 0) << "the boundaries lie on grid lines: no cell sticks out";
+}
+
+namespace
+{
+/// The unit square in n x n cells of two triangles each, without the cells of the given rows in
+/// columns [c0, c1): a flat plate with slots one cell wide.
+Surface makeSlottedPlate(int n, const std::vector<int>& rows, int c0, int c1)
+{
+  Surface s;
+  s.name = "slotted plate";
+  s.V.resize((n + 1) * (n + 1), 3);
+  for (int j = 0; j <= n; ++j)
+  {
+    for (int i = 0; i <= n; ++i)
+    {
+      s.V.row(j * (n + 1) + i) << static_cast<double>(i) / n, static_cast<double>(j) / n, 0.0;
+    }
+  }
+  std::vector<Eigen::Vector3i> F;
+  for (int j = 0; j < n; ++j)
+  {
+    for (int i = 0; i < n; ++i)
+    {
+      if (std::count(rows.begin(), rows.end(), j) > 0 && i >= c0 && i < c1)
+      {
+        continue;
+      }
+      const int a = j * (n + 1) + i;
+      F.emplace_back(a, a + 1, a + n + 2);
+      F.emplace_back(a, a + n + 2, a + n + 1);
+    }
+  }
+  s.F.resize(static_cast<Eigen::Index>(F.size()), 3);
+  for (std::size_t f = 0; f < F.size(); ++f)
+  {
+    s.F.row(static_cast<Eigen::Index>(f)) = F[f].transpose();
+  }
+  return s;
+}
+}
+
+TEST(QuadExtraction, AThinStripBetweenTwoSlotsKeepsItsWidth)
+{
+  // The strip between the slots is 0.4 grid cells wide, its sides 6 and 6.4 cells from the
+  // plate's edge: rounded each to its nearest integer, both went to one grid line and the map
+  // flattened the strip onto it (on the truck's body, the strips between the slots of a grille:
+  // their quads ran the slots into one hole). The rounding keeps facing boundary lines apart: the
+  // strip is at least a cell wide.
+  ParameterizationOptions options;
+  options.targetEdgeLength = 1.0 / 16; // 40 mesh cells: 2.5 per grid cell
+  const int n = 40, row = 15, c0 = 10, c1 = 30;
+  const Chain c = runChain(makeSlottedPlate(n, { row - 1, row + 1 }, c0, c1), 0, options);
+  ASSERT_EQ(c.topo.boundaryLoops.size(), 3u);
+  EXPECT_GT(c.map.separatedBoundaryLines, 0) << "the strip's sides should have met on one line";
+  double stripCells = 0.0; // the (u, v) area of the strip's triangles
+  for (int f = 0; f < c.s.F.rows(); ++f)
+  {
+    const Eigen::Vector3d centre =
+      (c.s.V.row(c.s.F(f, 0)) + c.s.V.row(c.s.F(f, 1)) + c.s.V.row(c.s.F(f, 2))) / 3.0;
+    if (centre.y() > static_cast<double>(row) / n && centre.y() < (row + 1.0) / n &&
+      centre.x() > static_cast<double>(c0) / n && centre.x() < static_cast<double>(c1) / n)
+    {
+      const auto t = c.map.cornerUV.row(f);
+      stripCells += 0.5 * ((t[2] - t[0]) * (t[5] - t[1]) - (t[3] - t[1]) * (t[4] - t[0]));
+    }
+  }
+  const double stripLength = (c1 - c0) / (n * options.targetEdgeLength); // in grid cells
+  EXPECT_GT(stripCells, 0.9 * stripLength) << "at least one cell wide along its length";
+  const QuadMesh q = extractQuads(c.s.V, c.s.F, c.topo, c.map.cornerUV);
+  const QuadQuality m = measureQuads(q.V, q.Q);
+  EXPECT_EQ(m.quads, m.faces);
+  EXPECT_EQ(m.nonManifoldEdges, 0);
+  EXPECT_EQ(m.boundaryLoops, 3) << "two slots, two holes";
+  EXPECT_EQ(m.eulerCharacteristic, -1);
 }
 
 TEST(QuadExtraction, AFoldedMapStillGivesAValidMesh)
