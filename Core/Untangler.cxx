@@ -246,11 +246,7 @@ Eigen::VectorXd lbfgsDirection(const std::vector<Eigen::VectorXd>& S,
 }
 
 /// Minimizes the energy (with eps fixed) from y: L-BFGS, 8 pairs, Armijo backtracking, at most
-/// 200 iterations, until an iteration gains less than 1e-7 of the energy. (At 1e-9 armadillo
-/// took a fifth more work at 6,500 quads, 701 against 582 evaluations per triangle, for the same
-/// flips; at 1e-5 a quarter of it, but spot refined 16 times kept two cones closed up beside
-/// points wound twice, as before the held run: the rounds while eps shrinks need it.) Returns
-/// the energy at the new y.
+/// 200 iterations. Returns the energy at the new y.
 double minimize(LocalEnergy& energy, Eigen::VectorXd& y, double eps, const Progress& progress)
 {
   constexpr int Iterations = 200;
@@ -306,7 +302,7 @@ double minimize(LocalEnergy& energy, Eigen::VectorXd& y, double eps, const Progr
     y = yNew;
     g = gNew;
     e = eNew;
-    if (change <= 1e-7 * std::abs(e))
+    if (change <= 1e-9 * std::abs(e))
     {
       break;
     }
