@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <map>
 #include <set>
 #include <stdexcept>
 #include <string>
@@ -101,8 +102,8 @@ public:
           d[c] += t.second * (t.first == j ? value : values[t.first]);
         }
       }
-      const bool met = pair.dims == 2 ? std::abs(d[0]) < 0.5 && std::abs(d[1]) < 0.5
-                                      : pair.order * d[0] < 0.5;
+      const bool met =
+        pair.dims == 2 ? std::abs(d[0]) < 0.5 && std::abs(d[1]) < 0.5 : pair.order * d[0] < 0.5;
       if (complete && met)
       {
         return true;
@@ -197,8 +198,8 @@ private:
         for (int c = 0; c < 2; ++c)
         {
           const Expr& e = sys_.sectorExpr[2 * sa + c];
-          const bool integral = std::all_of(
-            e.begin(), e.end(), [&](const auto& t) { return t.first >= sys_.numReal; });
+          const bool integral =
+            std::all_of(e.begin(), e.end(), [&](const auto& t) { return t.first >= sys_.numReal; });
           if (e.empty() || !integral || e != sys_.sectorExpr[2 * sb + c])
           {
             continue;
@@ -219,9 +220,10 @@ private:
     const std::vector<LineEdge> edges = lineEdges(in, out, uv);
     std::set<std::pair<const Expr*, const Expr*>> seen;
     const double h = out.edgeLength;
+    const std::vector<std::vector<int>> near = nearbyEdges(edges, h);
     for (std::size_t i = 0; i < edges.size(); ++i)
     {
-      for (std::size_t j = i + 1; j < edges.size(); ++j)
+      for (const int j : near[i])
       {
         const LineEdge& a = edges[i];
         const LineEdge& b = edges[j];
@@ -243,6 +245,62 @@ private:
         }
       }
     }
+  }
+
+  /// For each boundary line edge, the later ones (in order) whose middles may lie within
+  /// 2 h + their half lengths of its own, the test addLinePairs makes: a grid of cells of that
+  /// reach over the middles, so that a long boundary does not cost every pair of its edges.
+  static std::vector<std::vector<int>> nearbyEdges(const std::vector<LineEdge>& edges, double h)
+  {
+    double longest = 0.0;
+    for (const LineEdge& e : edges)
+    {
+      longest = std::max(longest, e.length);
+    }
+    const double reach = 2 * h + longest;
+    const bool grid = reach > 0 && std::isfinite(reach); // else one cell: every pair
+    using Cell = std::array<long long, 3>;
+    auto cellOf = [&](const LineEdge& e) {
+      Cell c{ 0, 0, 0 };
+      for (int d = 0; grid && d < 3; ++d)
+      {
+        c[d] = static_cast<long long>(std::floor(e.middle[d] / reach));
+      }
+      return c;
+    };
+    std::vector<std::vector<int>> near(edges.size());
+    std::map<Cell, std::vector<int>> cells;
+    for (std::size_t i = 0; i < edges.size(); ++i)
+    {
+      cells[cellOf(edges[i])].push_back(static_cast<int>(i));
+    }
+    for (std::size_t i = 0; i < edges.size(); ++i)
+    {
+      const Cell c = cellOf(edges[i]);
+      for (long long dx = -1; dx <= 1; ++dx)
+      {
+        for (long long dy = -1; dy <= 1; ++dy)
+        {
+          for (long long dz = -1; dz <= 1; ++dz)
+          {
+            const auto it = cells.find({ c[0] + dx, c[1] + dy, c[2] + dz });
+            if (it == cells.end())
+            {
+              continue;
+            }
+            for (const int j : it->second)
+            {
+              if (j > static_cast<int>(i))
+              {
+                near[i].push_back(j);
+              }
+            }
+          }
+        }
+      }
+      std::sort(near[i].begin(), near[i].end()); // in order, as every pair was before
+    }
+    return near;
   }
 
   /// a - b (in symbols) in integer unknowns: index j for column numReal + j, so that a real

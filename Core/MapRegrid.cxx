@@ -4,6 +4,7 @@
 // back-substitution and a repair: no new factorization.
 #include "ParameterizationSteps.h"
 #include "QuadExtraction.h"
+#include "QuadMeshing.h"
 #include "QuadPatching.h"
 
 #include <algorithm>
@@ -63,24 +64,12 @@ constexpr double SpentTrianglesPerQuad = 10.0;
 bool quadsKeepTopology(
   const Inputs& in, const Eigen::MatrixX2d& uv, const std::vector<int>& cornerSector)
 {
-  Eigen::MatrixXd cornerUV(in.numFaces(), 6);
-  for (int f = 0; f < in.numFaces(); ++f)
-  {
-    for (int k = 0; k < 3; ++k)
-    {
-      cornerUV.block<1, 2>(f, 2 * k) = uv.row(cornerSector[3 * f + k]);
-    }
-  }
-  QuadMesh quads = extractQuads(in.V, in.F, in.topo, cornerUV, QuadExtractionOptions());
+  QuadMesh quads = extractQuads(
+    in.V, in.F, in.topo, cornerUVOf(uv, cornerSector), QuadExtractionOptions());
   patchQuadMesh(in.V, in.F, in.topo, quads);
   // two triangles a quad: the same points, edges but the diagonals, loops and pieces
-  Eigen::MatrixX3i T(2 * quads.Q.rows(), 3);
-  for (Eigen::Index q = 0; q < quads.Q.rows(); ++q)
-  {
-    T.row(2 * q) << quads.Q(q, 0), quads.Q(q, 1), quads.Q(q, 2);
-    T.row(2 * q + 1) << quads.Q(q, 0), quads.Q(q, 2), quads.Q(q, 3);
-  }
-  const MeshTopology topo = buildTopology(T, static_cast<int>(quads.V.rows()));
+  const MeshTopology topo =
+    buildTopology(quadTriangles(quads.Q), static_cast<int>(quads.V.rows()));
   return topo.isManifold() && topo.numComponents() == in.topo.numComponents() &&
     topo.eulerCharacteristic() == in.topo.eulerCharacteristic() &&
     topo.boundaryLoops.size() == in.topo.boundaryLoops.size();

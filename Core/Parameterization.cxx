@@ -108,18 +108,10 @@ void limitEdgeLengthByCurvature(
 }
 
 /// out.sectorUV and cornerUV from the columns' values x.
-void storeMap(
-  const Inputs& in, const SeamlessSystem& sys, const Eigen::VectorXd& x, Parameterization& out)
+void storeMap(const SeamlessSystem& sys, const Eigen::VectorXd& x, Parameterization& out)
 {
   out.sectorUV = sys.uv(x);
-  out.cornerUV.resize(in.numFaces(), 6);
-  for (int f = 0; f < in.numFaces(); ++f)
-  {
-    for (int k = 0; k < 3; ++k)
-    {
-      out.cornerUV.block<1, 2>(f, 2 * k) = out.sectorUV.row(out.cornerSector[3 * f + k]);
-    }
-  }
+  out.cornerUV = cornerUVOf(out.sectorUV, out.cornerSector);
 }
 
 /// out.maxSeamError: how far the translations across the cut are from Z^2.
@@ -158,17 +150,17 @@ void measureSeams(const Inputs& in, Parameterization& out)
 /// quads between them (armadillo's smoothest field at 1,000 quads: 180 singularities, dozens of
 /// pairs within a grid edge, and a map that folds). The frames within a few grid edges of the
 /// changed edges turn to agree with the new matchings (fitFramesToMatchings), the rest held.
-/// Returns the pairs cancelled; frameU and matching are set when there are any.
-int cancelPairsCloserThanGrid(
-  const Inputs& in, double edgeLength, Eigen::MatrixX3d& frameU, Eigen::MatrixX3i& matching)
+/// `given` is the field of in's matchings (evaluateField). Returns the pairs cancelled; frameU
+/// and matching are set when there are any.
+int cancelPairsCloserThanGrid(const Inputs& in, const FrameTopology& given, double edgeLength,
+  Eigen::MatrixX3d& frameU, Eigen::MatrixX3i& matching)
 {
   const double separation = in.options.minimumSingularitySeparation * edgeLength;
   if (!(separation > 0))
   {
     return 0;
   }
-  FrameTopology topology =
-    evaluateMatchings(in.F, in.topo, in.geometry, in.frameU, in.matching);
+  FrameTopology topology = given;
   std::vector<char> changed;
   const int cancelled = cancelClosePairs(
     in.F, in.topo, in.geometry, in.frameU, topology, separation, changed);
@@ -261,15 +253,20 @@ Parameterization computeParameterization(const Eigen::MatrixX3d& V, const Eigen:
     return mapEachComponent(given, progress);
   }
   Parameterization out = startMap(given);
+  Field field = evaluateField(given);
   Eigen::MatrixX3d ownFrames;
   Eigen::MatrixX3i ownMatching;
-  out.cancelledPairs = cancelPairsCloserThanGrid(given, out.edgeLength, ownFrames, ownMatching);
+  out.cancelledPairs =
+    cancelPairsCloserThanGrid(given, field.topology, out.edgeLength, ownFrames, ownMatching);
   const Inputs in = out.cancelledPairs == 0
     ? given
     : Inputs{ V, F, topo, geometry, ownFrames, ownMatching, options };
+  if (out.cancelledPairs > 0)
+  {
+    field = evaluateField(in);
+  }
 
   // ---- the surface cut open through the singular points, the frames combed off the cut ----
-  const Field field = evaluateField(in);
   cutThroughSingularities(in, field, out);
   progress.report(0.03);
   combFrames(in, out);
@@ -322,7 +319,7 @@ Parameterization computeParameterization(const Eigen::MatrixX3d& V, const Eigen:
   out.energyFinal = sys.energy(x);
 
   // ---- the map per corner, and how well it meets the grid ----
-  storeMap(in, sys, x, out);
+  storeMap(sys, x, out);
   measureSeams(in, out);
   countBranchPointsOnGrid(field, out);
   progress.report(1.0);

@@ -172,6 +172,21 @@ inline double twiceUVArea(const Eigen::MatrixX2d& uv, const std::vector<int>& co
 /// The faces whose (u, v) area is not positive.
 std::vector<int> flippedFaces(const Eigen::MatrixX2d& uv, const std::vector<int>& cornerSector);
 
+/// The map per corner (#F x 6: u, v at corners 0, 1, 2) from the map per sector.
+inline Eigen::MatrixXd cornerUVOf(const Eigen::MatrixX2d& uv, const std::vector<int>& cornerSector)
+{
+  const Eigen::Index nf = static_cast<Eigen::Index>(cornerSector.size() / 3);
+  Eigen::MatrixXd cornerUV(nf, 6);
+  for (Eigen::Index f = 0; f < nf; ++f)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      cornerUV.block<1, 2>(f, 2 * k) = uv.row(cornerSector[3 * f + k]);
+    }
+  }
+  return cornerUV;
+}
+
 // ---- solving and rounding (IntegerRounding.cxx) ----
 
 /// H factored once: the continuous solve, and the greedy rounding's conditioning and re-solve.

@@ -121,19 +121,28 @@ bool splitPointsCoincide(const Eigen::MatrixX3d& V, const std::vector<int>& poin
   return true;
 }
 
+Eigen::MatrixX3i quadTriangles(const Eigen::MatrixX4i& Q)
+{
+  Eigen::MatrixX3i T(2 * Q.rows(), 3);
+  for (Eigen::Index i = 0; i < Q.rows(); ++i)
+  {
+    T.row(2 * i) << Q(i, 0), Q(i, 1), Q(i, 2);
+    T.row(2 * i + 1) << Q(i, 0), Q(i, 2), Q(i, 3);
+  }
+  return T;
+}
+
 HausdorffSamples hausdorffSamples(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F,
   const Eigen::MatrixX3d& quadV, const Eigen::MatrixX4i& Q)
 {
   HausdorffSamples s;
-  s.quadTriangles.resize(2 * Q.rows(), 3);
+  s.quadTriangles = quadTriangles(Q);
   s.quadPoints.resize(quadV.rows() + 5 * Q.rows(), 3);
   s.quadPoints.topRows(quadV.rows()) = quadV;
   Eigen::Index next = quadV.rows();
   for (Eigen::Index i = 0; i < Q.rows(); ++i)
   {
     const auto q = Q.row(i);
-    s.quadTriangles.row(2 * i) << q[0], q[1], q[2];
-    s.quadTriangles.row(2 * i + 1) << q[0], q[2], q[3];
     Eigen::RowVector3d centre = Eigen::RowVector3d::Zero();
     for (int k = 0; k < 4; ++k)
     {

@@ -90,6 +90,9 @@ struct HausdorffSamples
   double diagonal = 0.0;
 };
 
+/// Each quad (a, b, c, d) as the triangles (a, b, c) and (a, c, d): 2 #Q x 3.
+Eigen::MatrixX3i quadTriangles(const Eigen::MatrixX4i& Q);
+
 /// @param[in] V, F the surface; @param[in] quadV, Q the quad mesh
 HausdorffSamples hausdorffSamples(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F,
   const Eigen::MatrixX3d& quadV, const Eigen::MatrixX4i& Q);
