@@ -58,12 +58,17 @@ public:
     , progress_(progress)
   {}
 
-  /// Three attempts: the fans wound the wrong way are laid out again (cones first, then in
-  /// later attempts every point listed) and held while their surroundings untangle; then
-  /// everything untangles, those fans free again. Adds the neighbourhoods untangled to regions.
+  /// Up to three attempts: the fans wound the wrong way are laid out again (cones first, then
+  /// in later attempts every point listed) and held while their surroundings untangle; then
+  /// everything untangles, those fans free again. A later attempt that leaves more defects
+  /// than the best before it ends the attempts, and the best is kept (on the shared surfaces a
+  /// later attempt seldom gained and as often lost; one that ties is kept, as before). Adds the
+  /// neighbourhoods untangled to regions.
   void attempts(Eigen::VectorXd& x, Defects& defects, int& regions)
   {
     Eigen::VectorXd xs = sys_.P * x;
+    Eigen::VectorXd bestX;
+    Defects best;
     for (int attempt = 0; attempt < 3 && defects.count() > 0 && !untangler_.spent(); ++attempt)
     {
       // cones first: a point wound twice is usually the neighbour of a cone closed up into
@@ -91,6 +96,14 @@ public:
       }
       regions += untangleRings(16, xs, x, defects.flipped, {});
       defects.wrong = wrongIn(x);
+      if (attempt > 0 && defects.count() > best.count())
+      {
+        x = bestX;
+        defects = best;
+        return;
+      }
+      bestX = x;
+      best = defects;
     }
   }
 
