@@ -75,17 +75,21 @@ bool quadsKeepTopology(
     topo.boundaryLoops.size() == in.topo.boundaryLoops.size();
 }
 
-/// How good a map is, best first: without defects (but flat triangles) and with quads of the
-/// surface's topology; with that topology; without defects; neither. (Without PureQuads the
-/// branch points are off the grid and the cells around them give no quads: only the defects
-/// count.)
-int rank(const Inputs& in, const Defects& defects, const Eigen::MatrixX2d& uv,
+}
+
+// (Without PureQuads the branch points are off the grid and the cells around them give no quads:
+// only the defects count.)
+int mapRank(const Inputs& in, const Defects& defects, const Eigen::MatrixX2d& uv,
   const std::vector<int>& cornerSector)
 {
   const bool clean = defectsBeyondFlat(defects, uv, cornerSector) == 0;
   const bool whole = !in.options.pureQuads || quadsKeepTopology(in, uv, cornerSector);
   return whole ? (clean ? 0 : 1) : (clean ? 2 : 3);
 }
+
+bool rankedByQuads(const Inputs& in, const SeamlessSystem& sys, double edgeLength)
+{
+  return sys.faceArea.sum() / (edgeLength * edgeLength) <= in.options.maximumRegridQuadCount;
 }
 
 void regridDefectiveMap(const Inputs& in, const Field& field, SeamlessSystem& sys,
@@ -98,11 +102,11 @@ void regridDefectiveMap(const Inputs& in, const Field& field, SeamlessSystem& sy
   // a large map keeps its grid: its defects are local, each trial costs a repair of the whole
   // map, and a grid twice as fine (rocker-arm, smoothest field) changed a valid mesh of 6,500
   // quads into one of 13,000 with a quad against the surface
-  if (tries <= 0 || sys.numInteger == 0 || cells > in.options.maximumRegridQuadCount)
+  if (tries <= 0 || sys.numInteger == 0 || !rankedByQuads(in, sys, edgeLength))
   {
     return;
   }
-  int bestRank = rank(in, defects, sys.uv(x), out.cornerSector);
+  int bestRank = mapRank(in, defects, sys.uv(x), out.cornerSector);
   if (bestRank == 0 ||
     (out.untangleBudgetSpent &&
       in.numFaces() > SpentTrianglesPerQuad * in.options.maximumRegridQuadCount))
@@ -160,7 +164,7 @@ void regridDefectiveMap(const Inputs& in, const Field& field, SeamlessSystem& sy
     // still give worse quads (the teapot's spout, smoothest field: 9 defects and valid quads; 1
     // defect at 4 times the quads, a -1/4 cone closed up, and a quad against the surface), so
     // only one without defects (but flat triangles) or one whose quads keep the topology does
-    const int trialRank = rank(trialIn, found, sys.uv(xt), trial.cornerSector);
+    const int trialRank = mapRank(trialIn, found, sys.uv(xt), trial.cornerSector);
     if (trialRank < bestRank)
     {
       bestRank = trialRank;

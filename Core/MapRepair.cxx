@@ -56,19 +56,21 @@ public:
         Untangler::DefaultTheta,
         in.options.numberOfThreads }
     , progress_(progress)
+    , rankedByQuads_(rankedByQuads(in, sys, out.edgeLength))
   {}
 
   /// Up to three attempts: the fans wound the wrong way are laid out again (cones first, then
   /// in later attempts every point listed) and held while their surroundings untangle; then
-  /// everything untangles, those fans free again. A later attempt that leaves more defects
-  /// than the best before it ends the attempts, and the best is kept (on the shared surfaces a
-  /// later attempt seldom gained and as often lost; one that ties is kept, as before). Adds the
+  /// everything untangles, those fans free again. The best attempt is kept, a later one on a
+  /// tie (score). On a large map an attempt worse than the best before it ends the attempts:
+  /// on the shared surfaces a later attempt seldom gained and as often lost. Adds the
   /// neighbourhoods untangled to regions.
   void attempts(Eigen::VectorXd& x, Defects& defects, int& regions)
   {
     Eigen::VectorXd xs = sys_.P * x;
     Eigen::VectorXd bestX;
     Defects best;
+    std::pair<int, std::size_t> bestScore;
     for (int attempt = 0; attempt < 3 && defects.count() > 0 && !untangler_.spent(); ++attempt)
     {
       // cones first: a point wound twice is usually the neighbour of a cone closed up into
@@ -96,14 +98,23 @@ public:
       }
       regions += untangleRings(16, xs, x, defects.flipped, {});
       defects.wrong = wrongIn(x);
-      if (attempt > 0 && defects.count() > best.count())
+      const std::pair<int, std::size_t> attemptScore = score(x, defects);
+      if (attempt > 0 && attemptScore > bestScore)
       {
-        x = bestX;
-        defects = best;
-        return;
+        if (!rankedByQuads_)
+        {
+          break;
+        }
+        continue;
       }
       bestX = x;
       best = defects;
+      bestScore = attemptScore;
+    }
+    if (bestX.size() > 0)
+    {
+      x = bestX;
+      defects = best;
     }
   }
 
@@ -113,19 +124,28 @@ public:
   /// Freed, a fan laid out again can close up once more as its surroundings untangle (on fine
   /// meshes a cone's fan is small against a grid cell); held, it cannot, though its
   /// surroundings may then keep folds. This runs the first attempt again with its fans held
-  /// throughout; the run with fewer defects wins.
+  /// throughout; the better run (score) wins, the first on a tie.
   void heldRun(Eigen::VectorXd& x, Defects& defects, int& regions)
   {
     Snapshot& held = firstHeld_;
     const int heldRegions = untangleRings(16, held.xs, held.xr, held.flipped, held.frozen);
-    std::vector<int> heldWrong = wrongIn(held.xr);
-    if (held.flipped.size() + heldWrong.size() < defects.count())
+    Defects heldDefects{ held.flipped, wrongIn(held.xr) };
+    if (score(held.xr, heldDefects) < score(x, defects))
     {
       x = held.xr;
-      defects.flipped = held.flipped;
-      defects.wrong = std::move(heldWrong);
+      defects = std::move(heldDefects);
       regions = heldRegions;
     }
+  }
+
+  /// How good the map x is, lower better: its defects, and before them, on a map small enough to
+  /// cut its quads out, its rank (mapRank: whether its quads keep the surface's topology). Fewer
+  /// defects can still give worse quads: on a piece of the truck of genus 3 (16 cones) the
+  /// repair took a map of 23 defects whose quads keep the handles to one of 8 that loses them.
+  std::pair<int, std::size_t> score(const Eigen::VectorXd& x, const Defects& d) const
+  {
+    const int r = rankedByQuads_ ? mapRank(in_, d, sys_.uv(x), out_.cornerSector) : 0;
+    return { r, d.count() };
   }
 
 private:
@@ -269,6 +289,7 @@ private:
   /// How many untangling runs there will be is not known beforehand: run k of the repair gets
   /// the part halving(progress_, k).
   const Progress progress_;
+  const bool rankedByQuads_; // attempts ranked by their quads' topology first
   int runs_ = 0;
 };
 }
@@ -309,7 +330,7 @@ void repairMap(const Inputs& in, const Field& field, const SeamlessSystem& sys, 
   }
   const auto started = std::chrono::steady_clock::now();
   MapRepair repair(in, field, sys, out, progress);
-  // kept in case the repair leaves more flipped triangles and wrong fans than it found
+  // kept in case the repair leaves a map that scores worse than the one it was given
   const Eigen::VectorXd before = x;
   const Defects found = defects;
   repair.attempts(x, defects, out.untangleRegions);
@@ -325,7 +346,7 @@ void repairMap(const Inputs& in, const Field& field, const SeamlessSystem& sys, 
     // ran: there were defects.)
     repair.heldRun(x, defects, out.untangleRegions);
   }
-  if (defects.count() > found.count())
+  if (repair.score(before, found) < repair.score(x, defects))
   {
     x = before;
     defects = found;

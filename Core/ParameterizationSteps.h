@@ -235,13 +235,26 @@ struct Defects
 std::vector<int> wrongWindings(
   const Inputs& in, const Field& field, const Parameterization& out, const Eigen::MatrixX2d& uv);
 
-/// Untangles the flipped triangles of x and lays out again the fans wound the wrong way (three
-/// attempts and a held run), keeping x as it was when the repair leaves more defects than it
-/// found; updates `defects` and out.untangleRegions, untangleSeconds.
+/// Untangles the flipped triangles of x and lays out again the fans wound the wrong way (up to
+/// three attempts and a held run), keeping the best map: the one with the fewest defects, or on
+/// a map small enough to cut its quads out (rankedByQuads) the best by mapRank first; x as it
+/// was if the repair found no better; updates `defects` and out.untangleRegions,
+/// untangleSeconds.
 void repairMap(const Inputs& in, const Field& field, const SeamlessSystem& sys, Eigen::VectorXd& x,
   Defects& defects, Parameterization& out, const Progress& progress);
 
 // ---- maps that keep defects (MapRegrid.cxx) ----
+
+/// How good the map uv is, best first: 0 without defects (but flat triangles, a sliver laid on a
+/// line) and with quads (cut out and patched as the quad stage does) of the surface's topology;
+/// 1 with that topology; 2 without defects; 3 neither. Without PureQuads the topology is not
+/// checked.
+int mapRank(const Inputs& in, const Defects& defects, const Eigen::MatrixX2d& uv,
+  const std::vector<int>& cornerSector);
+
+/// Is the map small enough (at most maximumRegridQuadCount grid cells) that its quads are cut out
+/// to rank it (mapRank) and that other grids are tried for it?
+bool rankedByQuads(const Inputs& in, const SeamlessSystem& sys, double edgeLength);
 
 /// When the repaired map x still has defects, or its quads (cut out and patched as the quad stage
 /// does) would not have the surface's topology: rounds the continuous minimizer `continuous` at
