@@ -109,28 +109,40 @@ struct HalfEdge
 
 /// The half-edges of the non-degenerate triangles sorted by their unordered vertex pair (then by
 /// corner), so that the half-edges of one edge follow each other. A triangle that repeats a vertex
-/// has no edges: it would only corrupt its neighbours'.
+/// has no edges: it would only corrupt its neighbours'. Every index is in [0, numVertices).
 std::vector<HalfEdge> sortedHalfEdges(
-  const Eigen::MatrixX3i& F, const std::vector<char>& degenerate)
+  const Eigen::MatrixX3i& F, const std::vector<char>& degenerate, int numVertices)
 {
+  // bucketed by the lower vertex in corner order (a counting sort), then each bucket, a few
+  // half-edges, sorted by the higher vertex and corner: the order of one sort by (a, b, corner)
+  // in linear time
   const int nf = static_cast<int>(F.rows());
-  std::vector<HalfEdge> he;
-  he.reserve(3 * static_cast<size_t>(nf));
+  std::vector<int> offset(static_cast<size_t>(numVertices) + 1, 0);
   for (int f = 0; f < nf; ++f)
   {
-    if (degenerate[f])
+    for (int k = 0; k < 3 && !degenerate[f]; ++k)
     {
-      continue;
-    }
-    for (int k = 0; k < 3; ++k)
-    {
-      const int p = F(f, k), q = F(f, (k + 1) % 3);
-      he.push_back({ std::min(p, q), std::max(p, q), 3 * f + k });
+      ++offset[std::min(F(f, k), F(f, (k + 1) % 3)) + 1];
     }
   }
-  std::sort(he.begin(), he.end(), [](const HalfEdge& x, const HalfEdge& y) {
-    return x.a != y.a ? x.a < y.a : (x.b != y.b ? x.b < y.b : x.corner < y.corner);
-  });
+  std::partial_sum(offset.begin(), offset.end(), offset.begin());
+  std::vector<HalfEdge> he(static_cast<size_t>(offset.back()));
+  std::vector<int> next(offset.begin(), offset.end() - 1);
+  for (int f = 0; f < nf; ++f)
+  {
+    for (int k = 0; k < 3 && !degenerate[f]; ++k)
+    {
+      const int p = F(f, k), q = F(f, (k + 1) % 3);
+      he[next[std::min(p, q)]++] = { std::min(p, q), std::max(p, q), 3 * f + k };
+    }
+  }
+  for (int v = 0; v < numVertices; ++v)
+  {
+    std::sort(he.begin() + offset[v], he.begin() + offset[v + 1],
+      [](const HalfEdge& x, const HalfEdge& y) {
+        return x.b != y.b ? x.b < y.b : x.corner < y.corner;
+      });
+  }
   return he;
 }
 
@@ -139,7 +151,7 @@ std::vector<HalfEdge> sortedHalfEdges(
 void buildEdges(const Eigen::MatrixX3i& F, const std::vector<char>& degenerate, MeshTopology& T)
 {
   const int nf = T.numFaces;
-  const std::vector<HalfEdge> he = sortedHalfEdges(F, degenerate);
+  const std::vector<HalfEdge> he = sortedHalfEdges(F, degenerate, T.numVertices);
   T.faceEdges.setConstant(nf, 3, -1);
   T.faceNeighbors.setConstant(nf, 3, -1);
   std::vector<Eigen::Vector2i> edgeList;

@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdint>
 #include <map>
 #include <numeric>
 #include <stdexcept>
@@ -43,20 +44,23 @@ int head(const Eigen::MatrixX3i& F, int c)
 EdgeGroups groupEdges(const Eigen::MatrixX3i& F)
 {
   const int nc = 3 * static_cast<int>(F.rows());
-  auto key = [&](int c) {
+  // (the edge's point pair as one number, the corner), sorted: contiguous keys sort several
+  // times faster than keys looked up in F at every comparison
+  std::vector<std::pair<std::uint64_t, int>> keyed(nc);
+  for (int c = 0; c < nc; ++c)
+  {
     const int p = tail(F, c), q = head(F, c);
-    return std::make_pair(std::min(p, q), std::max(p, q));
-  };
+    const auto low = static_cast<std::uint64_t>(static_cast<std::uint32_t>(std::min(p, q)));
+    const auto high = static_cast<std::uint64_t>(static_cast<std::uint32_t>(std::max(p, q)));
+    keyed[c] = { (low << 32) | high, c };
+  }
+  std::sort(keyed.begin(), keyed.end());
   EdgeGroups groups;
   groups.corners.resize(nc);
-  std::iota(groups.corners.begin(), groups.corners.end(), 0);
-  std::sort(groups.corners.begin(), groups.corners.end(), [&](int x, int y) {
-    const auto kx = key(x), ky = key(y);
-    return kx != ky ? kx < ky : x < y;
-  });
   for (int i = 0; i < nc; ++i)
   {
-    if (i == 0 || key(groups.corners[i]) != key(groups.corners[i - 1]))
+    groups.corners[i] = keyed[i].second;
+    if (i == 0 || keyed[i].first != keyed[i - 1].first)
     {
       groups.offsets.push_back(i);
     }
