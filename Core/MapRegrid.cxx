@@ -74,7 +74,6 @@ bool quadsKeepTopology(
     topo.eulerCharacteristic() == in.topo.eulerCharacteristic() &&
     topo.boundaryLoops.size() == in.topo.boundaryLoops.size();
 }
-
 }
 
 // (Without PureQuads the branch points are off the grid and the cells around them give no quads:

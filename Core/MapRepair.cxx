@@ -56,15 +56,16 @@ public:
         Untangler::DefaultTheta,
         in.options.numberOfThreads }
     , progress_(progress)
-    , rankedByQuads_(rankedByQuads(in, sys, out.edgeLength))
+    , rankedByQuads_(in.options.roundingMode != RoundingMode::None && sys.numInteger > 0 &&
+        rankedByQuads(in, sys, out.edgeLength))
   {}
 
   /// Up to three attempts: the fans wound the wrong way are laid out again (cones first, then
   /// in later attempts every point listed) and held while their surroundings untangle; then
-  /// everything untangles, those fans free again. The best attempt is kept, a later one on a
-  /// tie (score). On a large map an attempt worse than the best before it ends the attempts:
-  /// on the shared surfaces a later attempt seldom gained and as often lost. Adds the
-  /// neighbourhoods untangled to regions.
+  /// everything untangles, those fans free again. Each attempt goes on from the map the one
+  /// before left; the best attempt is kept, a later one on a tie (score). On a large map an
+  /// attempt worse than the best before it ends the attempts: on the shared surfaces a later
+  /// attempt seldom gained and as often lost. Adds the neighbourhoods untangled to regions.
   void attempts(Eigen::VectorXd& x, Defects& defects, int& regions)
   {
     Eigen::VectorXd xs = sys_.P * x;
@@ -124,10 +125,15 @@ public:
   /// Freed, a fan laid out again can close up once more as its surroundings untangle (on fine
   /// meshes a cone's fan is small against a grid cell); held, it cannot, though its
   /// surroundings may then keep folds. This runs the first attempt again with its fans held
-  /// throughout; the better run (score) wins, the first on a tie.
+  /// throughout; the better run (score) wins, the attempts' map on a tie. (Nothing to run when
+  /// no attempt ran: the budget was spent before the first.)
   void heldRun(Eigen::VectorXd& x, Defects& defects, int& regions)
   {
     Snapshot& held = firstHeld_;
+    if (held.xr.size() == 0)
+    {
+      return;
+    }
     const int heldRegions = untangleRings(16, held.xs, held.xr, held.flipped, held.frozen);
     Defects heldDefects{ held.flipped, wrongIn(held.xr) };
     if (score(held.xr, heldDefects) < score(x, defects))
@@ -138,8 +144,9 @@ public:
     }
   }
 
-  /// How good the map x is, lower better: its defects, and before them, on a map small enough to
-  /// cut its quads out, its rank (mapRank: whether its quads keep the surface's topology). Fewer
+  /// How good the map x is, lower better: its defects, and before them, on a rounded map small
+  /// enough to cut its quads out, its rank (mapRank: whether its quads keep the surface's
+  /// topology, then whether it has defects but flat triangles). Fewer
   /// defects can still give worse quads: on a piece of the truck of genus 3 (16 cones) the
   /// repair took a map of 23 defects whose quads keep the handles to one of 8 that loses them.
   std::pair<int, std::size_t> score(const Eigen::VectorXd& x, const Defects& d) const
