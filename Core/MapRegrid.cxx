@@ -91,7 +91,15 @@ bool rankedByQuads(const Inputs& in, const SeamlessSystem& sys, double edgeLengt
   return sys.faceArea.sum() / (edgeLength * edgeLength) <= in.options.maximumRegridQuadCount;
 }
 
-void regridDefectiveMap(const Inputs& in, const Field& field, SeamlessSystem& sys,
+int regridTrials(const Inputs& in, const SeamlessSystem& sys, double edgeLength)
+{
+  const int tries = std::min(in.options.maximumRegrids, static_cast<int>(std::size(QuadFactors)));
+  const bool trialsFollow = tries > 0 && sys.numInteger > 0 && rankedByQuads(in, sys, edgeLength) &&
+    in.numFaces() <= SpentTrianglesPerQuad * in.options.maximumRegridQuadCount;
+  return trialsFollow ? tries : 0;
+}
+
+bool regridDefectiveMap(const Inputs& in, const Field& field, SeamlessSystem& sys,
   const HessianFactor& factor, const Eigen::VectorXd& continuous, bool greedy, Eigen::VectorXd& x,
   Defects& defects, Parameterization& out, const Progress& progress)
 {
@@ -103,14 +111,14 @@ void regridDefectiveMap(const Inputs& in, const Field& field, SeamlessSystem& sy
   // quads into one of 13,000 with a quad against the surface
   if (tries <= 0 || sys.numInteger == 0 || !rankedByQuads(in, sys, edgeLength))
   {
-    return;
+    return false;
   }
   int bestRank = mapRank(in, defects, sys.uv(x), out.cornerSector);
   if (bestRank == 0 ||
     (out.untangleBudgetSpent &&
       in.numFaces() > SpentTrianglesPerQuad * in.options.maximumRegridQuadCount))
   {
-    return;
+    return false;
   }
   // the trials share one repair's untangling budget: a map that no grid can repair (the
   // teapot's sliver cone) costs at most twice the time, not seven times
@@ -179,6 +187,7 @@ void regridDefectiveMap(const Inputs& in, const Field& field, SeamlessSystem& sy
   sys.rhs = rhs * bestScale;
   sys.energyNorm = energyNorm * bestScale * bestScale;
   progress.report(1.0);
+  return bestScale != 1.0;
 }
 }
 }

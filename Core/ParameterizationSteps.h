@@ -257,6 +257,11 @@ int mapRank(const Inputs& in, const Defects& defects, const Eigen::MatrixX2d& uv
 /// to rank it (mapRank) and that other grids are tried for it?
 bool rankedByQuads(const Inputs& in, const SeamlessSystem& sys, double edgeLength);
 
+/// How many other grids regridDefectiveMap tries for the map (of edge length edgeLength) if its
+/// repair leaves it defective, whatever that repair spent: 0 for a large map or a surface of more
+/// than 10 maximumRegridQuadCount triangles (there a spent budget stops the trials).
+int regridTrials(const Inputs& in, const SeamlessSystem& sys, double edgeLength);
+
 /// When the repaired map x still has defects, or its quads (cut out and patched as the quad stage
 /// does) would not have the surface's topology: rounds the continuous minimizer `continuous` at
 /// other grid sizes (ParameterizationOptions::maximumRegrids of 2, 1/2, 4, 1/4, 8, 16 times the
@@ -267,7 +272,8 @@ bool rankedByQuads(const Inputs& in, const SeamlessSystem& sys, double edgeLengt
 /// and sys is left scaled for it. Not when the first repair spent its untangling budget on a
 /// surface of more than 10 maximumRegridQuadCount triangles, nor for maps of more than
 /// maximumRegridQuadCount quads. Counts the grids tried in out.regrids.
-void regridDefectiveMap(const Inputs& in, const Field& field, SeamlessSystem& sys,
+/// @return whether another grid's map replaced the first
+bool regridDefectiveMap(const Inputs& in, const Field& field, SeamlessSystem& sys,
   const HessianFactor& factor, const Eigen::VectorXd& continuous, bool greedy, Eigen::VectorXd& x,
   Defects& defects, Parameterization& out, const Progress& progress);
 }
