@@ -27,6 +27,12 @@ namespace
 /// quads long, a strip whose fans wound the wrong way until the grid was 8 times finer).
 constexpr double QuadFactors[] = { 2.0, 0.5, 4.0, 0.25, 8.0, 16.0 };
 
+/// How many of QuadFactors are tried at most.
+int maximumTries(const Inputs& in)
+{
+  return std::max(0, std::min(in.options.maximumRegrids, static_cast<int>(std::size(QuadFactors))));
+}
+
 /// The defects of map uv that are not flat triangles: a flipped triangle whose (u, v) area is at
 /// most QuadExtractionOptions::flatTolerance times its longest (u, v) edge squared is a sliver
 /// that the map lays on a line (between a boundary's grid line and a branch point on it, say),
@@ -64,12 +70,11 @@ constexpr double SpentTrianglesPerQuad = 10.0;
 bool quadsKeepTopology(
   const Inputs& in, const Eigen::MatrixX2d& uv, const std::vector<int>& cornerSector)
 {
-  QuadMesh quads = extractQuads(
-    in.V, in.F, in.topo, cornerUVOf(uv, cornerSector), QuadExtractionOptions());
+  QuadMesh quads =
+    extractQuads(in.V, in.F, in.topo, cornerUVOf(uv, cornerSector), QuadExtractionOptions());
   patchQuadMesh(in.V, in.F, in.topo, quads);
   // two triangles a quad: the same points, edges but the diagonals, loops and pieces
-  const MeshTopology topo =
-    buildTopology(quadTriangles(quads.Q), static_cast<int>(quads.V.rows()));
+  const MeshTopology topo = buildTopology(quadTriangles(quads.Q), static_cast<int>(quads.V.rows()));
   return topo.isManifold() && topo.numComponents() == in.topo.numComponents() &&
     topo.eulerCharacteristic() == in.topo.eulerCharacteristic() &&
     topo.boundaryLoops.size() == in.topo.boundaryLoops.size();
@@ -88,28 +93,28 @@ int mapRank(const Inputs& in, const Defects& defects, const Eigen::MatrixX2d& uv
 
 bool rankedByQuads(const Inputs& in, const SeamlessSystem& sys, double edgeLength)
 {
-  return sys.faceArea.sum() / (edgeLength * edgeLength) <= in.options.maximumRegridQuadCount;
+  return in.options.roundingMode != RoundingMode::None && sys.numInteger > 0 &&
+    sys.faceArea.sum() / (edgeLength * edgeLength) <= in.options.maximumRegridQuadCount;
 }
 
 int regridTrials(const Inputs& in, const SeamlessSystem& sys, double edgeLength)
 {
-  const int tries = std::min(in.options.maximumRegrids, static_cast<int>(std::size(QuadFactors)));
-  const bool trialsFollow = tries > 0 && sys.numInteger > 0 && rankedByQuads(in, sys, edgeLength) &&
+  const bool trialsFollow = rankedByQuads(in, sys, edgeLength) &&
     in.numFaces() <= SpentTrianglesPerQuad * in.options.maximumRegridQuadCount;
-  return trialsFollow ? tries : 0;
+  return trialsFollow ? maximumTries(in) : 0;
 }
 
 bool regridDefectiveMap(const Inputs& in, const Field& field, SeamlessSystem& sys,
   const HessianFactor& factor, const Eigen::VectorXd& continuous, bool greedy, Eigen::VectorXd& x,
   Defects& defects, Parameterization& out, const Progress& progress)
 {
-  const int tries = std::min(in.options.maximumRegrids, static_cast<int>(std::size(QuadFactors)));
+  const int tries = maximumTries(in);
   const double edgeLength = out.edgeLength;
   const double cells = sys.faceArea.sum() / (edgeLength * edgeLength);
   // a large map keeps its grid: its defects are local, each trial costs a repair of the whole
   // map, and a grid twice as fine (rocker-arm, smoothest field) changed a valid mesh of 6,500
   // quads into one of 13,000 with a quad against the surface
-  if (tries <= 0 || sys.numInteger == 0 || !rankedByQuads(in, sys, edgeLength))
+  if (tries <= 0 || !rankedByQuads(in, sys, edgeLength))
   {
     return false;
   }

@@ -53,11 +53,9 @@ public:
     , given_(static_cast<long long>(in.options.untangleWork) * in.numFaces())
     , work_(given_)
     , untangler_{ Dr_, sys.D, sqrtArea_, out.edgeLength, sys.numReal, &work_,
-        Untangler::DefaultTheta,
-        in.options.numberOfThreads }
+      Untangler::DefaultTheta, in.options.numberOfThreads }
     , progress_(progress)
-    , rankedByQuads_(in.options.roundingMode != RoundingMode::None && sys.numInteger > 0 &&
-        rankedByQuads(in, sys, out.edgeLength))
+    , rankedByQuads_(rankedByQuads(in, sys, out.edgeLength))
   {}
 
   /// Up to three attempts: the fans wound the wrong way are laid out again (cones first, then

@@ -162,15 +162,15 @@ int cancelPairsCloserThanGrid(const Inputs& in, const FrameTopology& given, doub
   }
   FrameTopology topology = given;
   std::vector<char> changed;
-  const int cancelled = cancelClosePairs(
-    in.F, in.topo, in.geometry, in.frameU, topology, separation, changed);
+  const int cancelled =
+    cancelClosePairs(in.F, in.topo, in.geometry, in.frameU, topology, separation, changed);
   if (cancelled == 0)
   {
     return 0;
   }
   // free: the faces within 2 separations (in rings of the reference length) of a changed edge
-  const int rings = 2 + static_cast<int>(std::ceil(
-    2.0 * separation / std::max(in.geometry.referenceLength, 1e-300)));
+  const int rings = 2 +
+    static_cast<int>(std::ceil(2.0 * separation / std::max(in.geometry.referenceLength, 1e-300)));
   std::vector<char> held(in.F.rows(), 1);
   std::vector<int> front;
   for (int f = 0; f < in.numFaces(); ++f)
@@ -344,8 +344,8 @@ Parameterization computeParameterization(const Eigen::MatrixX3d& V, const Eigen:
 
   // ---- flipped triangles untangled, fans wound the wrong way laid out again ----
   defects.wrong = wrongWindings(in, field, out, sys.uv(x));
-  repairFirstThenRegrid(in, field, sys, factor, continuous, greedy, round, x, defects, out,
-    progress.part(0.6, 0.98));
+  repairFirstThenRegrid(
+    in, field, sys, factor, continuous, greedy, round, x, defects, out, progress.part(0.6, 0.98));
   out.wrongWindings = static_cast<int>(defects.wrong.size());
   out.flipped = static_cast<int>(defects.flipped.size());
   out.energyFinal = sys.energy(x);

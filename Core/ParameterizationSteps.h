@@ -253,8 +253,9 @@ void repairMap(const Inputs& in, const Field& field, const SeamlessSystem& sys, 
 int mapRank(const Inputs& in, const Defects& defects, const Eigen::MatrixX2d& uv,
   const std::vector<int>& cornerSector);
 
-/// Is the map small enough (at most maximumRegridQuadCount grid cells) that its quads are cut out
-/// to rank it (mapRank) and that other grids are tried for it?
+/// Is the map rounded (integer unknowns, a RoundingMode) and small enough (at most
+/// maximumRegridQuadCount grid cells) that its quads are cut out to rank it (mapRank) and that
+/// other grids are tried for it?
 bool rankedByQuads(const Inputs& in, const SeamlessSystem& sys, double edgeLength);
 
 /// How many other grids regridDefectiveMap tries for the map (of edge length edgeLength) if its
