@@ -2,8 +2,14 @@
 // component with its own edge length, put together.
 #include "ParameterizationSteps.h"
 
+#include "Parallel.h"
+
 #include <algorithm>
+#include <atomic>
 #include <cmath>
+#include <exception>
+#include <numeric>
+#include <thread>
 
 namespace quadcover
 {
@@ -142,11 +148,121 @@ void addComponent(const Inputs& in, const Component& part, const MeshTopology& t
   out.solveSeconds.insert(out.solveSeconds.end(), map.solveSeconds.begin(), map.solveSeconds.end());
   out.solver = map.solver;
 }
+
+/// A component's topology and map.
+struct ComponentMap
+{
+  MeshTopology topo;
+  Parameterization map;
+};
+
+/**
+ * The maps of the components, on several threads (options.numberOfThreads): the components are
+ * independent, so each map is what it would be on one thread. The largest components go first
+ * (no thread is left with a large one at the end); the calling thread reports progress by the
+ * share of triangles mapped, and when it is cancelled the other threads stop at their next
+ * report. A component whose map fails does not stop the others: the failure of the first such
+ * component is thrown, as on one thread.
+ */
+std::vector<ComponentMap> mapComponents(
+  const Inputs& in, const std::vector<Component>& parts, const Progress& progress)
+{
+  double totalArea = 0.0;
+  for (const Component& part : parts)
+  {
+    totalArea += part.area;
+  }
+  std::vector<int> order(parts.size());
+  std::iota(order.begin(), order.end(), 0);
+  std::stable_sort(order.begin(), order.end(),
+    [&](int a, int b) { return parts[a].faces.size() > parts[b].faces.size(); });
+  std::vector<ComponentMap> maps(parts.size());
+  std::vector<std::exception_ptr> failed(parts.size());
+  std::atomic<std::size_t> next{ 0 };
+  std::atomic<long long> facesDone{ 0 };
+  std::atomic<bool> stop{ false };
+  const Progress stoppable([&stop](double) { return !stop.load(); });
+  double reported = 0.0; // the calling thread's last fraction: it only grows
+  auto work = [&](bool calling) {
+    for (std::size_t n = next++; n < order.size() && !stop; n = next++)
+    {
+      const int c = order[n];
+      const Component& part = parts[c];
+      const double share = static_cast<double>(part.faces.size()) / in.numFaces();
+      try
+      {
+        const MeshTopology& topo = maps[c].topo =
+          buildTopology(part.F, static_cast<int>(part.V.rows()));
+        const FrameGeometry geometry = computeFrameGeometry(part.V, part.F, topo);
+        const ParameterizationOptions options =
+          componentOptions(in.options, part.area, totalArea, topo);
+        maps[c].map = computeParameterization(part.V, part.F, topo, geometry, part.frameU,
+          part.matching, options, calling ? progress.part(reported, reported + share) : stoppable);
+      }
+      catch (const Cancelled&)
+      {
+        if (calling)
+        {
+          throw; // cancelled by the caller: the other threads stop too (below)
+        }
+        return; // stopped because the calling thread was cancelled
+      }
+      catch (...)
+      {
+        // the others go on, so that the failure thrown is the first in component order, as on
+        // one thread
+        failed[c] = std::current_exception();
+        continue;
+      }
+      facesDone += static_cast<long long>(part.faces.size());
+      if (calling)
+      {
+        // what the other threads finished meanwhile counts too
+        reported = std::max(reported + share, static_cast<double>(facesDone) / in.numFaces());
+        progress.report(reported);
+      }
+    }
+  };
+  const int wanted =
+    in.options.numberOfThreads > 0 ? in.options.numberOfThreads : defaultThreadCount();
+  const int threads = std::max(1, std::min(wanted, static_cast<int>(parts.size())));
+  std::vector<std::thread> workers;
+  for (int t = 1; t < threads; ++t)
+  {
+    workers.emplace_back([&work]() { work(false); });
+  }
+  try
+  {
+    work(true);
+  }
+  catch (...) // cancelled
+  {
+    stop = true;
+    for (std::thread& w : workers)
+    {
+      w.join();
+    }
+    throw;
+  }
+  for (std::thread& w : workers)
+  {
+    w.join();
+  }
+  for (const std::exception_ptr& e : failed)
+  {
+    if (e)
+    {
+      std::rethrow_exception(e);
+    }
+  }
+  return maps;
+}
 }
 
 Parameterization mapEachComponent(const Inputs& in, const Progress& progress)
 {
   const std::vector<Component> parts = splitComponents(in);
+  const std::vector<ComponentMap> maps = mapComponents(in, parts, progress);
   double totalArea = 0.0, largest = -1.0;
   for (const Component& part : parts)
   {
@@ -160,20 +276,11 @@ Parameterization mapEachComponent(const Inputs& in, const Progress& progress)
   out.cornerSector.assign(3 * static_cast<size_t>(in.numFaces()), -1);
   out.cut.onCut.assign(in.topo.numEdges(), 0);
   out.cut.copies.assign(in.numVertices(), 0);
-  std::vector<Eigen::MatrixX2d> sectorUV; // per component, put together once at the end
-  double done = 0.0;
-  for (const Component& part : parts)
+  for (std::size_t c = 0; c < parts.size(); ++c)
   {
-    const MeshTopology topo = buildTopology(part.F, static_cast<int>(part.V.rows()));
-    const FrameGeometry geometry = computeFrameGeometry(part.V, part.F, topo);
-    const ParameterizationOptions options =
-      componentOptions(in.options, part.area, totalArea, topo);
-    const double share = static_cast<double>(part.faces.size()) / in.numFaces();
-    const Parameterization map = computeParameterization(part.V, part.F, topo, geometry,
-      part.frameU, part.matching, options, progress.part(done, done + share));
-    done += share;
-    addComponent(in, part, topo, map, out);
-    sectorUV.push_back(map.sectorUV);
+    const Component& part = parts[c];
+    const Parameterization& map = maps[c].map;
+    addComponent(in, part, maps[c].topo, map, out);
     // energies are per unit area: the whole surface's is the area-weighted mean
     const double weight = part.area / totalArea;
     out.energyContinuous += weight * map.energyContinuous;
@@ -187,10 +294,10 @@ Parameterization mapEachComponent(const Inputs& in, const Progress& progress)
   }
   out.sectorUV.resize(static_cast<Eigen::Index>(out.sectorPoint.size()), 2);
   Eigen::Index row = 0;
-  for (const Eigen::MatrixX2d& uv : sectorUV)
+  for (const ComponentMap& m : maps)
   {
-    out.sectorUV.middleRows(row, uv.rows()) = uv;
-    row += uv.rows();
+    out.sectorUV.middleRows(row, m.map.sectorUV.rows()) = m.map.sectorUV;
+    row += m.map.sectorUV.rows();
   }
   progress.report(1.0);
   return out;

@@ -67,7 +67,8 @@ struct ParameterizationOptions
   /// (A budget of 2,500 cut those short, but also the repair of small components that their
   /// trials on other grids then put right: Data/components.obj's small tori.)
   int untangleWork = 10000;
-  /// Worker threads of the untangling (0: defaultThreadCount()). Results do not depend on it.
+  /// Worker threads of the untangling and of the maps of a surface's components, each on its own
+  /// (0: defaultThreadCount()). Results do not depend on it.
   /// The same concept as CurvatureOptions::numberOfThreads, and its default.
   int numberOfThreads = 0;
   /// Each component of the surface gets a map of its own, with at least this many quads for each

@@ -163,8 +163,8 @@ public:
   ///@}
 
   ///@{
-  /** Number of threads for the untangling, 0 for all cores (default 0). The result does not
-   * depend on it. */
+  /** Number of threads for the untangling and for the maps of the components (each component
+   * on its own), 0 for all cores (default 0). The result does not depend on it. */
   vtkSetClampMacro(NumberOfThreads, int, 0, 1024);
   vtkGetMacro(NumberOfThreads, int);
   ///@}

@@ -302,7 +302,7 @@ std::vector<Option> StageOptions(Pipeline& p)
     QC_NUMBER("curvature", curvature, NeighborhoodRadius,
       "radius of the curvature neighbourhood, in median edge lengths"),
     QC_NUMBER2("curvature", curvature, solver, NumberOfThreads,
-      "worker threads (curvature, untangling), 0 for all cores"),
+      "worker threads (curvature, maps of components, untangling), 0 for all cores"),
     QC_SWITCH("curvature", curvature, UseInputFrames,
       "use a FrameU cell array of the input as the guidance field"),
     QC_NUMBER(
