@@ -62,11 +62,13 @@ Steps pathSteps(const Eigen::MatrixX3i& F, const MeshTopology& topo)
 /// What one edge's deviation counts for (BranchPointOptions::lengthScaled).
 double edgeWeight(const FrameGeometry& geometry, const Step& s, bool lengthScaled)
 {
-  if (!lengthScaled || !(geometry.referenceLength > 0) || geometry.edgeLength.rows() == 0)
+  const double reference =
+    geometry.componentReferenceLength.size() > 0 ? geometry.componentReferenceLength[s.g] : 0.0;
+  if (!lengthScaled || !(reference > 0) || geometry.edgeLength.rows() == 0)
   {
     return 1.0;
   }
-  return geometry.edgeLength(s.g, s.kg) / geometry.referenceLength;
+  return geometry.edgeLength(s.g, s.kg) / reference;
 }
 
 /// Dijkstra over the steps from one point at a time. Its arrays serve every search of an
@@ -247,9 +249,8 @@ void spreadLengths(const Steps& steps, const FrameGeometry& geometry, double lim
 /// Where one quarter of a's index can go: the end of the cheapest path (ties: fewer edges) over
 /// regular points to one at least `distance` edges and `length` long from a along the path and
 /// outside every neighbourhood `hops` and `near` mark; -1 when the search finds none.
-int findSplitTarget(Optimizer& o, int a, int distance, double length,
-  const std::vector<int>& hops, const std::vector<double>& near, std::vector<int>& pathHops,
-  std::vector<double>& pathLength)
+int findSplitTarget(Optimizer& o, int a, int distance, double length, const std::vector<int>& hops,
+  const std::vector<double>& near, std::vector<int>& pathHops, std::vector<double>& pathLength)
 {
   PathSearch& S = o.search;
   S.begin(a);
@@ -317,12 +318,13 @@ void splitHighSingularities(Optimizer& o, BranchPointReport& report, const Progr
   // (the poles of Data/dumbbell.obj, of VTK's sphere source at 200 x 100) put the quarters within
   // three quads of the pole at 6,500 quads; the map between them folded, and quads faced against
   // the surface there.
-  const double unit = o.options.lengthScaledCost && o.geometry.edgeLength.rows() > 0
-    ? o.geometry.referenceLength
-    : 0.0;
+  const bool scaled = o.options.lengthScaledCost && o.geometry.edgeLength.rows() > 0;
   for (std::size_t i = 0; i < high.size(); ++i)
   {
     const int a = high[i];
+    // the reference length of a's component (a is an inner point: it has faces)
+    const double unit =
+      scaled ? o.geometry.componentReferenceLength[o.topo.ringFaces[o.topo.ringOffsets[a]]] : 0.0;
     report.split += 1; // quarters that find no place are counted in splitFailed
     while (o.q[a] > 0)
     {
@@ -344,8 +346,7 @@ void splitHighSingularities(Optimizer& o, BranchPointReport& report, const Progr
         std::fill(hops.begin(), hops.end(), std::numeric_limits<int>::max());
         spreadHops(o.steps, distance, others, hops);
         spreadLengths(o.steps, o.geometry, distance * unit, others, near);
-        target =
-          findSplitTarget(o, a, distance, distance * unit, hops, near, pathHops, pathLength);
+        target = findSplitTarget(o, a, distance, distance * unit, hops, near, pathHops, pathLength);
       }
       if (target < 0)
       {
@@ -623,8 +624,8 @@ double objective(const Eigen::MatrixX3i& F, const MeshTopology& topo, const Fram
 /// The nearest point (along edge paths over regular points, at most maxLength long) where a
 /// path from a with delta = -q(a) quarter turns cancels a singularity of the opposite index; -1
 /// when there is none. Ties: the first the search reaches.
-int findCancelPartner(Optimizer& o, int a, double maxLength,
-  const std::set<std::pair<int, int>>& twistRejected)
+int findCancelPartner(
+  Optimizer& o, int a, double maxLength, const std::set<std::pair<int, int>>& twistRejected)
 {
   const int delta = -o.q[a];
   PathSearch& S = o.search;
@@ -741,7 +742,8 @@ double scaledMatchingCost(const Eigen::MatrixX3i& F, const MeshTopology& topo,
       const int g = topo.faceNeighbors(f, k);
       if (g > f)
       {
-        cost += topology.deviation(f, k) * geometry.edgeLength(f, k) / geometry.referenceLength;
+        cost += topology.deviation(f, k) * geometry.edgeLength(f, k) /
+          geometry.componentReferenceLength[f];
       }
     }
   }

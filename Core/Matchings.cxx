@@ -54,7 +54,28 @@ FrameGeometry computeFrameGeometry(
       G.edgeLength(f, k) = e.norm();
     }
   }
-  G.referenceLength = std::sqrt(surfaceArea(V, F) / 2000.0);
+  const double total = surfaceArea(V, F);
+  G.referenceLength = std::sqrt(total / 2000.0);
+  G.componentReferenceLength = Eigen::VectorXd::Constant(F.rows(), G.referenceLength);
+  if (topo.numComponents() > 1 && total > 0.0)
+  {
+    // each component's area summed as surfaceArea sums it, in face order
+    std::vector<double> area(topo.numComponents(), 0.0);
+    for (Eigen::Index f = 0; f < F.rows(); ++f)
+    {
+      const Eigen::Vector3d a = V.row(F(f, 1)) - V.row(F(f, 0));
+      const Eigen::Vector3d b = V.row(F(f, 2)) - V.row(F(f, 0));
+      area[topo.faceComponent[f]] += 0.5 * a.cross(b).norm();
+    }
+    for (Eigen::Index f = 0; f < F.rows(); ++f)
+    {
+      const int c = topo.faceComponent[f];
+      const int holesAndHandles = std::max(1, 2 - topo.components[c].eulerCharacteristic);
+      const double cells = std::max(
+        2000.0 * area[c] / total, static_cast<double>(ReferenceComponentQuads * holesAndHandles));
+      G.componentReferenceLength[f] = std::sqrt(area[c] / cells);
+    }
+  }
   G.defect = angleDefects(V, F, topo);
   return G;
 }

@@ -54,7 +54,20 @@ struct FrameGeometry
   Eigen::MatrixX3d edgeLength; ///< #F x 3 length of edge k
   /// sqrt(total area / 2000): about the edge length of a 4,000-triangle mesh of the same area
   double referenceLength = 0.0;
+  /// #F per triangle, the edge of the grid its component would get if the surface were meshed
+  /// with 2,000 quads: its share of them by area, but at least ReferenceComponentQuads for each
+  /// of its holes and handles (2 - chi, at least 1), as the map gives each component its minimum
+  /// (ParameterizationOptions::minimumComponentQuadCount). On one component, referenceLength.
+  /// The costs of merges and splits on a component are measured in it: with the whole surface's,
+  /// a part whose grid is far finer than its share (a wheel of 14 holes beside a car's body) had
+  /// its singularities merged as if paths on it were ten times cheaper, and its map folded.
+  Eigen::VectorXd componentReferenceLength;
 };
+
+/// The quads per hole and handle of a component in FrameGeometry::componentReferenceLength
+/// (ParameterizationOptions::minimumComponentQuadCount's default).
+constexpr int ReferenceComponentQuads = 24;
+
 FrameGeometry computeFrameGeometry(
   const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F, const MeshTopology& topo);
 
@@ -198,11 +211,11 @@ struct MatchingOptions
 
 struct MatchingResult
 {
-  FrameTopology topology;      ///< of the final matchings and frames
-  Eigen::MatrixX3d frameU;     ///< #F x 3 the frames: fitted when framesFitted, else as given
-  Eigen::MatrixX3d frameV;     ///< #F x 3 (normal x frameU where none was given)
-  bool framesFitted = false;   ///< the frames were turned to agree with changed matchings
-  int branchPointsBefore = 0;  ///< of the smallest-angle matchings
+  FrameTopology topology;     ///< of the final matchings and frames
+  Eigen::MatrixX3d frameU;    ///< #F x 3 the frames: fitted when framesFitted, else as given
+  Eigen::MatrixX3d frameV;    ///< #F x 3 (normal x frameU where none was given)
+  bool framesFitted = false;  ///< the frames were turned to agree with changed matchings
+  int branchPointsBefore = 0; ///< of the smallest-angle matchings
   double matchingCostBefore = 0.0;
   /// what the optimization lowers (BranchPointReport::costBefore/After), before and after
   double objectiveBefore = 0.0;

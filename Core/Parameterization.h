@@ -77,7 +77,7 @@ struct ParameterizationOptions
   /// area, or targetEdgeLength made shorter where that would give fewer. (A component far smaller
   /// than a grid cell would otherwise get no quad at all, and one of many holes on a few dozen
   /// quads loses them.)
-  int minimumComponentQuadCount = 24;
+  int minimumComponentQuadCount = ReferenceComponentQuads;
   /// A map that keeps flipped triangles or points wound the wrong way after its repair, or whose
   /// quads would not keep the surface's topology (pieces, Euler characteristic, boundary loops),
   /// is rounded and repaired again with up to this many other grid sizes (2, 1/2, 4, 1/4, 8 and

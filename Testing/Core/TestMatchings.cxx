@@ -693,3 +693,48 @@ TEST(Matchings, BranchPointOptimizationReportsProgressAndStopsWhenAsked)
     Cancelled);
   EXPECT_EQ(calls, 5);
 }
+
+TEST(Matchings, AComponentIsMeasuredOnItsOwnScale)
+{
+  // A small rounded cube (its flat sides leave the curvature frames noisy: many singularities to
+  // merge) beside a sphere 230 times its area. Merges and splits are priced in the grid the cube
+  // would get at 2,000 quads: its share by area (9) is below its minimum (24), so its reference
+  // length is its own; with that, and the same frames, it merges exactly as alone.
+  Surface cube = makeRoundedCube(0.2, 8);
+  const Surface sphere = makeIcosphere(20.0, 4);
+  Surface both;
+  both.V.resize(sphere.V.rows() + cube.V.rows(), 3);
+  both.V << sphere.V, cube.V;
+  both.F.resize(sphere.F.rows() + cube.F.rows(), 3);
+  both.F << sphere.F, (cube.F.array() + static_cast<int>(sphere.V.rows())).matrix();
+  Mesh alone = prepare(cube);
+  const Mesh joint = prepare(both);
+  ASSERT_EQ(joint.topo.numComponents(), 2);
+  const Eigen::Index first = sphere.F.rows(), n = cube.F.rows();
+
+  const double cubeArea = surfaceArea(cube.V, cube.F), total = surfaceArea(both.V, both.F);
+  ASSERT_LT(2000.0 * cubeArea / total, ReferenceComponentQuads);
+  EXPECT_NEAR(joint.geometry.componentReferenceLength[first], std::sqrt(cubeArea / 24.0), 1e-12);
+  EXPECT_NEAR(joint.geometry.componentReferenceLength[0] / joint.geometry.referenceLength, 1.0,
+    0.01); // the sphere: about the whole surface's
+  EXPECT_EQ(alone.geometry.componentReferenceLength,
+    Eigen::VectorXd::Constant(n, alone.geometry.referenceLength));
+
+  // the cube alone with its curvature frames, priced in the same unit: the same merges
+  const Eigen::MatrixX3d a = computeCurvatureField(alone.s.V, alone.s.F, alone.topo).frameU;
+  Eigen::MatrixX3d j = computeCurvatureField(joint.s.V, joint.s.F, joint.topo).frameU;
+  j.middleRows(first, n) = a;
+  alone.geometry.componentReferenceLength =
+    joint.geometry.componentReferenceLength.segment(first, n);
+  FrameTopology ta = computeMatchings(alone.s.F, alone.topo, alone.geometry, a);
+  FrameTopology tj = computeMatchings(joint.s.F, joint.topo, joint.geometry, j);
+  const int before = ta.singularities;
+  optimizeBranchPoints(alone.s.F, alone.topo, alone.geometry, a, ta);
+  optimizeBranchPoints(joint.s.F, joint.topo, joint.geometry, j, tj);
+  std::printf("the cube: %.1f of 2,000 quads by area (%.0f times its area beside it); %d "
+              "singularities, after the merges %d\n",
+    2000.0 * cubeArea / total, total / cubeArea - 1.0, before, ta.singularities);
+  ASSERT_LT(ta.singularities, before); // merges happened
+  EXPECT_EQ(ta.matching, tj.matching.middleRows(first, n));
+  EXPECT_EQ(ta.index, tj.index.segment(sphere.V.rows(), cube.V.rows()));
+}
