@@ -62,8 +62,7 @@ Steps pathSteps(const Eigen::MatrixX3i& F, const MeshTopology& topo)
 /// What one edge's deviation counts for (BranchPointOptions::lengthScaled).
 double edgeWeight(const FrameGeometry& geometry, const Step& s, bool lengthScaled)
 {
-  const double reference =
-    geometry.componentReferenceLength.size() > 0 ? geometry.componentReferenceLength[s.g] : 0.0;
+  const double reference = referenceLengthAt(geometry, s.g);
   if (!lengthScaled || !(reference > 0) || geometry.edgeLength.rows() == 0)
   {
     return 1.0;
@@ -313,18 +312,18 @@ void splitHighSingularities(Optimizer& o, BranchPointReport& report, const Progr
   std::vector<int> hops(nv, std::numeric_limits<int>::max());
   std::vector<int> pathHops(nv, 0);
   std::vector<double> near(nv), pathLength(nv, 0.0);
-  // With length-scaled costs the distance is one of the surface too, in reference lengths (about
-  // the edges of a 4,000-triangle mesh of it). Counted in edges alone, 4 edges of a fan of slivers
-  // (the poles of Data/dumbbell.obj, of VTK's sphere source at 200 x 100) put the quarters within
-  // three quads of the pole at 6,500 quads; the map between them folded, and quads faced against
-  // the surface there.
+  // With length-scaled costs the distance is one of the surface too, in reference lengths of the
+  // component (about the edges of a 4,000-triangle mesh of it). Counted in edges alone, 4 edges of
+  // a fan of slivers (the poles of Data/dumbbell.obj, of VTK's sphere source at 200 x 100) put the
+  // quarters within three quads of the pole at 6,500 quads; the map between them folded, and quads
+  // faced against the surface there.
   const bool scaled = o.options.lengthScaledCost && o.geometry.edgeLength.rows() > 0;
   for (std::size_t i = 0; i < high.size(); ++i)
   {
     const int a = high[i];
     // the reference length of a's component (a is an inner point: it has faces)
     const double unit =
-      scaled ? o.geometry.componentReferenceLength[o.topo.ringFaces[o.topo.ringOffsets[a]]] : 0.0;
+      scaled ? referenceLengthAt(o.geometry, o.topo.ringFaces[o.topo.ringOffsets[a]]) : 0.0;
     report.split += 1; // quarters that find no place are counted in splitFailed
     while (o.q[a] > 0)
     {
@@ -742,8 +741,8 @@ double scaledMatchingCost(const Eigen::MatrixX3i& F, const MeshTopology& topo,
       const int g = topo.faceNeighbors(f, k);
       if (g > f)
       {
-        cost += topology.deviation(f, k) * geometry.edgeLength(f, k) /
-          geometry.componentReferenceLength[f];
+        cost +=
+          topology.deviation(f, k) * geometry.edgeLength(f, k) / referenceLengthAt(geometry, f);
       }
     }
   }

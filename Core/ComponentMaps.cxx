@@ -6,8 +6,11 @@
 
 #include <algorithm>
 #include <atomic>
+#include <chrono>
 #include <cmath>
+#include <condition_variable>
 #include <exception>
+#include <mutex>
 #include <numeric>
 #include <thread>
 
@@ -156,35 +159,58 @@ struct ComponentMap
   Parameterization map;
 };
 
+/// Joins the worker threads however the scope is left; left by an exception (a cancel, a thread
+/// that could not start), it first asks them to stop.
+struct Joiner
+{
+  std::vector<std::thread>& threads;
+  std::atomic<bool>& stop;
+  bool finished = false;
+
+  ~Joiner()
+  {
+    if (!finished)
+    {
+      stop = true;
+    }
+    for (std::thread& t : threads)
+    {
+      t.join();
+    }
+  }
+};
+
 /**
- * The maps of the components, on several threads (options.numberOfThreads): the components are
- * independent, so each map is what it would be on one thread. The largest components go first
- * (no thread is left with a large one at the end); the calling thread reports progress by the
- * share of triangles mapped, and when it is cancelled the other threads stop at their next
- * report. A component whose map fails does not stop the others: the failure of the first such
- * component is thrown, as on one thread.
+ * The maps of the components, on several threads (options.numberOfThreads, shared out between
+ * the components mapped at once and their untangling): the components are independent, so each
+ * map is what it would be on one thread. The largest components go first (no thread is left
+ * with a large one at the end), the calling thread taking the largest. It reports progress by
+ * the share of triangles mapped, while it maps and then while it waits for the others; when it
+ * is cancelled, the other threads stop at their next report. A component whose map fails does
+ * not stop the others: the failure of the first such component is thrown, as on one thread.
  */
 std::vector<ComponentMap> mapComponents(
-  const Inputs& in, const std::vector<Component>& parts, const Progress& progress)
+  const Inputs& in, const std::vector<Component>& parts, double totalArea, const Progress& progress)
 {
-  double totalArea = 0.0;
-  for (const Component& part : parts)
-  {
-    totalArea += part.area;
-  }
   std::vector<int> order(parts.size());
   std::iota(order.begin(), order.end(), 0);
   std::stable_sort(order.begin(), order.end(),
     [&](int a, int b) { return parts[a].faces.size() > parts[b].faces.size(); });
+  const int wanted =
+    in.options.numberOfThreads > 0 ? in.options.numberOfThreads : defaultThreadCount();
+  const int threads = std::max(1, std::min(wanted, static_cast<int>(parts.size())));
   std::vector<ComponentMap> maps(parts.size());
   std::vector<std::exception_ptr> failed(parts.size());
-  std::atomic<std::size_t> next{ 0 };
+  std::atomic<std::size_t> next{ 1 }; // the calling thread starts with the first
   std::atomic<long long> facesDone{ 0 };
   std::atomic<bool> stop{ false };
+  std::mutex mutex;
+  std::condition_variable changed;
+  int running = threads - 1; // worker threads not done (under mutex)
   const Progress stoppable([&stop](double) { return !stop.load(); });
   double reported = 0.0; // the calling thread's last fraction: it only grows
-  auto work = [&](bool calling) {
-    for (std::size_t n = next++; n < order.size() && !stop; n = next++)
+  auto work = [&](std::size_t n, bool calling) {
+    for (; n < order.size() && !stop; n = next++)
     {
       const int c = order[n];
       const Component& part = parts[c];
@@ -194,8 +220,8 @@ std::vector<ComponentMap> mapComponents(
         const MeshTopology& topo = maps[c].topo =
           buildTopology(part.F, static_cast<int>(part.V.rows()));
         const FrameGeometry geometry = computeFrameGeometry(part.V, part.F, topo);
-        const ParameterizationOptions options =
-          componentOptions(in.options, part.area, totalArea, topo);
+        ParameterizationOptions options = componentOptions(in.options, part.area, totalArea, topo);
+        options.numberOfThreads = std::max(1, wanted / threads); // its untangling's
         maps[c].map = computeParameterization(part.V, part.F, topo, geometry, part.frameU,
           part.matching, options, calling ? progress.part(reported, reported + share) : stoppable);
       }
@@ -203,7 +229,7 @@ std::vector<ComponentMap> mapComponents(
       {
         if (calling)
         {
-          throw; // cancelled by the caller: the other threads stop too (below)
+          throw; // cancelled by the caller: the other threads stop too (Joiner)
         }
         return; // stopped because the calling thread was cancelled
       }
@@ -212,9 +238,9 @@ std::vector<ComponentMap> mapComponents(
         // the others go on, so that the failure thrown is the first in component order, as on
         // one thread
         failed[c] = std::current_exception();
-        continue;
       }
       facesDone += static_cast<long long>(part.faces.size());
+      changed.notify_all();
       if (calling)
       {
         // what the other threads finished meanwhile counts too
@@ -223,31 +249,30 @@ std::vector<ComponentMap> mapComponents(
       }
     }
   };
-  const int wanted =
-    in.options.numberOfThreads > 0 ? in.options.numberOfThreads : defaultThreadCount();
-  const int threads = std::max(1, std::min(wanted, static_cast<int>(parts.size())));
   std::vector<std::thread> workers;
+  Joiner joiner{ workers, stop };
   for (int t = 1; t < threads; ++t)
   {
-    workers.emplace_back([&work]() { work(false); });
+    workers.emplace_back([&]() {
+      work(next++, false);
+      std::lock_guard<std::mutex> lock(mutex);
+      --running;
+      changed.notify_all();
+    });
   }
-  try
+  work(0, true);
+  // the others' components: report them as they finish (and hear a cancel meanwhile)
+  std::unique_lock<std::mutex> lock(mutex);
+  while (running > 0)
   {
-    work(true);
+    changed.wait_for(lock, std::chrono::milliseconds(100));
+    lock.unlock();
+    reported = std::max(reported, static_cast<double>(facesDone) / in.numFaces());
+    progress.report(reported);
+    lock.lock();
   }
-  catch (...) // cancelled
-  {
-    stop = true;
-    for (std::thread& w : workers)
-    {
-      w.join();
-    }
-    throw;
-  }
-  for (std::thread& w : workers)
-  {
-    w.join();
-  }
+  lock.unlock();
+  joiner.finished = true;
   for (const std::exception_ptr& e : failed)
   {
     if (e)
@@ -262,12 +287,12 @@ std::vector<ComponentMap> mapComponents(
 Parameterization mapEachComponent(const Inputs& in, const Progress& progress)
 {
   const std::vector<Component> parts = splitComponents(in);
-  const std::vector<ComponentMap> maps = mapComponents(in, parts, progress);
   double totalArea = 0.0, largest = -1.0;
   for (const Component& part : parts)
   {
     totalArea += part.area;
   }
+  const std::vector<ComponentMap> maps = mapComponents(in, parts, totalArea, progress);
   Parameterization out;
   out.cornerUV.resize(in.numFaces(), 6);
   out.seam.resize(in.numFaces(), 3);

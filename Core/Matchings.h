@@ -68,6 +68,15 @@ struct FrameGeometry
 /// (ParameterizationOptions::minimumComponentQuadCount's default).
 constexpr int ReferenceComponentQuads = 24;
 
+/// The reference length of face f's component; the whole surface's where the component has none
+/// (no area) or the geometry was not computed per component.
+inline double referenceLengthAt(const FrameGeometry& geometry, int f)
+{
+  const double own =
+    f < geometry.componentReferenceLength.size() ? geometry.componentReferenceLength[f] : 0.0;
+  return own > 0.0 ? own : geometry.referenceLength;
+}
+
 FrameGeometry computeFrameGeometry(
   const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F, const MeshTopology& topo);
 
@@ -85,11 +94,11 @@ struct BranchPointOptions
   /// lambda of the cost lambda * (number of singular inner points) + sum of matching deviations
   /// (radians); a path is changed only when it lowers that cost.
   double branchPointWeight = 4.0;
-  /// Each edge's deviation counts in proportion to its length over FrameGeometry's
-  /// referenceLength, so that the cost of a path is about the same however finely the surface
-  /// is meshed (merging two singularities bends the field over their distance, not over a
-  /// number of edges). Off: every edge counts once, as in the paper, and a finer mesh keeps
-  /// more singularities.
+  /// Each edge's deviation counts in proportion to its length over its component's reference
+  /// length (FrameGeometry::componentReferenceLength), so that the cost of a path is about the same
+  /// however finely the surface is meshed (merging two singularities bends the field over their
+  /// distance, not over a number of edges). Off: every edge counts once, as in the paper, and a
+  /// finer mesh keeps more singularities.
   bool lengthScaledCost = true;
   /// Frames within this many degrees of a boundary edge follow it (as the solver's
   /// boundaryTolerance puts such edges on grid lines): used to undo merges that would leave a
@@ -100,7 +109,8 @@ struct BranchPointOptions
   int maximumPasses = 10;
   /// Inner singularities of index >= 1/2 are split first into quarters placed at least this
   /// many edges apart (and from other singularities), with lengthScaledCost also this many
-  /// referenceLengths along the surface (a fan of slivers is many edges in a short distance);
+  /// reference lengths of their component along the surface (a fan of slivers is many edges in a
+  /// short distance);
   /// 0 leaves them alone.
   int splitDistance = 4;
   /// Singularities of index at least this many quarters are split (2: +1/2 and more).
@@ -124,7 +134,7 @@ struct BranchPointReport
 };
 
 /// The matching cost the branch-point optimization weighs: the sum of deviations C_ij over
-/// inner edges, each times its length over geometry.referenceLength when lengthScaled
+/// inner edges, each times its length over its component's reference length when lengthScaled
 /// (BranchPointOptions), else FrameTopology::matchingCost.
 double scaledMatchingCost(const Eigen::MatrixX3i& F, const MeshTopology& topo,
   const FrameGeometry& geometry, const FrameTopology& topology, bool lengthScaled);

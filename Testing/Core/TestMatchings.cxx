@@ -697,9 +697,10 @@ TEST(Matchings, BranchPointOptimizationReportsProgressAndStopsWhenAsked)
 TEST(Matchings, AComponentIsMeasuredOnItsOwnScale)
 {
   // A small rounded cube (its flat sides leave the curvature frames noisy: many singularities to
-  // merge) beside a sphere 230 times its area. Merges and splits are priced in the grid the cube
-  // would get at 2,000 quads: its share by area (9) is below its minimum (24), so its reference
-  // length is its own; with that, and the same frames, it merges exactly as alone.
+  // merge) beside a sphere 233 times its area. Merges are priced in the grid the cube would get
+  // at 2,000 quads: its share by area (8.5 quads) is below its minimum (24), so its reference
+  // length is that of 24 quads on it; with that, and the same frames, it merges exactly as it
+  // does alone in that unit.
   Surface cube = makeRoundedCube(0.2, 8);
   const Surface sphere = makeIcosphere(20.0, 4);
   Surface both;

@@ -687,6 +687,40 @@ TEST(Parameterization, StopsWhenCancelled)
   EXPECT_EQ(calls, 4) << "stopped at the first report that said so";
 }
 
+TEST(Parameterization, ComponentsMappedOnSeveralThreadsReportAndStop)
+{
+  // Six components mapped two at a time: the map is the one of one thread, the calling thread's
+  // reports only grow and end at 1, and a cancel stops every thread (the call throws Cancelled,
+  // after the calling thread's reports stop).
+  const Chain c = runChain(makeComponents(6, 0.1, 10.0), 1500);
+  ASSERT_EQ(c.topo.numComponents(), 6);
+  ParameterizationOptions options;
+  options.targetQuadCount = 1500;
+  auto map = [&](int threads, const Progress& progress) {
+    ParameterizationOptions own = options;
+    own.numberOfThreads = threads;
+    return computeParameterization(
+      c.s.V, c.s.F, c.topo, c.geometry, c.frameU, c.field.matching, own, progress);
+  };
+  std::vector<double> fractions;
+  const Progress recording([&](double fraction) {
+    fractions.push_back(fraction);
+    return true;
+  });
+  const Parameterization one = map(1, Progress()), two = map(2, recording);
+  EXPECT_TRUE(one.cornerUV == two.cornerUV);
+  ASSERT_GT(fractions.size(), 6u);
+  EXPECT_EQ(fractions.back(), 1.0);
+  for (std::size_t i = 1; i < fractions.size(); ++i)
+  {
+    EXPECT_GE(fractions[i], fractions[i - 1]) << "report " << i;
+  }
+  int calls = 0;
+  const Progress cancelling([&](double) { return ++calls < 3; });
+  EXPECT_THROW(map(2, cancelling), Cancelled);
+  EXPECT_EQ(calls, 3) << "stopped at the first report that said so";
+}
+
 TEST(Parameterization, ReportsAndStopsWhileUntangling)
 {
   // The twisted sphere folds, so most of the work is the untangling (from 0.6 of the way on):

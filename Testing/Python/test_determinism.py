@@ -2,9 +2,9 @@
 
 Runs the command line on a few surfaces with OPENBLAS_NUM_THREADS and OMP_NUM_THREADS 1 and 2
 (the BLAS under CHOLMOD, CHOLMOD's own OpenMP) and --number-of-threads 1, 2 and 0 (the curvature
-stage's workers, the untangling's, the components' maps), and the first settings once more, writes .vtp, and requires every output file
-to be byte-identical to the first run's, with no exception (no output holds a time: the solver's
-seconds go to --stats only). Where two files differ, the message names the arrays that differ
+stage's workers, the untangling's, the components' maps), and the first settings once more,
+writes .vtp, and requires every output file to be byte-identical to the first run's, with no
+exception (no output holds a time: the solver's seconds go to --stats only). Where two files differ, the message names the arrays that differ
 (the XML's attributes but the byte offsets into the appended data, and each array's bytes).
 
 Needs QUADCOVER_CLI (the binary) and QUADCOVER_DATA (Data/); QUADCOVER_SHARED_DATA is optional
