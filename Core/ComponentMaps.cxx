@@ -83,10 +83,10 @@ ParameterizationOptions componentOptions(
   const ParameterizationOptions& options, double area, double totalArea, const MeshTopology& topo)
 {
   ParameterizationOptions own = options;
-  // 2 - chi = 2 genus + boundary loops: a grid coarse enough to leave a hole or a handle only a
-  // few cells loses it (the truck's wheels of 14 loops on 24 quads came apart)
+  // a grid coarse enough to leave a hole or a handle only a few cells loses it (the truck's
+  // wheels of 14 loops on 24 quads came apart)
   const double fewest =
-    std::max(1, options.minimumComponentQuadCount) * std::max(1, 2 - topo.eulerCharacteristic());
+    std::max(1, options.minimumComponentQuadCount) * holesAndHandles(topo.eulerCharacteristic());
   if (options.targetEdgeLength > 0)
   {
     own.targetEdgeLength = std::min(options.targetEdgeLength, std::sqrt(area / fewest));

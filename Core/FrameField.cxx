@@ -187,9 +187,18 @@ double surfaceArea(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F)
   double area = 0.0;
   for (Eigen::Index f = 0; f < F.rows(); ++f)
   {
-    const Eigen::Vector3d a = V.row(F(f, 1)) - V.row(F(f, 0));
-    const Eigen::Vector3d b = V.row(F(f, 2)) - V.row(F(f, 0));
-    area += 0.5 * a.cross(b).norm();
+    area += triangleArea(V, F, f);
+  }
+  return area;
+}
+
+std::vector<double> componentAreas(
+  const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F, const MeshTopology& topo)
+{
+  std::vector<double> area(topo.numComponents(), 0.0);
+  for (Eigen::Index f = 0; f < F.rows(); ++f)
+  {
+    area[topo.faceComponent[f]] += triangleArea(V, F, f);
   }
   return area;
 }

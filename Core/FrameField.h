@@ -75,9 +75,21 @@ Eigen::VectorXd angleDefects(
 void rotateFrames(
   const FaceBases& bases, const Eigen::VectorXd& alpha, Eigen::MatrixX3d& U, Eigen::MatrixX3d& V);
 
+/// Area of triangle f.
+inline double triangleArea(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F, Eigen::Index f)
+{
+  const Eigen::Vector3d a = V.row(F(f, 1)) - V.row(F(f, 0));
+  const Eigen::Vector3d b = V.row(F(f, 2)) - V.row(F(f, 0));
+  return 0.5 * a.cross(b).norm();
+}
 
 /// Total area of the triangles.
 double surfaceArea(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F);
+
+/// Area of each component (topo.faceComponent), summed in face order as surfaceArea sums it: on a
+/// surface of one component the same number.
+std::vector<double> componentAreas(
+  const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F, const MeshTopology& topo);
 
 /**
  * Sharp inner edges: the two triangles' normals more than featureAngle degrees apart, kept only in

@@ -59,20 +59,13 @@ FrameGeometry computeFrameGeometry(
   G.componentReferenceLength = Eigen::VectorXd::Constant(F.rows(), G.referenceLength);
   if (topo.numComponents() > 1 && total > 0.0)
   {
-    // each component's area summed as surfaceArea sums it, in face order
-    std::vector<double> area(topo.numComponents(), 0.0);
-    for (Eigen::Index f = 0; f < F.rows(); ++f)
-    {
-      const Eigen::Vector3d a = V.row(F(f, 1)) - V.row(F(f, 0));
-      const Eigen::Vector3d b = V.row(F(f, 2)) - V.row(F(f, 0));
-      area[topo.faceComponent[f]] += 0.5 * a.cross(b).norm();
-    }
+    const std::vector<double> area = componentAreas(V, F, topo);
     for (Eigen::Index f = 0; f < F.rows(); ++f)
     {
       const int c = topo.faceComponent[f];
-      const int holesAndHandles = std::max(1, 2 - topo.components[c].eulerCharacteristic);
-      const double cells = std::max(
-        2000.0 * area[c] / total, static_cast<double>(ReferenceComponentQuads * holesAndHandles));
+      const double cells = std::max(2000.0 * area[c] / total,
+        static_cast<double>(
+          ReferenceComponentQuads * holesAndHandles(topo.components[c].eulerCharacteristic)));
       G.componentReferenceLength[f] = std::sqrt(area[c] / cells);
     }
   }

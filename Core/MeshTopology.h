@@ -4,6 +4,8 @@
 
 #include <Eigen/Core>
 
+#include <algorithm>
+
 #include <string>
 #include <vector>
 
@@ -23,6 +25,14 @@ struct ComponentInfo
   /// (2 - chi - b) / 2 for a manifold, consistently oriented component; -1 otherwise.
   int genus = -1;
 };
+
+/// 2 - chi = 2 genus + boundary loops of a component of Euler characteristic chi, at least 1 (a
+/// disk or a sphere: 1): how many times a component's minimum of quads it needs so that no hole
+/// or handle is left only a few cells.
+inline int holesAndHandles(int eulerCharacteristic)
+{
+  return std::max(1, 2 - eulerCharacteristic);
+}
 
 /**
  * Edges, adjacency, ordered one-rings, boundary loops and components of a triangle mesh.
