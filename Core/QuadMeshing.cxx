@@ -18,6 +18,12 @@ QuadMeshResult buildQuadMesh(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& 
 {
   QuadMeshResult r;
   r.mesh = extractQuads(V, F, topo, cornerUV, options.extraction, progress.part(0.0, 0.5));
+  // the holes filled first: their quads are extracted ones too, counted and repaired with the
+  // others (counted before the fill, a fill's inverted quad appeared in the output's count only)
+  if (options.fillHoles)
+  {
+    r.patch = patchQuadMesh(V, F, topo, r.mesh);
+  }
   if (options.repairInvertedQuads)
   {
     r.invertedExtracted =
@@ -26,10 +32,6 @@ QuadMeshResult buildQuadMesh(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& 
   else
   {
     r.invertedExtracted = countInvertedQuads(r.mesh.V, r.mesh.Q);
-  }
-  if (options.fillHoles)
-  {
-    r.patch = patchQuadMesh(V, F, topo, r.mesh);
   }
   const SurfaceLocator surface(V, F);
   r.turnedExtracted = static_cast<int>(turnedQuads(surface, r.mesh).size());

@@ -38,7 +38,8 @@ struct QuadMeshResult
 {
   QuadMesh mesh;
   QuadQuality quality;       ///< measureQuads of the final mesh
-  int invertedExtracted = 0; ///< quads with a corner turned inside out as extracted
+  int invertedExtracted = 0; ///< quads with a corner turned inside out as extracted (after the
+                             ///< holes are filled)
   int invertedFinal = 0;     ///< and in the final mesh
   QuadPatchResult patch;     ///< what patchQuadMesh did
   FacingRepair facing;       ///< what repairFacing did
@@ -51,7 +52,7 @@ struct QuadMeshResult
 };
 
 /**
- * extractQuads, then repairInvertedQuads (or only countInvertedQuads), patchQuadMesh, repairQuads
+ * extractQuads, then patchQuadMesh, repairInvertedQuads (or only countInvertedQuads), repairQuads
  * of the quads facing against the surface, relaxQuads with options.relaxationIterations sweeps,
  * repairFacing, then measureQuads.
  * @throws std::invalid_argument as extractQuads does
