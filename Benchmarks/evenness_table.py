@@ -1,0 +1,91 @@
+#!/usr/bin/python3
+"""The quality issue's table: every shared mesh remeshed at QUADS quads, measured by the shared
+evaluator (../shared/tools/quadeval.py), beside QuadriFlow's irregular count from the peers' table.
+
+    /usr/bin/python3 Benchmarks/evenness_table.py [--shared DIR] [--quads N]
+        [--quadcover BIN] [-- QUADCOVER OPTIONS...]
+
+Prints one Markdown row per mesh (irregular inner vertices, edge-length and angle RSD, Hausdorff
+distance in % of the diagonal, faces against the input's normal, χ against the input's), then the
+medians over the meshes that have a QuadriFlow figure (the truck has none: QuadriFlow fails on
+it) and the meshes that miss the per-mesh bars (edge RSD above 14%, irregular vertices not below
+QuadriFlow's). Run after `bash Scripts/build.sh`; it takes about a minute on 2 cores.
+"""
+import argparse
+import json
+import os
+import re
+import statistics
+import subprocess
+import sys
+import tempfile
+
+MESHES = ["3holes", "armadillo", "bumpy-cube", "bunny-lowres", "cheburashka", "decimated-knight",
+          "fandisk", "fertility", "lion", "rocker-arm", "screwdriver", "spot", "teapot", "truck"]
+
+
+def quadriflow_irregular(shared):
+    """QuadriFlow's interior irregular vertices per mesh, from the peers' README table."""
+    found = {}
+    readme = os.path.join(shared, "..", "peers", "README.md")
+    if os.path.exists(readme):
+        for line in open(readme):
+            m = re.match(r"\| (\S+) \(-?\d+\) \| QuadriFlow \| (\d+) \|", line)
+            if m:
+                found[m.group(1)] = int(m.group(2))
+    return found
+
+
+def main():
+    args = sys.argv[1:]
+    options = args[args.index("--") + 1:] if "--" in args else []
+    args = args[:args.index("--")] if "--" in args else args
+    parser = argparse.ArgumentParser()
+    parser.add_argument("--shared", default="../shared/data")
+    parser.add_argument("--quads", type=int, default=6500)
+    parser.add_argument("--quadcover", default="build/bin/quadcover")
+    a = parser.parse_args(args)
+    evaluator = os.path.join(a.shared, "..", "tools", "quadeval.py")
+    if not os.path.exists(evaluator):
+        sys.exit("evenness_table.py: no evaluator at %s" % evaluator)
+    peer = quadriflow_irregular(a.shared)
+    print("| mesh | irregular (QuadriFlow) | RSD edge % | RSD angle % | Hausdorff % | flip | χ |")
+    print("|---|---:|---:|---:|---:|---:|---:|")
+    rows = {}
+    with tempfile.TemporaryDirectory() as tmp:
+        for name in MESHES:
+            mesh = os.path.join(a.shared, name + ".obj")
+            if not os.path.exists(mesh):
+                continue
+            out = os.path.join(tmp, name + ".vtp")
+            run = subprocess.run([a.quadcover, mesh, "-o", out, "--target-quad-count",
+                                  str(a.quads)] + options, capture_output=True, text=True)
+            if run.returncode != 0 or not os.path.exists(out):
+                print("| %s | failed: %s |" % (name, run.stderr.strip().splitlines()[-1:]))
+                continue
+            figures = subprocess.run([sys.executable, evaluator, out, "--ref", mesh, "--json"],
+                                     capture_output=True, text=True, check=True).stdout
+            r = json.loads(figures)
+            rows[name] = r
+            print("| %s | %d (%s) | %.1f | %.1f | %.2f | %d | %d |" % (
+                name, r["irregular_interior"], peer.get(name, "—"), r["rsd_edge_pct"],
+                r["rsd_angle_pct"], r["hausdorff_pct_diag"], r["faces_against_ref_normal"],
+                r["euler"]))
+    ranked = {n: r for n, r in rows.items() if n in peer}
+    if not ranked:
+        return
+    def median(key):
+        return statistics.median(r[key] for r in ranked.values())
+    print()
+    print("Medians over %d meshes: irregular %.0f, edge RSD %.1f%%, angle RSD %.1f%%, "
+          "Hausdorff %.2f%%" % (len(ranked), median("irregular_interior"),
+                                median("rsd_edge_pct"), median("rsd_angle_pct"),
+                                median("hausdorff_pct_diag")))
+    missed = [n for n, r in ranked.items()
+              if r["rsd_edge_pct"] > 14 or r["irregular_interior"] >= peer[n]]
+    print("Edge RSD above 14%% or irregular not below QuadriFlow's: %s" %
+          (", ".join(missed) if missed else "none"))
+
+
+if __name__ == "__main__":
+    main()
