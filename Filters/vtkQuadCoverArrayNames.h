@@ -156,7 +156,8 @@ constexpr const char* BoundaryLoops = "BoundaryLoops";
 /// input, then input to quads and quads to input, in % of the input's bounding-box diagonal.
 constexpr const char* HausdorffDistance = "HausdorffDistance";
 /// field, 1 x int, 2 tuples: quads with a corner turned inside out (scaled Jacobian <= 0) as
-/// extracted, and in the output (after RepairInvertedQuads and RelaxationIterations).
+/// extracted (the quads of filled holes included), and in the output (after RepairInvertedQuads
+/// and RelaxationIterations).
 constexpr const char* InvertedQuads = "InvertedQuads";
 /// field, 1 x int, 3 tuples: grid cells that gave no quad: a corner off the surface, two corners
 /// at one grid point, overlapping others.

@@ -66,7 +66,8 @@ public:
   /** Fill the holes that grid cells without a quad leave inside the surface with quads (default
    * on): a loop of four edges with one quad, a longer even loop (up to sqrt(quads) + 64 edges)
    * with a fan of quads around a new point on the surface (quadcover::patchQuadMesh), so the
-   * output keeps the input's Euler characteristic where the map could not be repaired.
+   * output keeps the input's Euler characteristic where the map could not be repaired. The
+   * holes are filled before RepairInvertedQuads, which then repairs their quads with the others.
    * FilledHoles reports what it did. */
   vtkSetMacro(FillHoles, bool);
   vtkGetMacro(FillHoles, bool);
