@@ -132,6 +132,7 @@ void addComponent(const Inputs& in, const Component& part, const MeshTopology& t
   out.branchPointsOnGrid += map.branchPointsOnGrid;
   out.seamEdges += map.seamEdges;
   out.alignedBoundaryEdges += map.alignedBoundaryEdges;
+  out.alignedFeatureEdges += map.alignedFeatureEdges;
   out.unknowns += map.unknowns;
   out.integerUnknowns += map.integerUnknowns;
   out.constraints += map.constraints;

@@ -54,6 +54,17 @@ struct ParameterizationOptions
   bool alignToBoundary = SmootherOptions().alignToBoundary;
   /// The same concept as BranchPointOptions::boundaryTolerance, and its default.
   double boundaryTolerance = BranchPointOptions().boundaryTolerance;
+  /// Sharp edges (featureAngle, in chains of minimumFeatureLength, on crease networks at least
+  /// four grid edges long) along a frame direction (within boundaryTolerance degrees) lie on an
+  /// integer grid line, as boundary edges do, so that quad edges run along the creases and quad
+  /// vertices sit on them (fandisk at 6,500 quads: 33% of its crease points kept, 81% with it).
+  /// Off by default: on some parts a short crease beside a branch point pulls the grid around it
+  /// into slivers (rocker-arm: Hausdorff distance 0.64 -> 1.05%).
+  bool featureLines = false;
+  /// The same concepts as SmootherOptions::featureAngle and minimumFeatureLength, and their
+  /// defaults.
+  double featureAngle = SmootherOptions().featureAngle;
+  int minimumFeatureLength = SmootherOptions().minimumFeatureLength;
   /// After rounding, triangles whose (u, v) image is flipped are untangled: the real unknowns
   /// of their neighbourhood (2 rings, then 4, 8, 16) move to minimize a foldover-free distortion
   /// energy, in at most this many rounds per neighbourhood; 0 leaves flips as they are.
@@ -130,6 +141,7 @@ struct Parameterization
   int branchPointsOnGrid = 0;   ///< of those, mapped to integer (u, v) within 1e-6
   int seamEdges = 0;            ///< cut edges
   int alignedBoundaryEdges = 0; ///< boundary edges put on grid lines
+  int alignedFeatureEdges = 0;  ///< sharp edges put on grid lines
   int unknowns = 0;             ///< real unknowns of the solve
   int integerUnknowns = 0;      ///< of which integer
   int constraints = 0;          ///< real linear constraints eliminated

@@ -144,10 +144,10 @@ struct SeamlessSystem
   }
 };
 
-/// The unknowns (u, v per sector, a translation per cut edge, boundary lines) and the linear
-/// constraints among them, eliminated: the cut's transition functions, boundary edges on grid
-/// lines, one pinned point per component. Sets out.alignedBoundaryEdges, constraints and
-/// nonUnitPivots.
+/// The unknowns (u, v per sector, a translation per cut edge, boundary and feature lines) and the
+/// linear constraints among them, eliminated: the cut's transition functions, boundary and sharp
+/// edges on grid lines, one pinned point per component. Sets out.alignedBoundaryEdges,
+/// alignedFeatureEdges, constraints and nonUnitPivots.
 Eliminator constrainUnknowns(
   const Inputs& in, const Field& field, Parameterization& out, const Progress& progress);
 

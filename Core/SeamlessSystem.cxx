@@ -3,8 +3,10 @@
 #include "ParameterizationSteps.h"
 
 #include "FrameField.h"
+#include "UnionFind.h"
 
 #include <cmath>
+#include <numeric>
 #include <utility>
 
 namespace quadcover
@@ -84,39 +86,84 @@ int constantCoordinate(
   return -1;
 }
 
-/// Boundary edges along a combed frame direction: the other coordinate is an integer line.
-/// Returns per sector coordinate (2s + c) 1 where it is on a line.
-std::vector<char> alignToBoundary(
+/// The sharp edges (featureLines) of the crease networks at least MinimumFeatureLineLength grid
+/// edges long (a network: sharp edges joined at their points). A shorter one is left to the field
+/// alone: put on an integer line, a crease of a grid edge or two pulls the grid around it.
+std::vector<char> featureLines(const Inputs& in, double edgeLength)
+{
+  constexpr double MinimumFeatureLineLength = 4.0;
+  const MeshTopology& topo = in.topo;
+  if (!in.options.featureLines)
+  {
+    return std::vector<char>(topo.numEdges(), 0);
+  }
+  std::vector<char> sharp = sharpEdges(
+    topo, in.geometry.bases, in.options.featureAngle, in.options.minimumFeatureLength);
+  std::vector<int> parent(topo.numVertices);
+  std::iota(parent.begin(), parent.end(), 0);
+  for (int e = 0; e < topo.numEdges(); ++e)
+  {
+    if (sharp[e])
+    {
+      unite(parent, topo.edges(e, 0), topo.edges(e, 1));
+    }
+  }
+  std::vector<double> length(topo.numVertices, 0.0);
+  for (int e = 0; e < topo.numEdges(); ++e)
+  {
+    if (sharp[e])
+    {
+      length[findRoot(parent, topo.edges(e, 0))] +=
+        (in.V.row(topo.edges(e, 0)) - in.V.row(topo.edges(e, 1))).norm();
+    }
+  }
+  for (int e = 0; e < topo.numEdges(); ++e)
+  {
+    sharp[e] = sharp[e] &&
+      length[findRoot(parent, topo.edges(e, 0))] >= MinimumFeatureLineLength * edgeLength;
+  }
+  return sharp;
+}
+
+/// Boundary edges, and sharp edges (featureLines), along a combed frame direction: the other
+/// coordinate is an integer line. Returns per sector coordinate (2s + c) 1 where it is on a line.
+std::vector<char> alignToLines(
   const Inputs& in, const Field& field, Parameterization& out, Eliminator& elim)
 {
   const int nS = static_cast<int>(out.sectorPoint.size());
   std::vector<char> onLine(2 * static_cast<std::size_t>(nS), 0);
-  if (!in.options.alignToBoundary)
-  {
-    return onLine;
-  }
   const double tolerance = in.options.boundaryTolerance * Pi / 180.0;
-  for (int e = 0; e < in.topo.numEdges(); ++e)
-  {
-    if (in.topo.edgeFaceCount[e] != 1)
-    {
-      continue;
-    }
-    const int c0 = in.topo.edgeCorners(e, 0);
-    const int f = c0 / 3;
-    const int k = c0 % 3;
+  // the edge of face f opposite corner k + 2 on a line when it runs along a frame direction
+  auto putOnLine = [&](int f, int k) {
     const int component = constantCoordinate(in, field, out, f, k, tolerance);
     if (component < 0)
     {
-      continue;
+      return false;
     }
-    ++out.alignedBoundaryEdges;
     const int line = elim.add(true);
     for (int end = 0; end < 2; ++end)
     {
       const int s = out.cornerSector[3 * f + (k + end) % 3];
       elim.constrain({ { 2 * s + component, 1.0 }, { line, -1.0 } });
       onLine[2 * s + component] = 1;
+    }
+    return true;
+  };
+  const std::vector<char> sharp = featureLines(in, out.edgeLength);
+  for (int e = 0; e < in.topo.numEdges(); ++e)
+  {
+    const bool boundary = in.topo.edgeFaceCount[e] == 1 && in.options.alignToBoundary;
+    const bool feature = in.topo.edgeFaceCount[e] == 2 && sharp[e];
+    if (!boundary && !feature)
+    {
+      continue;
+    }
+    // an inner edge in one of its faces: the other face's sectors are the same off the cut, and
+    // across it the transition (a grid symmetry) takes the line to a line
+    const int c0 = in.topo.edgeCorners(e, 0);
+    if (putOnLine(c0 / 3, c0 % 3))
+    {
+      ++(boundary ? out.alignedBoundaryEdges : out.alignedFeatureEdges);
     }
   }
   return onLine;
@@ -306,7 +353,7 @@ Eliminator constrainUnknowns(
     elim.add(integer); // v = 2s + 1
   }
   constrainTransitions(in, out, elim, progress.part(0.0, 0.9));
-  const std::vector<char> onLine = alignToBoundary(in, field, out, elim);
+  const std::vector<char> onLine = alignToLines(in, field, out, elim);
   pinComponents(in, field, onLine, out, elim);
   out.constraints = elim.Constraints;
   out.nonUnitPivots = elim.NonUnitPivots;

@@ -122,6 +122,8 @@ constexpr const char* ParameterizationEnergy = "ParameterizationEnergy";
 constexpr const char* SeamEdgeCount = "SeamEdgeCount";
 /// field, 1 x int: boundary edges put on integer grid lines (AlignToBoundary).
 constexpr const char* AlignedBoundaryEdges = "AlignedBoundaryEdges";
+/// field, 1 x int: sharp edges put on integer grid lines (FeatureLines).
+constexpr const char* AlignedFeatureEdges = "AlignedFeatureEdges";
 /// field, 1 x int: pairs of opposite singularities closer than MinimumSingularitySeparation grid
 /// edges that the solver cancelled (their branch points are gone from its map).
 constexpr const char* CancelledSingularityPairs = "CancelledSingularityPairs";

@@ -110,6 +110,7 @@ void AddFigures(
     { map.energyContinuous, map.energyRounded, map.energyFinal });
   AddField<vtkIntArray>(fd, names::SeamEdgeCount, { double(map.seamEdges) });
   AddField<vtkIntArray>(fd, names::AlignedBoundaryEdges, { double(map.alignedBoundaryEdges) });
+  AddField<vtkIntArray>(fd, names::AlignedFeatureEdges, { double(map.alignedFeatureEdges) });
   AddField<vtkIntArray>(fd, names::CancelledSingularityPairs, { double(map.cancelledPairs) });
   AddField<vtkIntArray>(
     fd, names::BranchPointsOnGrid, { double(map.branchPoints), double(map.branchPointsOnGrid) });
@@ -128,6 +129,9 @@ vtkQuadCoverSolver::vtkQuadCoverSolver()
   this->RoundingMode = FilterRounding(defaults.roundingMode);
   this->AlignToBoundary = defaults.alignToBoundary;
   this->BoundaryTolerance = defaults.boundaryTolerance;
+  this->FeatureLines = defaults.featureLines;
+  this->FeatureAngle = defaults.featureAngle;
+  this->MinimumFeatureLength = defaults.minimumFeatureLength;
   this->MaximumUntangleRounds = defaults.maximumUntangleRounds;
   this->UntangleWork = defaults.untangleWork;
   this->MinimumComponentQuadCount = defaults.minimumComponentQuadCount;
@@ -157,7 +161,7 @@ void vtkQuadCoverSolver::Execute(vtkQuadCoverSurface& in, vtkInformationVector* 
 
   const quadcover::FrameGeometry geometry = quadcover::computeFrameGeometry(in.V, in.F, in.topo);
   vtkQuadCoverEigen::RequireNumbers({ { "TargetEdgeLength", this->TargetEdgeLength },
-    { "BoundaryTolerance", this->BoundaryTolerance },
+    { "BoundaryTolerance", this->BoundaryTolerance }, { "FeatureAngle", this->FeatureAngle },
     { "CurvatureEdgeLength", this->CurvatureEdgeLength },
     { "MaximumRegridQuadCount", this->MaximumRegridQuadCount },
     { "MinimumSingularitySeparation", this->MinimumSingularitySeparation } });
@@ -168,6 +172,9 @@ void vtkQuadCoverSolver::Execute(vtkQuadCoverSurface& in, vtkInformationVector* 
   options.roundingMode = CoreRounding(this->RoundingMode);
   options.alignToBoundary = this->AlignToBoundary;
   options.boundaryTolerance = this->BoundaryTolerance;
+  options.featureLines = this->FeatureLines;
+  options.featureAngle = this->FeatureAngle;
+  options.minimumFeatureLength = this->MinimumFeatureLength;
   options.maximumUntangleRounds = this->MaximumUntangleRounds;
   options.untangleWork = this->UntangleWork;
   options.minimumComponentQuadCount = this->MinimumComponentQuadCount;
@@ -243,6 +250,9 @@ void vtkQuadCoverSolver::PrintSelf(ostream& os, vtkIndent indent)
      << "\n";
   os << indent << "AlignToBoundary: " << (this->AlignToBoundary ? "On" : "Off") << "\n";
   os << indent << "BoundaryTolerance: " << this->BoundaryTolerance << "\n";
+  os << indent << "FeatureLines: " << (this->FeatureLines ? "On" : "Off") << "\n";
+  os << indent << "FeatureAngle: " << this->FeatureAngle << "\n";
+  os << indent << "MinimumFeatureLength: " << this->MinimumFeatureLength << "\n";
   os << indent << "MaximumUntangleRounds: " << this->MaximumUntangleRounds << "\n";
   os << indent << "UntangleWork: " << this->UntangleWork << "\n";
   os << indent << "MinimumComponentQuadCount: " << this->MinimumComponentQuadCount << "\n";

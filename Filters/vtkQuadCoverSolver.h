@@ -104,6 +104,32 @@ public:
   ///@}
 
   ///@{
+  /** Put sharp edges along a frame direction on integer grid lines, as boundary edges are, so that
+   * quad edges run along the creases and quad vertices sit on them (default off: on some parts a
+   * short crease beside a branch point pulls the grid into slivers). Sharp: the normals more than
+   * FeatureAngle degrees apart, in chains of at least MinimumFeatureLength edges, on crease
+   * networks at least four grid edges long; along: within BoundaryTolerance degrees.
+   * AlignedFeatureEdges counts them. */
+  vtkSetMacro(FeatureLines, bool);
+  vtkGetMacro(FeatureLines, bool);
+  vtkBooleanMacro(FeatureLines, bool);
+  ///@}
+
+  ///@{
+  /** Degrees, in [0, 180] (default 60): edges whose normals are further apart are sharp, for
+   * FeatureLines; the same as vtkFrameSmoother's FeatureAngle. */
+  vtkSetClampMacro(FeatureAngle, double, 0.0, 180.0);
+  vtkGetMacro(FeatureAngle, double);
+  ///@}
+
+  ///@{
+  /** Sharp edges count for FeatureLines only in chains of at least this many, in [1, 10000]
+   * (default 3); the same as vtkFrameSmoother's MinimumFeatureLength. */
+  vtkSetClampMacro(MinimumFeatureLength, int, 1, 10000);
+  vtkGetMacro(MinimumFeatureLength, int);
+  ///@}
+
+  ///@{
   /** Rounds of local untangling per neighbourhood of flipped triangles, in [0, 1000] (default
    * 30; 0 leaves flips in place). */
   vtkSetClampMacro(MaximumUntangleRounds, int, 0, 1000);
@@ -201,6 +227,9 @@ protected:
   int RoundingMode;
   bool AlignToBoundary;
   double BoundaryTolerance;
+  bool FeatureLines;
+  double FeatureAngle;
+  int MinimumFeatureLength;
   int MaximumUntangleRounds;
   int UntangleWork;
   int MinimumComponentQuadCount;

@@ -267,6 +267,44 @@ TEST(Parameterization, BoundariesLieOnGridLines)
   }
 }
 
+TEST(Parameterization, SharpEdgesLieOnGridLinesWithFeatureLines)
+{
+  // a CAD-like part of right-angle creases whose walls (0.25 thick) are not a whole number of
+  // grid edges (about 0.07): held on lines, its creases pull the grid, and it stays a valid map
+  const Surface s = makeBracket(0.05);
+  ParameterizationOptions options;
+  options.featureLines = true;
+  const Chain on = runChain(s, 1000, options);
+  const Chain off = runChain(s, 1000);
+  expectIntegerGridMap(on, "bracket, feature lines");
+  const std::vector<char> sharp = sharpEdges(on.topo, on.geometry.bases,
+    SmootherOptions().featureAngle, SmootherOptions().minimumFeatureLength);
+  const int numSharp = static_cast<int>(std::count(sharp.begin(), sharp.end(), 1));
+  ASSERT_GT(numSharp, 100);
+  // along an edge on a line one coordinate is constant and integer
+  auto onLines = [&](const Chain& r) {
+    int count = 0;
+    for (int e = 0; e < r.topo.numEdges(); ++e)
+    {
+      if (!sharp[e])
+      {
+        continue;
+      }
+      const int c = r.topo.edgeCorners(e, 0);
+      const Complex a = cornerZ(r.map, c / 3, c % 3);
+      const Complex b = cornerZ(r.map, c / 3, (c % 3 + 1) % 3);
+      const bool uLine = std::abs(a.real() - b.real()) < 1e-9 && isInteger(a.real());
+      const bool vLine = std::abs(a.imag() - b.imag()) < 1e-9 && isInteger(a.imag());
+      count += uLine || vLine;
+    }
+    return count;
+  };
+  EXPECT_EQ(on.map.alignedFeatureEdges, numSharp) << "every crease runs along its frame";
+  EXPECT_EQ(onLines(on), numSharp);
+  EXPECT_EQ(off.map.alignedFeatureEdges, 0);
+  EXPECT_LT(onLines(off), numSharp / 2) << "without the option the creases fall between lines";
+}
+
 TEST(Parameterization, SectorsCutTheSurfaceOpenConsistently)
 {
   const Chain r = runChain(testSurface("knot"), 1000);
