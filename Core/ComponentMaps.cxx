@@ -120,6 +120,8 @@ void addComponent(const Inputs& in, const Component& part, const MeshTopology& t
   for (size_t i = 0; i < part.points.size(); ++i)
   {
     out.cut.copies[part.points[i]] = map.cut.copies[i];
+    out.layerShift[part.points[i]] = map.layerShift[static_cast<Eigen::Index>(i)];
+    out.singularityIndex[part.points[i]] = map.singularityIndex[static_cast<Eigen::Index>(i)];
   }
   for (const int p : map.sectorPoint)
   {
@@ -299,6 +301,8 @@ Parameterization mapEachComponent(const Inputs& in, const Progress& progress)
   out.seam.resize(in.numFaces(), 3);
   out.comb.resize(in.numFaces());
   out.combedMatching.resize(in.numFaces(), 3);
+  out.layerShift = Eigen::VectorXi::Zero(in.numVertices());
+  out.singularityIndex = Eigen::VectorXd::Zero(in.numVertices());
   out.cornerSector.assign(3 * static_cast<size_t>(in.numFaces()), -1);
   out.cut.onCut.assign(in.topo.numEdges(), 0);
   out.cut.copies.assign(in.numVertices(), 0);

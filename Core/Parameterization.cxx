@@ -301,6 +301,8 @@ Parameterization computeParameterization(const Eigen::MatrixX3d& V, const Eigen:
   {
     field = evaluateField(in);
   }
+  out.layerShift = field.topology.layerShift;
+  out.singularityIndex = field.topology.index;
 
   // ---- the surface cut open through the singular points, the frames combed off the cut ----
   cutThroughSingularities(in, field, out);

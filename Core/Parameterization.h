@@ -130,6 +130,10 @@ struct Parameterization
   std::vector<int> sectorPoint;
   Eigen::MatrixX2d sectorUV;
   std::vector<int> cornerSector;
+  /// #V: the layer shift and index of every point in the field the map follows: the given
+  /// matchings', but 0 at the points of the pairs it cancelled (cancelledPairs)
+  Eigen::VectorXi layerShift;
+  Eigen::VectorXd singularityIndex;
 
   // ---- figures ----
   /// the edge length used (world length of one grid unit): options.targetEdgeLength, or the one

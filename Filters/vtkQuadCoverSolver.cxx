@@ -95,6 +95,27 @@ void WriteSplitSurface(
   outPD->SetTCoords(vtkQuadCoverEigen::ToArray(map.sectorUV, names::UV));
 }
 
+/// LayerShift and SingularityIndex as the map has them (the matching stage's but for the pairs
+/// it cancelled), in place of the input's: per point of the output, a surface point or a sector.
+void WriteOwnSingularities(vtkPolyData* output, const quadcover::Parameterization& map, bool split)
+{
+  const vtkIdType n = output->GetNumberOfPoints();
+  vtkNew<vtkIntArray> shift;
+  shift->SetName(names::LayerShift);
+  shift->SetNumberOfTuples(n);
+  vtkNew<vtkDoubleArray> index;
+  index->SetName(names::SingularityIndex);
+  index->SetNumberOfTuples(n);
+  for (vtkIdType s = 0; s < n; ++s)
+  {
+    const int p = split ? map.sectorPoint[s] : static_cast<int>(s);
+    shift->SetValue(s, map.layerShift[p]);
+    index->SetValue(s, map.singularityIndex[p]);
+  }
+  output->GetPointData()->AddArray(shift);
+  output->GetPointData()->AddArray(index);
+}
+
 /// The map's figures as field data (the edge length in the input's units).
 void AddFigures(
   vtkFieldData* fd, const quadcover::Parameterization& map, const vtkQuadCoverSurface& in)
@@ -208,6 +229,10 @@ void vtkQuadCoverSolver::Execute(vtkQuadCoverSurface& in, vtkInformationVector* 
   else
   {
     output->ShallowCopy(in.polyData);
+  }
+  if (map.cancelledPairs > 0)
+  {
+    WriteOwnSingularities(output, map, this->SplitSeams);
   }
   output->GetCellData()->AddArray(vtkQuadCoverEigen::ToArray(map.cornerUV, names::CornerUV));
   output->GetCellData()->AddArray(

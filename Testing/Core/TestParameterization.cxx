@@ -674,12 +674,17 @@ TEST(Parameterization, OppositeSingularitiesCloserThanTheSeparationCancel)
     computeParameterization(r.s.V, r.s.F, r.topo, r.geometry, r.frameU, matching, options);
   EXPECT_EQ(kept.cancelledPairs, 0);
   EXPECT_EQ(kept.branchPoints, r.field.branchPoints + 2);
+  EXPECT_EQ(kept.layerShift, paired.layerShift) << "the map's singularities: the pair kept";
 
   options.minimumSingularitySeparation = 1.5;
   Chain c = r;
   c.map = computeParameterization(r.s.V, r.s.F, r.topo, r.geometry, r.frameU, matching, options);
   EXPECT_EQ(c.map.cancelledPairs, 1);
   EXPECT_EQ(c.map.branchPoints, r.field.branchPoints);
+  // the map says which singularities it has: the field's own, the pair's points regular
+  EXPECT_EQ(c.map.layerShift, r.field.layerShift);
+  EXPECT_LT((c.map.singularityIndex - r.field.index).cwiseAbs().maxCoeff(), 1e-9);
+  EXPECT_NE(c.map.layerShift, paired.layerShift);
   // the integer-grid map of the field without the pair: seamless, its branch points on the grid,
   // every point's index kept, nothing flipped
   expectIntegerGridMap(c, "sphere with the pair cancelled");
