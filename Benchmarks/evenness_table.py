@@ -3,13 +3,16 @@
 evaluator (../shared/tools/quadeval.py), beside QuadriFlow's irregular count from the peers' table.
 
     /usr/bin/python3 Benchmarks/evenness_table.py [--shared DIR] [--quads N]
-        [--quadcover BIN] [-- QUADCOVER OPTIONS...]
+        [--quadcover BIN] [--creases DEG] [--meshes a,b,...] [-- QUADCOVER OPTIONS...]
 
 Prints one Markdown row per mesh (irregular inner vertices, edge-length and angle RSD, Hausdorff
 distance in % of the diagonal, faces against the input's normal, χ against the input's), then the
 medians over the meshes that have a QuadriFlow figure (the truck has none: QuadriFlow fails on
 it) and the meshes that miss the per-mesh bars (edge RSD above 14%, irregular vertices not below
-QuadriFlow's). Run after `bash Scripts/build.sh`; it takes about a minute on 2 cores.
+QuadriFlow's). With --creases DEG a last column gives the share of the input's crease points
+(dihedral angle of DEG or more) that lie on a crease of the quads (`quadeval.py --creases`).
+--meshes runs only the meshes listed. Run after `bash Scripts/build.sh`; all meshes take about a
+minute on 2 cores.
 """
 import argparse
 import json
@@ -44,16 +47,20 @@ def main():
     parser.add_argument("--shared", default="../shared/data")
     parser.add_argument("--quads", type=int, default=6500)
     parser.add_argument("--quadcover", default="build/bin/quadcover")
+    parser.add_argument("--creases", type=float, default=0.0)
+    parser.add_argument("--meshes", default=",".join(MESHES))
     a = parser.parse_args(args)
     evaluator = os.path.join(a.shared, "..", "tools", "quadeval.py")
     if not os.path.exists(evaluator):
         sys.exit("evenness_table.py: no evaluator at %s" % evaluator)
     peer = quadriflow_irregular(a.shared)
-    print("| mesh | irregular (QuadriFlow) | RSD edge % | RSD angle % | Hausdorff % | flip | χ |")
-    print("|---|---:|---:|---:|---:|---:|---:|")
+    crease = ["--creases", str(a.creases)] if a.creases > 0 else []
+    print("| mesh | irregular (QuadriFlow) | RSD edge % | RSD angle % | Hausdorff % | flip | χ |" +
+          (" creases kept |" if crease else ""))
+    print("|---|---:|---:|---:|---:|---:|---:|" + ("---:|" if crease else ""))
     rows = {}
     with tempfile.TemporaryDirectory() as tmp:
-        for name in MESHES:
+        for name in a.meshes.split(","):
             mesh = os.path.join(a.shared, name + ".obj")
             if not os.path.exists(mesh):
                 continue
@@ -63,14 +70,16 @@ def main():
             if run.returncode != 0 or not os.path.exists(out):
                 print("| %s | failed: %s |" % (name, run.stderr.strip().splitlines()[-1:]))
                 continue
-            figures = subprocess.run([sys.executable, evaluator, out, "--ref", mesh, "--json"],
+            figures = subprocess.run([sys.executable, evaluator, out, "--ref", mesh, "--json"] + crease,
                                      capture_output=True, text=True, check=True).stdout
             r = json.loads(figures)
             rows[name] = r
+            kept = r.get("crease_kept_share")
             print("| %s | %d (%s) | %.1f | %.1f | %.2f | %d | %d |" % (
                 name, r["irregular_interior"], peer.get(name, "—"), r["rsd_edge_pct"],
                 r["rsd_angle_pct"], r["hausdorff_pct_diag"], r["faces_against_ref_normal"],
-                r["euler"]))
+                r["euler"]) + ((" %s |" % ("—" if kept is None else "%.0f%%" % (100 * kept)))
+                               if crease else ""))
     ranked = {n: r for n, r in rows.items() if n in peer}
     if not ranked:
         return
