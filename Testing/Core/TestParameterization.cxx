@@ -34,6 +34,17 @@ Complex cornerZ(const Parameterization& m, int f, int k)
 
 using checks::isInteger;
 
+/// Whether edge e lies on a grid line: one coordinate constant along it, and integer.
+bool onGridLine(const Chain& r, int e)
+{
+  const int c = r.topo.edgeCorners(e, 0);
+  const Complex a = cornerZ(r.map, c / 3, c % 3);
+  const Complex b = cornerZ(r.map, c / 3, (c % 3 + 1) % 3);
+  const bool uLine = std::abs(a.real() - b.real()) < 1e-9 && isInteger(a.real());
+  const bool vLine = std::abs(a.imag() - b.imag()) < 1e-9 && isInteger(a.imag());
+  return uLine || vLine;
+}
+
 int seamViolations(const Chain& r, double translationTolerance = 1e-6)
 {
   return checks::seamViolations(r.s.F, r.topo, r.map.cornerUV, translationTolerance);
@@ -251,19 +262,13 @@ TEST(Parameterization, BoundariesLieOnGridLines)
   const Chain r = runChain(testSurface("cylinder"), 800);
   expectIntegerGridMap(r, "cylinder");
   EXPECT_EQ(r.map.alignedBoundaryEdges, 2 * 48);
-  // along every boundary edge one coordinate is constant and integer
   for (int e = 0; e < r.topo.numEdges(); ++e)
   {
     if (r.topo.edgeFaceCount[e] != 1)
     {
       continue;
     }
-    const int c = r.topo.edgeCorners(e, 0);
-    const Complex a = cornerZ(r.map, c / 3, c % 3);
-    const Complex b = cornerZ(r.map, c / 3, (c % 3 + 1) % 3);
-    const bool uLine = std::abs(a.real() - b.real()) < 1e-9 && isInteger(a.real());
-    const bool vLine = std::abs(a.imag() - b.imag()) < 1e-9 && isInteger(a.imag());
-    EXPECT_TRUE(uLine || vLine) << "boundary edge " << e << ": " << a << " " << b;
+    EXPECT_TRUE(onGridLine(r, e)) << "boundary edge " << e;
   }
 }
 
@@ -281,7 +286,6 @@ TEST(Parameterization, SharpEdgesLieOnGridLinesWithFeatureLines)
     SmootherOptions().featureAngle, SmootherOptions().minimumFeatureLength);
   const int numSharp = static_cast<int>(std::count(sharp.begin(), sharp.end(), 1));
   ASSERT_GT(numSharp, 100);
-  // along an edge on a line one coordinate is constant and integer
   auto onLines = [&](const Chain& r) {
     int count = 0;
     for (int e = 0; e < r.topo.numEdges(); ++e)
@@ -290,12 +294,7 @@ TEST(Parameterization, SharpEdgesLieOnGridLinesWithFeatureLines)
       {
         continue;
       }
-      const int c = r.topo.edgeCorners(e, 0);
-      const Complex a = cornerZ(r.map, c / 3, c % 3);
-      const Complex b = cornerZ(r.map, c / 3, (c % 3 + 1) % 3);
-      const bool uLine = std::abs(a.real() - b.real()) < 1e-9 && isInteger(a.real());
-      const bool vLine = std::abs(a.imag() - b.imag()) < 1e-9 && isInteger(a.imag());
-      count += uLine || vLine;
+      count += onGridLine(r, e);
     }
     return count;
   };
