@@ -32,7 +32,9 @@ def quadriflow_irregular(shared):
     found = {}
     readme = os.path.join(shared, "..", "peers", "README.md")
     if os.path.exists(readme):
-        for line in open(readme):
+        with open(readme, encoding="utf-8") as lines:
+            table = lines.read().splitlines()
+        for line in table:
             m = re.match(r"\| (\S+) \(-?\d+\) \| QuadriFlow \| (\d+) \|", line)
             if m:
                 found[m.group(1)] = int(m.group(2))
@@ -63,16 +65,22 @@ def main():
         for name in a.meshes.split(","):
             mesh = os.path.join(a.shared, name + ".obj")
             if not os.path.exists(mesh):
+                print("| %s | not found: %s |" % (name, mesh) + " |" * (5 if not crease else 6))
                 continue
             out = os.path.join(tmp, name + ".vtp")
             run = subprocess.run([a.quadcover, mesh, "-o", out, "--target-quad-count",
                                   str(a.quads)] + options, capture_output=True, text=True)
+            columns = " |" * (6 if not crease else 7)  # the empty cells after the message
             if run.returncode != 0 or not os.path.exists(out):
-                print("| %s | failed: %s |" % (name, run.stderr.strip().splitlines()[-1:]))
+                last = (run.stderr.strip().splitlines() or ["no output"])[-1]
+                print("| %s | quadcover failed: %s |" % (name, last) + columns[2:])
                 continue
-            figures = subprocess.run([sys.executable, evaluator, out, "--ref", mesh, "--json"] + crease,
-                                     capture_output=True, text=True, check=True).stdout
-            r = json.loads(figures)
+            figures = subprocess.run([sys.executable, evaluator, out, "--ref", mesh, "--json"] +
+                                     crease, capture_output=True, text=True)
+            if figures.returncode != 0:
+                print("| %s | the evaluator failed |" % name + columns[2:])
+                continue
+            r = json.loads(figures.stdout)
             rows[name] = r
             kept = r.get("crease_kept_share")
             print("| %s | %d (%s) | %.1f | %.1f | %.2f | %d | %d |" % (

@@ -180,7 +180,8 @@ private:
     }
   }
 
-  /// The boundary edges whose two ends share a coordinate that is an integer unknown.
+  /// The boundary edges, and with featureLines the inner ones (each once), whose two ends share a
+  /// coordinate that is an integer unknown: the edges on boundary and feature lines.
   std::vector<LineEdge> lineEdges(
     const Inputs& in, const Parameterization& out, const Eigen::MatrixX2d& uv) const
   {
@@ -189,7 +190,8 @@ private:
     {
       for (int k = 0; k < 3; ++k)
       {
-        if (in.topo.faceNeighbors(f, k) >= 0)
+        const int g = in.topo.faceNeighbors(f, k);
+        if (g >= 0 && (!in.options.featureLines || g < f))
         {
           continue;
         }
@@ -214,7 +216,8 @@ private:
     return edges;
   }
 
-  /// Pairs of boundary lines that face each other less than a grid cell apart.
+  /// Pairs of boundary or feature lines that face each other less than a grid cell apart (two
+  /// creases of a thin rib, say).
   void addLinePairs(const Inputs& in, const Parameterization& out, const Eigen::MatrixX2d& uv)
   {
     const std::vector<LineEdge> edges = lineEdges(in, out, uv);

@@ -159,8 +159,17 @@ std::vector<char> alignToLines(
       continue;
     }
     // an inner edge in one of its faces: the other face's sectors are the same off the cut, and
-    // across it the transition (a grid symmetry) takes the line to a line
+    // across it the transition (a grid symmetry) takes the line to a line; but only where the
+    // other face's frame follows it too (else that face would be pulled onto the line)
     const int c0 = in.topo.edgeCorners(e, 0);
+    if (feature)
+    {
+      const int c1 = in.topo.edgeCorners(e, 1);
+      if (constantCoordinate(in, field, out, c1 / 3, c1 % 3, tolerance) < 0)
+      {
+        continue;
+      }
+    }
     if (putOnLine(c0 / 3, c0 % 3))
     {
       ++(boundary ? out.alignedBoundaryEdges : out.alignedFeatureEdges);

@@ -68,7 +68,8 @@ constexpr const char* ConstrainedFrameCount = "ConstrainedFrameCount";
 /// X_0 = FrameU, X_1 = n x FrameU, X_2 = -FrameU, X_3 = -n x FrameU; -1 on boundary edges.
 constexpr const char* Matching = "Matching";
 /// point, 1 x int: layer shift (Def. 4) in {0..3}; 0 on the boundary. The solver's output has its
-/// map's (0 at the points of the pairs it cancelled, CancelledSingularityPairs).
+/// map's: from the Matching it read, 0 at the points of the pairs it cancelled
+/// (CancelledSingularityPairs).
 constexpr const char* LayerShift = "LayerShift";
 /// point, 1 x double: the frame field's index at the point (a multiple of 1/4 inside); the
 /// solver's output, its map's, as LayerShift.

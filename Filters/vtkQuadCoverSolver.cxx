@@ -95,8 +95,9 @@ void WriteSplitSurface(
   outPD->SetTCoords(vtkQuadCoverEigen::ToArray(map.sectorUV, names::UV));
 }
 
-/// LayerShift and SingularityIndex as the map has them (the matching stage's but for the pairs
-/// it cancelled), in place of the input's: per point of the output, a surface point or a sector.
+/// LayerShift and SingularityIndex as the map has them (those of the Matching it read, but for
+/// the pairs it cancelled), in place of any the input has: per point of the output, a surface
+/// point or a sector.
 void WriteOwnSingularities(vtkPolyData* output, const quadcover::Parameterization& map, bool split)
 {
   const vtkIdType n = output->GetNumberOfPoints();
@@ -230,10 +231,7 @@ void vtkQuadCoverSolver::Execute(vtkQuadCoverSurface& in, vtkInformationVector* 
   {
     output->ShallowCopy(in.polyData);
   }
-  if (map.cancelledPairs > 0)
-  {
-    WriteOwnSingularities(output, map, this->SplitSeams);
-  }
+  WriteOwnSingularities(output, map, this->SplitSeams);
   output->GetCellData()->AddArray(vtkQuadCoverEigen::ToArray(map.cornerUV, names::CornerUV));
   output->GetCellData()->AddArray(
     vtkQuadCoverEigen::ToArray<vtkUnsignedCharArray>(map.seam, names::Seam));

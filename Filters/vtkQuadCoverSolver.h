@@ -17,7 +17,7 @@
  * Triangles whose image is flipped (by a field the grid cannot follow, or by rounding) are then
  * untangled: the map moves in their neighbourhood to minimize a foldover-free distortion energy
  * (Garanzha et al. 2021), the integers kept (MaximumUntangleRounds). With AlignToBoundary, boundary
- * edges along a frame direction lie on integer grid lines.
+ * edges along a frame direction lie on integer grid lines; with FeatureLines, sharp edges too.
  *
  * The edge length of the grid (the world length of one grid unit) is TargetEdgeLength when
  * positive. Otherwise it is chosen so that the continuous map covers TargetQuadCount unit cells
@@ -30,9 +30,11 @@
  * vtkMatchingBuilder writes them.
  *
  * Output: the surface with cell data CornerUV (6 x double: u0 v0 u1 v1 u2 v2 at the triangle's
- * points) and Seam (3 x unsigned char: 1 where edge k, from point k to k+1, is on the cut), field
- * data EdgeLength, FlippedTriangles, WindingErrors, ParameterizationEnergy, SeamEdgeCount,
- * AlignedBoundaryEdges, CancelledSingularityPairs, BranchPointsOnGrid and SeamTranslationError (see
+ * points) and Seam (3 x unsigned char: 1 where edge k, from point k to k+1, is on the cut), point
+ * data LayerShift and SingularityIndex as its map has them (from Matching, 0 at the points of the
+ * pairs it cancelled), field data EdgeLength, FlippedTriangles, WindingErrors,
+ * ParameterizationEnergy, SeamEdgeCount, AlignedBoundaryEdges, AlignedFeatureEdges,
+ * CancelledSingularityPairs, BranchPointsOnGrid and SeamTranslationError (see
  * vtkQuadCoverArrayNames.h). With SplitSeams
  * the surface is cut open along the seams instead: one point per sector of a point between seam
  * edges, point data UV (the active texture coordinates) and SurfacePointId, so a checkerboard
@@ -97,18 +99,19 @@ public:
   ///@}
 
   ///@{
-  /** Degrees, in [0, 45] (default 10): how far a boundary edge may turn from its frame and
-   * still count as along it. */
+  /** Degrees, in [0, 45] (default 10): how far a boundary edge (or, with FeatureLines, a sharp
+   * edge) may turn from its frame and still count as along it. */
   vtkSetClampMacro(BoundaryTolerance, double, 0.0, 45.0);
   vtkGetMacro(BoundaryTolerance, double);
   ///@}
 
   ///@{
   /** Put sharp edges along a frame direction on integer grid lines, as boundary edges are, so that
-   * quad edges run along the creases and quad vertices sit on them (default off: on some parts a
-   * short crease beside a branch point pulls the grid into slivers). Sharp: the normals more than
-   * FeatureAngle degrees apart, in chains of at least MinimumFeatureLength edges, on crease
-   * networks at least four grid edges long; along: within BoundaryTolerance degrees.
+   * quad edges run along the creases and quad vertices sit on them (default off: meant for CAD
+   * parts; on scans it puts noisy sharp edges on lines at a cost in time and evenness). Sharp: the
+   * normals more than FeatureAngle degrees apart, in chains of at least MinimumFeatureLength
+   * edges, on crease networks at least four grid edges long; along: within BoundaryTolerance
+   * degrees of the frame in both triangles.
    * AlignedFeatureEdges counts them. */
   vtkSetMacro(FeatureLines, bool);
   vtkGetMacro(FeatureLines, bool);

@@ -311,7 +311,7 @@ std::vector<Option> StageOptions(Pipeline& p)
     QC_NUMBER("smooth", smoother, ConvergenceTolerance,
       "stop when an iteration lowers the energy by less than this fraction"),
     QC_NUMBER2("smooth", smoother, solver, FeatureAngle,
-      "edges sharper than this (degrees) are features"),
+      "edges sharper than this (degrees) are features (held frames, feature lines)"),
     QC_NUMBER2("smooth", smoother, solver, MinimumFeatureLength,
       "shortest chain of sharp edges that is a feature"),
     QC_SWITCH("smooth", smoother, AlignToFeatures, "hold frames along sharp edges"),

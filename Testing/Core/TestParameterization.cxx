@@ -300,7 +300,6 @@ TEST(Parameterization, SharpEdgesLieOnGridLinesWithFeatureLines)
   };
   EXPECT_EQ(on.map.alignedFeatureEdges, numSharp) << "every crease runs along its frame";
   EXPECT_EQ(onLines(on), numSharp);
-  EXPECT_EQ(off.map.alignedFeatureEdges, 0);
   EXPECT_LT(onLines(off), numSharp / 2) << "without the option the creases fall between lines";
 }
 

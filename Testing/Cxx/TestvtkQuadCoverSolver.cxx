@@ -199,6 +199,11 @@ TEST(vtkQuadCoverSolver, SplitSeamsCutsTheSurfaceOpenWithTextureCoordinates)
   EXPECT_STREQ(tc->GetName(), names::UV);
   vtkDataArray* ids = split->GetPointData()->GetArray(names::SurfacePointId);
   ASSERT_NE(ids, nullptr);
+  // the map's singularities, per sector those of its point
+  vtkDataArray* shiftSplit = split->GetPointData()->GetArray(names::LayerShift);
+  vtkDataArray* shiftWhole = whole->GetPointData()->GetArray(names::LayerShift);
+  ASSERT_NE(shiftSplit, nullptr);
+  ASSERT_NE(shiftWhole, nullptr);
   const Eigen::MatrixXd uv = CornerUV(split);
   const Eigen::MatrixX3i Fs = vtkQuadCoverEigen::Triangles(split);
   const Eigen::MatrixX3i Fw = vtkQuadCoverEigen::Triangles(whole);
@@ -208,6 +213,7 @@ TEST(vtkQuadCoverSolver, SplitSeamsCutsTheSurfaceOpenWithTextureCoordinates)
     {
       const vtkIdType p = Fs(f, k);
       ASSERT_EQ(ids->GetTuple1(p), Fw(f, k)) << "same triangle, same original point";
+      ASSERT_EQ(shiftSplit->GetTuple1(p), shiftWhole->GetTuple1(Fw(f, k)));
       ASSERT_EQ(tc->GetComponent(p, 0), uv(f, 2 * k));
       ASSERT_EQ(tc->GetComponent(p, 1), uv(f, 2 * k + 1));
       double a[3], b[3];
@@ -258,6 +264,13 @@ TEST_P(ParameterizeOn, SeamlessGridMapWithBranchPointsOnTheGridAndNoFlips)
   }
   EXPECT_EQ(checks::seamViolations(F, topo, uv), 0);
   EXPECT_EQ(checks::branchPointsOffGrid(F, topo, layerShift, uv), 0);
+  // the solver's LayerShift is its map's: as many branch points as it reports
+  int branchPoints = 0;
+  for (vtkIdType p = 0; p < shift->GetNumberOfTuples(); ++p)
+  {
+    branchPoints += layerShift[p] != 0 && !topo.boundaryVertex[p];
+  }
+  EXPECT_EQ(branchPoints, Field(out, names::BranchPointsOnGrid, 0));
   EXPECT_EQ(checks::flippedTriangles(uv), 0);
   // Every point keeps its index, except one negative cone of the teapot whose six triangles,
   // two of them slivers of 9 and 12 degrees, span up to two grid cells: a map linear on them
