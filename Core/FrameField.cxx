@@ -203,6 +203,30 @@ std::vector<double> componentAreas(
   return area;
 }
 
+std::vector<int> edgeNetworks(const MeshTopology& topo, const std::vector<char>& flagged)
+{
+  const int ne = topo.numEdges();
+  std::vector<int> parent(ne), firstAt(topo.numVertices, -1);
+  for (int e = 0; e < ne; ++e)
+  {
+    parent[e] = e;
+  }
+  for (int e = 0; e < ne; ++e)
+  {
+    for (int j = 0; flagged[e] && j < 2; ++j)
+    {
+      int& other = firstAt[topo.edges(e, j)];
+      other = other < 0 ? e : other;
+      unite(parent, other, e);
+    }
+  }
+  for (int e = 0; e < ne; ++e)
+  {
+    parent[e] = findRoot(parent, e);
+  }
+  return parent;
+}
+
 std::vector<char> sharpEdges(
   const MeshTopology& topo, const FaceBases& bases, double featureAngle, int minimumLength)
 {
@@ -217,28 +241,15 @@ std::vector<char> sharpEdges(
       sharp[e] = bases.normal.row(f).dot(bases.normal.row(g)) < cosFeature;
     }
   }
-  std::vector<int> parent(ne), firstAt(topo.numVertices, -1);
-  for (int e = 0; e < ne; ++e)
-  {
-    parent[e] = e;
-  }
-  for (int e = 0; e < ne; ++e)
-  {
-    for (int j = 0; sharp[e] && j < 2; ++j)
-    {
-      int& other = firstAt[topo.edges(e, j)];
-      other = other < 0 ? e : other;
-      unite(parent, other, e);
-    }
-  }
+  const std::vector<int> network = edgeNetworks(topo, sharp);
   std::vector<int> size(ne, 0);
   for (int e = 0; e < ne; ++e)
   {
-    size[findRoot(parent, e)] += sharp[e];
+    size[network[e]] += sharp[e];
   }
   for (int e = 0; e < ne; ++e)
   {
-    sharp[e] = sharp[e] && size[findRoot(parent, e)] >= minimumLength;
+    sharp[e] = sharp[e] && size[network[e]] >= minimumLength;
   }
   return sharp;
 }

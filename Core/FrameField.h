@@ -91,6 +91,10 @@ double surfaceArea(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F);
 std::vector<double> componentAreas(
   const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F, const MeshTopology& topo);
 
+/// The networks of the flagged edges (#E, 1 where flagged): per edge, one edge of the flagged
+/// edges joined to it through shared points, the same for all of them (an unflagged edge: itself).
+std::vector<int> edgeNetworks(const MeshTopology& topo, const std::vector<char>& flagged);
+
 /**
  * Sharp inner edges: the two triangles' normals more than featureAngle degrees apart, kept only in
  * chains of at least minimumLength sharp edges joined end to end (isolated sharp edges are noise).

@@ -3,10 +3,8 @@
 #include "ParameterizationSteps.h"
 
 #include "FrameField.h"
-#include "UnionFind.h"
 
 #include <cmath>
-#include <numeric>
 #include <utility>
 
 namespace quadcover
@@ -99,28 +97,18 @@ std::vector<char> featureLines(const Inputs& in, double edgeLength)
   }
   std::vector<char> sharp = sharpEdges(
     topo, in.geometry.bases, in.options.featureAngle, in.options.minimumFeatureLength);
-  std::vector<int> parent(topo.numVertices);
-  std::iota(parent.begin(), parent.end(), 0);
+  const std::vector<int> network = edgeNetworks(topo, sharp);
+  std::vector<double> length(topo.numEdges(), 0.0);
   for (int e = 0; e < topo.numEdges(); ++e)
   {
     if (sharp[e])
     {
-      unite(parent, topo.edges(e, 0), topo.edges(e, 1));
-    }
-  }
-  std::vector<double> length(topo.numVertices, 0.0);
-  for (int e = 0; e < topo.numEdges(); ++e)
-  {
-    if (sharp[e])
-    {
-      length[findRoot(parent, topo.edges(e, 0))] +=
-        (in.V.row(topo.edges(e, 0)) - in.V.row(topo.edges(e, 1))).norm();
+      length[network[e]] += (in.V.row(topo.edges(e, 0)) - in.V.row(topo.edges(e, 1))).norm();
     }
   }
   for (int e = 0; e < topo.numEdges(); ++e)
   {
-    sharp[e] = sharp[e] &&
-      length[findRoot(parent, topo.edges(e, 0))] >= MinimumFeatureLineLength * edgeLength;
+    sharp[e] = sharp[e] && length[network[e]] >= MinimumFeatureLineLength * edgeLength;
   }
   return sharp;
 }
