@@ -3,6 +3,7 @@
 #include "Matchings.h"
 
 #include "MatchingAngles.h"
+#include "SurfaceDisks.h"
 
 #include <algorithm>
 #include <cmath>
@@ -247,9 +248,12 @@ void spreadLengths(const Steps& steps, const FrameGeometry& geometry, double lim
 
 /// Where one quarter of a's index can go: the end of the cheapest path (ties: fewer edges) over
 /// regular points to one at least `distance` edges and `length` long from a along the path and
-/// outside every neighbourhood `hops` and `near` mark; -1 when the search finds none.
+/// outside every neighbourhood `hops` and `near` mark; -1 when the search finds none. delta is
+/// the quarter turns the path's matchings change by: -1 takes a positive quarter from a, +1 a
+/// negative one.
 int findSplitTarget(Optimizer& o, int a, int distance, double length, const std::vector<int>& hops,
-  const std::vector<double>& near, std::vector<int>& pathHops, std::vector<double>& pathLength)
+  const std::vector<double>& near, std::vector<int>& pathHops, std::vector<double>& pathLength,
+  int delta = -1)
 {
   PathSearch& S = o.search;
   S.begin(a);
@@ -274,7 +278,7 @@ int findSplitTarget(Optimizer& o, int a, int distance, double length, const std:
     {
       const Step& s = o.steps[u][i];
       double added = 0.0;
-      if (o.q[s.to] != 0 || !o.stepCost(s, -1, added))
+      if (o.q[s.to] != 0 || !o.stepCost(s, delta, added))
       {
         continue;
       }
@@ -620,6 +624,26 @@ double objective(const Eigen::MatrixX3i& F, const MeshTopology& topo, const Fram
     scaledMatchingCost(F, topo, geometry, topology, options.lengthScaledCost);
 }
 
+/// Changes the matchings along the path the last search found from a to u by delta quarter
+/// turns, and marks the faces on both sides of its edges in changedFaces; undone (false) when
+/// that leaves a's component twisted.
+bool changeUntwisted(
+  Optimizer& o, TwistCheck& twist, int a, int u, int delta, std::vector<char>& changedFaces)
+{
+  o.changePath(a, u, delta);
+  if (twist.twisted(o.topo.vertexComponent[a]))
+  {
+    o.changePath(a, u, -delta);
+    return false;
+  }
+  for (int x = u; x != a; x = o.search.cameFrom[x])
+  {
+    const Step& s = o.search.stepTo(o.steps, x);
+    changedFaces[s.g] = changedFaces[s.f] = 1;
+  }
+  return true;
+}
+
 /// The nearest point (along edge paths over regular points, at most maxLength long) where a
 /// path from a with delta = -q(a) quarter turns cancels a singularity of the opposite index; -1
 /// when there is none. Ties: the first the search reaches.
@@ -673,19 +697,21 @@ int cancelClosePairs(const Eigen::MatrixX3i& F, const MeshTopology& topo,
   const BranchPointOptions options;
   Optimizer o(F, topo, geometry, frameU, topology, options);
   TwistCheck twist(o);
+  DiskTest disk(F, topo, geometry.edgeLength);
   std::set<std::pair<int, int>> twistRejected;
-  // Only on components without handles: there a path also turns the field along every handle's
-  // loop that it crosses, which no index accounts for (the smoothest field's small tori in
-  // Data/components.obj, cancelled down to a pair or none, kept folds on every grid).
+  // On a component with handles only inside a disk around the pair: a path that a handle's loop
+  // must cross also turns the field along that loop, which no index accounts for (the smoothest
+  // field's small tori in Data/components.obj, cancelled down to a pair or none, kept folds on
+  // every grid).
   // The closest pairs first: each quarter's distance to its nearest partner, then in that order.
   std::vector<std::pair<double, int>> order;
   for (int a = 0; a < topo.numVertices; ++a)
   {
-    if (std::abs(o.q[a]) == 1 && !topo.boundaryVertex[a] &&
-      topo.components[topo.vertexComponent[a]].genus == 0)
+    if (std::abs(o.q[a]) == 1 && !topo.boundaryVertex[a])
     {
       const int u = findCancelPartner(o, a, maxLength, twistRejected);
-      if (u >= 0)
+      if (u >= 0 &&
+        (topo.components[topo.vertexComponent[a]].genus == 0 || disk.inside(a, 2.0 * maxLength)))
       {
         order.emplace_back(o.search.dist[u], a);
       }
@@ -704,18 +730,10 @@ int cancelClosePairs(const Eigen::MatrixX3i& F, const MeshTopology& topo,
     {
       continue;
     }
-    const int delta = -o.q[a];
-    o.changePath(a, u, delta);
-    if (twist.twisted(topo.vertexComponent[a]))
+    if (!changeUntwisted(o, twist, a, u, -o.q[a], changedFaces))
     {
-      o.changePath(a, u, -delta);
       twistRejected.insert({ std::min(a, u), std::max(a, u) });
       continue;
-    }
-    for (int x = u; x != a; x = o.search.cameFrom[x])
-    {
-      const Step& s = o.search.stepTo(o.steps, x);
-      changedFaces[s.g] = changedFaces[s.f] = 1;
     }
     ++cancelled;
   }
@@ -724,6 +742,83 @@ int cancelClosePairs(const Eigen::MatrixX3i& F, const MeshTopology& topo,
     topology = evaluateMatchings(F, topo, geometry, frameU, topology.matching);
   }
   return cancelled;
+}
+
+int spreadCloseQuarters(const Eigen::MatrixX3i& F, const MeshTopology& topo,
+  const FrameGeometry& geometry, const Eigen::MatrixX3d& frameU, FrameTopology& topology,
+  double closerThan, double minLength, std::vector<char>& changedFaces)
+{
+  changedFaces.assign(F.rows(), 0);
+  if (!(closerThan > 0) || !(minLength > 0) || topology.singularities < 2 ||
+    geometry.edgeLength.rows() == 0)
+  {
+    return 0;
+  }
+  const BranchPointOptions options;
+  Optimizer o(F, topo, geometry, frameU, topology, options);
+  TwistCheck twist(o);
+  DiskTest disk(F, topo, geometry.edgeLength);
+  const int nv = topo.numVertices;
+  std::vector<int> quarters, others, pathHops(nv, 0);
+  const std::vector<int> anyHops(nv, std::numeric_limits<int>::max());
+  std::vector<double> near(nv), pathLength(nv, 0.0);
+  for (int a = 0; a < nv; ++a)
+  {
+    if (std::abs(o.q[a]) == 1 && !topo.boundaryVertex[a])
+    {
+      quarters.push_back(a);
+    }
+  }
+  int moved = 0;
+  for (const int a : quarters)
+  {
+    if (std::abs(o.q[a]) != 1)
+    {
+      continue;
+    }
+    // the nearest other singularity of the same sign, within closerThan
+    others.clear();
+    for (int v = 0; v < nv; ++v)
+    {
+      if (o.q[v] == o.q[a] && v != a)
+      {
+        others.push_back(v);
+      }
+    }
+    spreadLengths(o.steps, geometry, closerThan, others, near);
+    if (!(near[a] < closerThan) ||
+      (topo.components[topo.vertexComponent[a]].genus != 0 &&
+        !disk.inside(a, 5.0 * minLength)))
+    {
+      continue;
+    }
+    // a regular point at least minLength from every other singularity, at most 4 minLength away
+    others.clear();
+    for (int v = 0; v < nv; ++v)
+    {
+      if (o.q[v] != 0 && v != a)
+      {
+        others.push_back(v);
+      }
+    }
+    spreadLengths(o.steps, geometry, minLength, others, near);
+    const int delta = -o.q[a];
+    const int target =
+      findSplitTarget(o, a, 1, minLength, anyHops, near, pathHops, pathLength, delta);
+    if (target < 0 || pathLength[target] > 4.0 * minLength)
+    {
+      continue;
+    }
+    if (changeUntwisted(o, twist, a, target, delta, changedFaces))
+    {
+      ++moved;
+    }
+  }
+  if (moved > 0)
+  {
+    topology = evaluateMatchings(F, topo, geometry, frameU, topology.matching);
+  }
+  return moved;
 }
 
 double scaledMatchingCost(const Eigen::MatrixX3i& F, const MeshTopology& topo,

@@ -159,11 +159,12 @@ BranchPointReport optimizeBranchPoints(const Eigen::MatrixX3i& F, const MeshTopo
  * maxLength along an edge path over regular inner points: the matchings along the shortest such
  * path change by a quarter turn, which clears both ends and leaves the points between alone.
  * The closest pairs go first; a cancellation that would leave a tube twisted (see
- * optimizeBranchPoints) is undone. Only on components without handles (genus 0): there a path
- * changes the field's turning only along loops around its ends, which the indices account for;
- * across a handle it also turns the field along the handle's loops, and a flat torus has no
- * such turning (the smoothest field's small tori of Data/components.obj kept folds on every
- * grid). A grid cannot keep two singularities closer than about one
+ * optimizeBranchPoints) is undone. On a component with handles only where the triangles within
+ * 2 maxLength of the first point form a disk: a path there changes the field's turning only
+ * along loops around its ends, which the indices account for, as on a component without
+ * handles; a path that a handle's loop must cross also turns the field along that loop, and a
+ * flat torus has no such turning (the smoothest field's small tori of Data/components.obj kept
+ * folds on every grid). A grid cannot keep two singularities closer than about one
  * of its edges apart: both must lie on grid points. Updates `topology` in place.
  * @param[out] changedFaces #F, 1 for the faces on both sides of a changed edge
  * @return the number of pairs cancelled
@@ -171,6 +172,22 @@ BranchPointReport optimizeBranchPoints(const Eigen::MatrixX3i& F, const MeshTopo
 int cancelClosePairs(const Eigen::MatrixX3i& F, const MeshTopology& topo,
   const FrameGeometry& geometry, const Eigen::MatrixX3d& frameU, FrameTopology& topology,
   double maxLength, std::vector<char>& changedFaces);
+
+/**
+ * Moves inner quarter singularities that lie closer than `closerThan` (along edge paths) to one
+ * of the same index apart: each such quarter goes along the cheapest path over regular points to
+ * one at least minLength from every other singularity, at most 4 minLength away (no grid can put
+ * two singularities much less than one of its edges apart on grid points; three +1/4 within half
+ * a grid edge of each other on cheburashka at 3,000 quads left triangles flipped, while the
+ * corners of a plate thinner than a grid edge, 0.8 of one apart, stay best where they are).
+ * Changes on a component with handles only inside a disk around the quarter (5 minLength), and
+ * none that leaves a tube twisted (as cancelClosePairs). Updates `topology` in place.
+ * @param[out] changedFaces #F, 1 for the faces on both sides of a changed edge
+ * @return the number of quarters moved
+ */
+int spreadCloseQuarters(const Eigen::MatrixX3i& F, const MeshTopology& topo,
+  const FrameGeometry& geometry, const Eigen::MatrixX3d& frameU, FrameTopology& topology,
+  double closerThan, double minLength, std::vector<char>& changedFaces);
 
 /**
  * Turns the frames so that they agree with given matchings: the angles alpha minimizing

@@ -150,11 +150,14 @@ void measureSeams(const Inputs& in, Parameterization& out)
 /// quads between them (armadillo's smoothest field at 1,000 quads: 180 singularities, dozens of
 /// pairs within a grid edge, and a map that folds). The frames within a few grid edges of the
 /// changed edges turn to agree with the new matchings (fitFramesToMatchings), the rest held.
+/// Then quarters closer than a third of the separation to one of the same index move apart, to
+/// the separation (spreadCloseQuarters), their number in `moved`.
 /// `given` is the field of in's matchings (evaluateField). Returns the pairs cancelled; frameU
-/// and matching are set when there are any.
+/// and matching are set when any changed.
 int cancelPairsCloserThanGrid(const Inputs& in, const FrameTopology& given, double edgeLength,
-  Eigen::MatrixX3d& frameU, Eigen::MatrixX3i& matching)
+  Eigen::MatrixX3d& frameU, Eigen::MatrixX3i& matching, int& moved)
 {
+  moved = 0;
   const double separation = in.options.minimumSingularitySeparation * edgeLength;
   if (!(separation > 0))
   {
@@ -164,9 +167,16 @@ int cancelPairsCloserThanGrid(const Inputs& in, const FrameTopology& given, doub
   std::vector<char> changed;
   const int cancelled =
     cancelClosePairs(in.F, in.topo, in.geometry, in.frameU, topology, separation, changed);
-  if (cancelled == 0)
+  std::vector<char> movedFaces;
+  moved = spreadCloseQuarters(
+    in.F, in.topo, in.geometry, in.frameU, topology, separation / 3.0, separation, movedFaces);
+  if (cancelled == 0 && moved == 0)
   {
     return 0;
+  }
+  for (int f = 0; f < in.numFaces(); ++f)
+  {
+    changed[f] = changed[f] || movedFaces[f];
   }
   // free: the faces within 2 separations (in rings of the reference length) of a changed edge
   const int rings = 2 +
@@ -292,12 +302,12 @@ Parameterization computeParameterization(const Eigen::MatrixX3d& V, const Eigen:
   Field field = evaluateField(given);
   Eigen::MatrixX3d ownFrames;
   Eigen::MatrixX3i ownMatching;
-  out.cancelledPairs =
-    cancelPairsCloserThanGrid(given, field.topology, out.edgeLength, ownFrames, ownMatching);
-  const Inputs in = out.cancelledPairs == 0
-    ? given
-    : Inputs{ V, F, topo, geometry, ownFrames, ownMatching, options };
-  if (out.cancelledPairs > 0)
+  out.cancelledPairs = cancelPairsCloserThanGrid(
+    given, field.topology, out.edgeLength, ownFrames, ownMatching, out.movedSingularities);
+  const bool changed = out.cancelledPairs > 0 || out.movedSingularities > 0;
+  const Inputs in =
+    changed ? Inputs{ V, F, topo, geometry, ownFrames, ownMatching, options } : given;
+  if (changed)
   {
     field = evaluateField(in);
   }

@@ -106,9 +106,11 @@ struct ParameterizationOptions
   /// coarse against its singularities, and its trials are cheap.
   double maximumRegridQuadCount = 1000;
   /// Opposite quarter singularities (+1/4 and -1/4) closer than this many grid edges along the
-  /// surface cancel before the map is cut (cancelClosePairs), the frames around the changed edges
-  /// turned to agree; 0 keeps every one. Both would have to lie on grid points: a pair closer
-  /// than a grid edge folds the map or stretches the quads between them.
+  /// surface cancel before the map is cut (cancelClosePairs), and a quarter closer than a third of
+  /// it to one of the same index moves apart to it (spreadCloseQuarters); the frames around the
+  /// changed edges
+  /// turn to agree; 0 keeps every one where it is. Both would have to lie on grid points: a pair
+  /// closer than a grid edge folds the map or stretches the quads between them.
   double minimumSingularitySeparation = 1.5;
 };
 
@@ -131,7 +133,8 @@ struct Parameterization
   Eigen::MatrixX2d sectorUV;
   std::vector<int> cornerSector;
   /// #V: the layer shift and index of every point in the field the map follows: the given
-  /// matchings', but 0 at the points of the pairs it cancelled (cancelledPairs)
+  /// matchings', but 0 at the points of the pairs it cancelled (cancelledPairs), and the quarters
+  /// it moved apart (movedSingularities) where they went
   Eigen::VectorXi layerShift;
   Eigen::VectorXd singularityIndex;
 
@@ -141,6 +144,9 @@ struct Parameterization
   double edgeLength = 0.0;
   /// pairs of opposite singularities cancelled (options.minimumSingularitySeparation)
   int cancelledPairs = 0;
+  /// quarter singularities moved away from one of the same index closer than a third of
+  /// minimumSingularitySeparation grid edges (spreadCloseQuarters)
+  int movedSingularities = 0;
   int branchPoints = 0;         ///< inner points with a non-zero layer shift
   int branchPointsOnGrid = 0;   ///< of those, mapped to integer (u, v) within 1e-6
   int seamEdges = 0;            ///< cut edges

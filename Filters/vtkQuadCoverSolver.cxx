@@ -135,6 +135,8 @@ void AddFigures(
   AddField<vtkIntArray>(fd, names::AlignedFeatureEdges, { double(map.alignedFeatureEdges) });
   AddField<vtkIntArray>(fd, names::CancelledSingularityPairs, { double(map.cancelledPairs) });
   AddField<vtkIntArray>(
+    fd, names::MovedSingularities, { double(map.movedSingularities) });
+  AddField<vtkIntArray>(
     fd, names::BranchPointsOnGrid, { double(map.branchPoints), double(map.branchPointsOnGrid) });
   AddField<vtkDoubleArray>(fd, names::SeamTranslationError, { map.maxSeamError });
 }

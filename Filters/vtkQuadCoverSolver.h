@@ -32,10 +32,10 @@
  * Output: the surface with cell data CornerUV (6 x double: u0 v0 u1 v1 u2 v2 at the triangle's
  * points) and Seam (3 x unsigned char: 1 where edge k, from point k to k+1, is on the cut), point
  * data LayerShift and SingularityIndex as its map has them (from Matching, 0 at the points of the
- * pairs it cancelled), field data EdgeLength, FlippedTriangles, WindingErrors,
- * ParameterizationEnergy, SeamEdgeCount, AlignedBoundaryEdges, AlignedFeatureEdges,
- * CancelledSingularityPairs, BranchPointsOnGrid and SeamTranslationError (see
- * vtkQuadCoverArrayNames.h). With SplitSeams
+ * pairs it cancelled, the quarters it moved apart where they went), field data EdgeLength,
+ * FlippedTriangles, WindingErrors, ParameterizationEnergy, SeamEdgeCount, AlignedBoundaryEdges,
+ * AlignedFeatureEdges, CancelledSingularityPairs, MovedSingularities, BranchPointsOnGrid and
+ * SeamTranslationError (see vtkQuadCoverArrayNames.h). With SplitSeams
  * the surface is cut open along the seams instead: one point per sector of a point between seam
  * edges, point data UV (the active texture coordinates) and SurfacePointId, so a checkerboard
  * texture shows the parameter lines at once.
@@ -183,10 +183,12 @@ public:
 
   ///@{
   /** Opposite quarter singularities (+1/4 and -1/4) closer than this many grid edges along the
-   * surface cancel before the surface is cut (on components without handles), the frames
-   * around them turned to agree, in
-   * [0, 100] (default 1.5); 0 keeps every one. Both would have to lie on grid points: so close,
-   * the map folds or the quads between them stretch. Counted in CancelledSingularityPairs. */
+   * surface cancel before the surface is cut, and a quarter closer than a third of it to one of
+   * the same index moves apart to it (on components with handles only within a disk of the
+   * surface), the
+   * frames around them turned to agree, in [0, 100] (default 1.5); 0 keeps every one where it
+   * is. Both would have to lie on grid points: so close, the map folds or the quads between them
+   * stretch. Counted in CancelledSingularityPairs and MovedSingularities. */
   vtkSetClampMacro(MinimumSingularitySeparation, double, 0.0, 100.0);
   vtkGetMacro(MinimumSingularitySeparation, double);
   ///@}

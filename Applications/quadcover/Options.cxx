@@ -351,7 +351,7 @@ std::vector<Option> StageOptions(Pipeline& p)
     QC_NUMBER("param", solver, MaximumRegridQuadCount,
       "only maps of at most this many quads are tried on other grids"),
     QC_NUMBER("param", solver, MinimumSingularitySeparation,
-      "opposite singularities closer than this many grid edges cancel, 0: keep all"),
+      "opposite singularities closer than this many grid edges cancel, like ones at a third of it move apart, 0: keep all"),
     QC_SWITCH("param", solver, SplitSeams,
       "write the surface cut open along the seams, with UV texture coordinates"),
     QC_SWITCH("quads", extractor, RepairInvertedQuads,

@@ -283,20 +283,29 @@ TEST(Matchings, BranchPointOptimizationNeverCreatesSingularities)
   }
 }
 
+namespace
+{
+/// A smooth field with noise: singularities of either sign at every distance.
+Eigen::MatrixX3d noisyFrames(const Mesh& m)
+{
+  Eigen::VectorXd a(m.s.F.rows());
+  std::mt19937 rng(7);
+  for (Eigen::Index f = 0; f < a.size(); ++f)
+  {
+    const Eigen::Vector3d c = (m.s.V.row(m.s.F(f, 0)) + m.s.V.row(m.s.F(f, 1))) / 2.0;
+    a[f] = 3.0 * c.x() + 2.0 * c.y() + 1.2 * (rng() / 4294967296.0 - 0.5);
+  }
+  return angleVectors(m.geometry.bases, a);
+}
+}
+
 TEST(Matchings, CloseOppositeQuartersCancelAndNothingElseChanges)
 {
   for (const char* name : { "sphere", "saddle", "roundedcube", "torus", "knot" })
   {
     const Mesh m = prepare(testSurface(name));
     // a smooth field with noise: pairs of opposite quarters at every distance
-    Eigen::VectorXd a(m.s.F.rows());
-    std::mt19937 rng(7);
-    for (Eigen::Index f = 0; f < a.size(); ++f)
-    {
-      const Eigen::Vector3d c = (m.s.V.row(m.s.F(f, 0)) + m.s.V.row(m.s.F(f, 1))) / 2.0;
-      a[f] = 3.0 * c.x() + 2.0 * c.y() + 1.2 * (rng() / 4294967296.0 - 0.5);
-    }
-    const Eigen::MatrixX3d U = angleVectors(m.geometry.bases, a);
+    const Eigen::MatrixX3d U = noisyFrames(m);
     const FrameTopology before = computeMatchings(m.s.F, m.topo, m.geometry, U);
     const bool handles = m.topo.components[0].genus > 0;
     std::vector<char> changed;
@@ -311,9 +320,12 @@ TEST(Matchings, CloseOppositeQuartersCancelAndNothingElseChanges)
         m.s.F, m.topo, m.geometry, U, t, edges * m.geometry.referenceLength, changed);
       std::printf("[ %s ] %d singularities, %d pairs within %.0f edges cancelled\n", name,
         before.singularities, cancelled, edges);
-      // a surface with handles keeps its pairs: a path also turns the field along the loops
-      // around the handles it crosses
-      EXPECT_EQ(cancelled > 0, !handles);
+      // on a surface with handles too, where the pairs lie within disks of it (the knot's tube
+      // is narrower than 8 edges: there they stay)
+      if (!handles || edges == 2.0)
+      {
+        EXPECT_GT(cancelled, 0);
+      }
       EXPECT_EQ(t.singularities, before.singularities - 2 * cancelled);
       EXPECT_EQ(std::count(changed.begin(), changed.end(), 1) > 0, cancelled > 0);
       // only opposite quarters went, in pairs; no point changed its index otherwise
@@ -331,6 +343,94 @@ TEST(Matchings, CloseOppositeQuartersCancelAndNothingElseChanges)
       EXPECT_NEAR(t.index.sum(), m.topo.eulerCharacteristic(), 1e-9);
       EXPECT_LT(t.maxIndexError, 1e-9);
     }
+    // A pair as far apart as the surface is thick cancels only where no handle's loop must
+    // cross its path: within twice that around it the surface is no disk, so none does.
+    const Eigen::Vector3d size = m.s.V.colwise().maxCoeff() - m.s.V.colwise().minCoeff();
+    FrameTopology wide = before;
+    const int far = cancelClosePairs(m.s.F, m.topo, m.geometry, U, wide, size.minCoeff(), changed);
+    EXPECT_EQ(far > 0, !handles) << name;
+  }
+}
+
+namespace
+{
+/// Pairs of inner quarters of the same index closer than `length` along edges.
+int closeLikePairs(const Mesh& m, const FrameTopology& t, double length)
+{
+  int pairs = 0;
+  for (int a = 0; a < m.topo.numVertices; ++a)
+  {
+    if (std::abs(t.index[a]) != 0.25 || m.topo.boundaryVertex[a])
+    {
+      continue;
+    }
+    // Dijkstra over the edges, from a
+    std::vector<double> d(m.topo.numVertices, std::numeric_limits<double>::infinity());
+    std::priority_queue<std::pair<double, int>, std::vector<std::pair<double, int>>,
+      std::greater<std::pair<double, int>>>
+      queue;
+    d[a] = 0.0;
+    queue.push({ 0.0, a });
+    while (!queue.empty())
+    {
+      const auto [du, u] = queue.top();
+      queue.pop();
+      if (du > d[u])
+        continue;
+      if (u > a && t.index[u] == t.index[a])
+        ++pairs;
+      for (int i = m.topo.ringOffsets[u]; i < m.topo.ringOffsets[u + 1]; ++i)
+      {
+        for (int k = 0; k < 3; ++k)
+        {
+          const int w = m.s.F(m.topo.ringFaces[i], k);
+          const double nd = du + (m.s.V.row(w) - m.s.V.row(u)).norm();
+          if (nd < length && nd < d[w])
+          {
+            d[w] = nd;
+            queue.push({ nd, w });
+          }
+        }
+      }
+    }
+  }
+  return pairs;
+}
+}
+
+TEST(Matchings, CloseLikeQuartersMoveApartAndKeepTheirIndices)
+{
+  for (const char* name : { "sphere", "torus" })
+  {
+    const Mesh m = prepare(testSurface(name));
+    // quarters of either sign at every distance
+    const Eigen::MatrixX3d U = noisyFrames(m);
+    const FrameTopology before = computeMatchings(m.s.F, m.topo, m.geometry, U);
+    const double length = 2.0 * m.geometry.referenceLength;
+    std::vector<char> changed;
+    FrameTopology t = before;
+    const int moved = spreadCloseQuarters(m.s.F, m.topo, m.geometry, U, t, length, length, changed);
+    std::printf("[ %s ] %d singularities, %d quarters moved apart\n", name, before.singularities,
+      moved);
+    ASSERT_GT(closeLikePairs(m, before, length), 0) << name;
+    if (m.topo.components[0].genus == 0)
+    {
+      // (the torus is too narrow for a disk of 5 such lengths: it keeps them)
+      EXPECT_GT(moved, 0) << name;
+      EXPECT_LT(closeLikePairs(m, t, length), closeLikePairs(m, before, length)) << name;
+    }
+    EXPECT_EQ(std::count(changed.begin(), changed.end(), 1) > 0, moved > 0);
+    // the same singularities, some elsewhere: as many of each index, no new index
+    EXPECT_EQ(t.singularities, before.singularities) << name;
+    for (const double q : { -0.5, -0.25, 0.25, 0.5 })
+    {
+      EXPECT_EQ((t.index.array() == q).count(), (before.index.array() == q).count()) << q;
+    }
+    EXPECT_NEAR(t.index.sum(), m.topo.eulerCharacteristic(), 1e-9);
+    EXPECT_LT(t.maxIndexError, 1e-9);
+    FrameTopology none = before;
+    EXPECT_EQ(spreadCloseQuarters(m.s.F, m.topo, m.geometry, U, none, 0.0, length, changed), 0);
+    EXPECT_EQ(none.matching, before.matching);
   }
 }
 

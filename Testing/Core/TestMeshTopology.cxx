@@ -1,5 +1,6 @@
 // Connectivity invariants on generated surfaces and on hand-made defects.
 #include "MeshTopology.h"
+#include "SurfaceDisks.h"
 #include "SurfaceRepair.h"
 #include "Surfaces.h"
 #include "TestSurfaces.h"
@@ -333,4 +334,46 @@ TEST(MeshTopology, SplitIsLinearInTheValence)
   Eigen::MatrixX3d V = Eigen::MatrixX3d::Random(n + 5, 3);
   EXPECT_EQ(makeManifold(V, F).copies, std::vector<int>{ 0 });
   EXPECT_EQ(F(n, 0), n + 5);
+}
+
+namespace
+{
+Eigen::MatrixX3d edgeLengths(const Surface& s)
+{
+  Eigen::MatrixX3d length(s.F.rows(), 3);
+  for (Eigen::Index f = 0; f < s.F.rows(); ++f)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      length(f, k) = (s.V.row(s.F(f, (k + 1) % 3)) - s.V.row(s.F(f, k))).norm();
+    }
+  }
+  return length;
+}
+}
+
+TEST(MeshTopology, BallsAreDisksUntilTheyWrapAroundAHandle)
+{
+  // A torus of tube radius 0.25 about a circle of radius 1: a ball narrower than the tube's
+  // girth (1.57) is a disk; one wider wraps around the tube (an annulus, chi 0).
+  const Surface torus = makeTorus(1.0, 0.25, 64, 16);
+  const MeshTopology topo = buildTopology(torus.F, static_cast<int>(torus.V.rows()));
+  const Eigen::MatrixX3d length = edgeLengths(torus);
+  DiskTest disks(torus.F, topo, length);
+  for (const int a : { 0, 17, 500 })
+  {
+    EXPECT_TRUE(disks.inside(a, 0.3)) << a;
+    EXPECT_FALSE(disks.inside(a, 1.2)) << a;
+    EXPECT_TRUE(disks.inside(a, 0.5)) << a << ": the same test again, after a wider one";
+  }
+  EXPECT_FALSE(disks.inside(0, 100.0)) << "the whole torus";
+  // On a sphere every ball short of the whole is a disk; past half of it the search stops.
+  const Surface sphere = makeIcosphere(1.0, 3);
+  const MeshTopology sphereTopo = buildTopology(sphere.F, static_cast<int>(sphere.V.rows()));
+  const Eigen::MatrixX3d sphereLength = edgeLengths(sphere);
+  DiskTest sphereDisks(sphere.F, sphereTopo, sphereLength);
+  EXPECT_TRUE(sphereDisks.inside(3, 0.5));
+  EXPECT_TRUE(sphereDisks.inside(3, 1.2));
+  EXPECT_FALSE(sphereDisks.inside(3, 10.0)) << "more than half of it";
+  EXPECT_TRUE(sphereDisks.inside(3, 0.0)) << "the triangles around the point alone";
 }

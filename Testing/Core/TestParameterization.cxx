@@ -503,7 +503,20 @@ TEST(Parameterization, BranchPointsOfOneTriangleNeverShareAGridPoint)
   ParameterizationOptions options;
   options.targetEdgeLength =
     c.map.edgeLength * 2.0; // about 50 quads: one grid cell spans several edges
+  // By default the two move apart before the map is solved (spreadCloseQuarters): the map's
+  // own singularities, on the grid.
+  Chain moved = c;
+  moved.map = computeParameterization(c.s.V, c.s.F, c.topo, c.geometry, c.frameU, M, options);
+  EXPECT_EQ(moved.map.movedSingularities, 1);
+  EXPECT_EQ(moved.map.branchPoints, c.field.branchPoints);
+  EXPECT_NE(moved.map.layerShift, c.field.layerShift);
+  EXPECT_EQ(checks::branchPointsOffGrid(
+              c.s.F, c.topo, moved.map.layerShift, moved.map.cornerUV),
+    0);
+  // Kept where they are, the rounding must put them on different grid points.
+  options.minimumSingularitySeparation = 0.0;
   c.map = computeParameterization(c.s.V, c.s.F, c.topo, c.geometry, c.frameU, M, options);
+  EXPECT_EQ(c.map.movedSingularities, 0);
   EXPECT_GT(c.map.separatedBranchPoints, 0) << "the two should have met at one grid point";
   EXPECT_EQ(seamViolations(c), 0);
   EXPECT_EQ(branchPointsOffGrid(c), 0);
