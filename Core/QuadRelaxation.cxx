@@ -253,13 +253,67 @@ private:
       mesh.V.row(v) = old;
       mesh.vertexTriangle[v] = oldTriangle;
       ++report.rejectedMoves;
+      if (options.unfold && before.inverted > 0)
+      {
+        searchUnfold(v, before, report);
+      }
       return;
+    }
+    if (options.unfold && after.inverted > 0 && after.inverted >= before.inverted)
+    {
+      searchUnfold(v, after, report);
     }
     if ((moved - old).squaredNorm() > 0)
     {
       mesh.vertexPoint[v] = -1;
     }
     report.maxMove = std::max(report.maxMove, (moved - old).norm() / meanEdge);
+  }
+
+  /// Where moving towards the centre leaves a corner of v's quads inside out: short steps in
+  /// eight directions of the plane of v's triangle (a twentieth to a third of the mean edge),
+  /// each put back onto the surface; the one with the fewest corners inside out and then the
+  /// best worst corner is taken, if it is better than where v is.
+  void searchUnfold(int v, Corners best, QuadRelaxReport& report)
+  {
+    const Eigen::Vector3d start = mesh.V.row(v);
+    const int startTriangle = mesh.vertexTriangle[v];
+    const Eigen::Vector3d n = normal.row(startTriangle);
+    const Eigen::Vector3d edge = V.row(F(startTriangle, 1)) - V.row(F(startTriangle, 0));
+    if (!(n.squaredNorm() > 0) || !(edge.squaredNorm() > 0))
+    {
+      return;
+    }
+    const Eigen::Vector3d t1 = (edge - edge.dot(n) * n).normalized();
+    const Eigen::Vector3d t2 = n.cross(t1);
+    Eigen::Vector3d bestPoint = start;
+    int bestTriangle = startTriangle;
+    for (const double length : { 0.05, 0.15, 0.3 })
+    {
+      for (int k = 0; k < 8; ++k)
+      {
+        const double angle = k * 3.14159265358979323846 / 4.0;
+        const Eigen::Vector3d step =
+          length * meanEdge * (std::cos(angle) * t1 + std::sin(angle) * t2);
+        int f = startTriangle;
+        mesh.V.row(v) = project(f, start + step);
+        mesh.vertexTriangle[v] = f;
+        const Corners c = cornersOf(v);
+        if (c.inverted < best.inverted || (c.inverted == best.inverted && c.worst > best.worst))
+        {
+          best = c;
+          bestPoint = mesh.V.row(v);
+          bestTriangle = f;
+        }
+      }
+    }
+    mesh.V.row(v) = bestPoint;
+    mesh.vertexTriangle[v] = bestTriangle;
+    if ((bestPoint - start).squaredNorm() > 0)
+    {
+      mesh.vertexPoint[v] = -1;
+      report.maxMove = std::max(report.maxMove, (bestPoint - start).norm() / meanEdge);
+    }
   }
 
   Eigen::Vector3d closestIn(int f, const Eigen::Vector3d& p) const
@@ -413,7 +467,7 @@ std::pair<int, int> repairInvertedQuads(const Eigen::MatrixX3d& V, const Eigen::
 std::pair<int, int> repairQuads(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F,
   const MeshTopology& topo, QuadMesh& mesh,
   const std::function<std::vector<int>(const QuadMesh&)>& findBad, int rings, int iterations,
-  int rounds, const Progress& progress)
+  int rounds, const Progress& progress, bool unfold)
 {
   progress.report(0.0);
   std::vector<int> bad = findBad(mesh);
@@ -422,6 +476,7 @@ std::pair<int, int> repairQuads(const Eigen::MatrixX3d& V, const Eigen::MatrixX3
   {
     QuadRelaxOptions options;
     options.relaxationIterations = iterations;
+    options.unfold = unfold;
     options.movable = verticesNear(mesh, bad, rings);
     const Eigen::MatrixX3d keptV = mesh.V;
     const std::vector<int> keptTriangle = mesh.vertexTriangle, keptPoint = mesh.vertexPoint;

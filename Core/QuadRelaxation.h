@@ -28,6 +28,11 @@ struct QuadRelaxOptions
   double featureAngle = 60.0;
   /// #V of the quad mesh, 1 for the vertices that may move; empty: all of them.
   std::vector<char> movable;
+  /// Where a corner of a vertex's quads is still inside out after its step (or the step was not
+  /// made), try short steps in eight directions of its triangle's plane (a twentieth to a third
+  /// of the mean quad edge) and take the best: the fewest corners inside out, then the best
+  /// worst corner.
+  bool unfold = false;
 };
 
 struct QuadRelaxReport
@@ -43,9 +48,11 @@ struct QuadRelaxReport
  * the input surface (the closest point, found by walking from its triangle across edges that
  * are neither boundary nor crease). The connectivity stays; vertices on the quad mesh's boundary
  * or on input creases (featureAngle) stay where they are; a move that would turn a quad corner
- * inside out (against the input's normal) is not made. It evens out uneven spacing, at the
- * price of the grid lines' exact alignment with the frame field; it cannot move quads from one
- * region to another, so the distortion of a map far from the field's metric mostly stays. Updates
+ * inside out (against the input's normal) is not made; with options.unfold a vertex whose
+ * quads keep a corner inside out also tries short steps around it. It evens out uneven
+ * spacing, at the price of the grid lines' exact alignment with the frame field; it cannot move
+ * quads from one region to another, so the distortion of a map far from the field's metric
+ * mostly stays. Updates
  * mesh.V and mesh.vertexTriangle (vertexPoint becomes -1 where a vertex leaves its input point).
  * @throws std::invalid_argument on sizes that do not match or step outside (0, 1]
  * @throws Cancelled when progress's callback says stop (mesh is then partly relaxed)
@@ -68,11 +75,11 @@ std::pair<int, int> repairInvertedQuads(const Eigen::MatrixX3d& V, const Eigen::
   const Progress& progress = Progress());
 
 /// repairInvertedQuads for the quads findBad lists (a mesh's quads that are wrong in some way;
-/// a round that makes the list longer is undone).
+/// a round that makes the list longer is undone); `unfold` as QuadRelaxOptions::unfold.
 std::pair<int, int> repairQuads(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F,
   const MeshTopology& topo, QuadMesh& mesh,
   const std::function<std::vector<int>(const QuadMesh&)>& findBad, int rings, int iterations,
-  int rounds, const Progress& progress = Progress());
+  int rounds, const Progress& progress = Progress(), bool unfold = false);
 
 }
 

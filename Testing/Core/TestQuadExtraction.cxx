@@ -686,6 +686,32 @@ TEST(QuadRelaxation, RepairsInvertedQuadsAndLeavesTheRestAlone)
   EXPECT_GT(far, q.V.rows() / 2);
 }
 
+TEST(QuadRelaxation, UnfoldsACornerThatTheStepToTheCentreCannot)
+{
+  // Steps of 1% of the way to the centre of the quads cannot take a vertex pushed 1.6 quad
+  // edges back over its neighbours in 20 sweeps; the short steps in eight directions around it
+  // (QuadRelaxOptions::unfold), tried where a corner stays inside out, can.
+  const Chain c = runChain(testSurface("sphere"), 800);
+  QuadMesh q = extractQuads(c.s.V, c.s.F, c.topo, c.map.cornerUV);
+  foldThreeVertices(c, q);
+  const int before = countInvertedQuads(q.V, q.Q);
+  ASSERT_GT(before, 0);
+  QuadRelaxOptions options;
+  options.relaxationIterations = 20;
+  options.step = 0.01;
+  QuadMesh plain = q;
+  relaxQuads(c.s.V, c.s.F, c.topo, plain, options);
+  EXPECT_EQ(countInvertedQuads(plain.V, plain.Q), before) << "without the steps around";
+  options.unfold = true;
+  relaxQuads(c.s.V, c.s.F, c.topo, q, options);
+  std::printf("inverted quads: %d -> %d\n", before, countInvertedQuads(q.V, q.Q));
+  EXPECT_EQ(countInvertedQuads(q.V, q.Q), 0);
+  for (int v = 0; v < q.V.rows(); ++v)
+  {
+    ASSERT_NEAR(q.V.row(v).norm(), 1.0, 0.01) << "on the (inscribed) unit sphere";
+  }
+}
+
 TEST(QuadExtraction, OverlappingQuadsAreRemovedAndRepeatsMerged)
 {
   // a 2 x 2 block of quads on the points 0..8 (row by row), counterclockwise
