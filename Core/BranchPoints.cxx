@@ -711,7 +711,8 @@ int cancelClosePairs(const Eigen::MatrixX3i& F, const MeshTopology& topo,
     {
       const int u = findCancelPartner(o, a, maxLength, twistRejected);
       if (u >= 0 &&
-        (topo.components[topo.vertexComponent[a]].genus == 0 || disk.inside(a, 2.0 * maxLength)))
+        (topo.components[topo.vertexComponent[a]].genus == 0 ||
+          disk.ballIsDisk(a, 2.0 * maxLength)))
       {
         order.emplace_back(o.search.dist[u], a);
       }
@@ -744,7 +745,7 @@ int cancelClosePairs(const Eigen::MatrixX3i& F, const MeshTopology& topo,
   return cancelled;
 }
 
-int spreadCloseQuarters(const Eigen::MatrixX3i& F, const MeshTopology& topo,
+int moveCloseQuartersApart(const Eigen::MatrixX3i& F, const MeshTopology& topo,
   const FrameGeometry& geometry, const Eigen::MatrixX3d& frameU, FrameTopology& topology,
   double closerThan, double minLength, std::vector<char>& changedFaces)
 {
@@ -787,8 +788,7 @@ int spreadCloseQuarters(const Eigen::MatrixX3i& F, const MeshTopology& topo,
     }
     spreadLengths(o.steps, geometry, closerThan, others, near);
     if (!(near[a] < closerThan) ||
-      (topo.components[topo.vertexComponent[a]].genus != 0 &&
-        !disk.inside(a, 5.0 * minLength)))
+      (topo.components[topo.vertexComponent[a]].genus != 0 && !disk.ballIsDisk(a, 5.0 * minLength)))
     {
       continue;
     }

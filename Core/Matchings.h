@@ -180,12 +180,13 @@ int cancelClosePairs(const Eigen::MatrixX3i& F, const MeshTopology& topo,
  * two singularities much less than one of its edges apart on grid points; three +1/4 within half
  * a grid edge of each other on cheburashka at 3,000 quads left triangles flipped, while the
  * corners of a plate thinner than a grid edge, 0.8 of one apart, stay best where they are).
- * Changes on a component with handles only inside a disk around the quarter (5 minLength), and
- * none that leaves a tube twisted (as cancelClosePairs). Updates `topology` in place.
+ * Changes on a component with handles only inside a disk around the quarter (5 minLength); the
+ * tube check of cancelClosePairs cannot object (the moved quarter stays a singularity of its
+ * component). Updates `topology` in place.
  * @param[out] changedFaces #F, 1 for the faces on both sides of a changed edge
  * @return the number of quarters moved
  */
-int spreadCloseQuarters(const Eigen::MatrixX3i& F, const MeshTopology& topo,
+int moveCloseQuartersApart(const Eigen::MatrixX3i& F, const MeshTopology& topo,
   const FrameGeometry& geometry, const Eigen::MatrixX3d& frameU, FrameTopology& topology,
   double closerThan, double minLength, std::vector<char>& changedFaces);
 

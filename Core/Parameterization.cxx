@@ -151,7 +151,7 @@ void measureSeams(const Inputs& in, Parameterization& out)
 /// pairs within a grid edge, and a map that folds). The frames within a few grid edges of the
 /// changed edges turn to agree with the new matchings (fitFramesToMatchings), the rest held.
 /// Then quarters closer than a third of the separation to one of the same index move apart, to
-/// the separation (spreadCloseQuarters), their number in `moved`.
+/// the separation (moveCloseQuartersApart), their number in `moved`.
 /// `given` is the field of in's matchings (evaluateField). Returns the pairs cancelled; frameU
 /// and matching are set when any changed.
 int cancelPairsCloserThanGrid(const Inputs& in, const FrameTopology& given, double edgeLength,
@@ -168,7 +168,7 @@ int cancelPairsCloserThanGrid(const Inputs& in, const FrameTopology& given, doub
   const int cancelled =
     cancelClosePairs(in.F, in.topo, in.geometry, in.frameU, topology, separation, changed);
   std::vector<char> movedFaces;
-  moved = spreadCloseQuarters(
+  moved = moveCloseQuartersApart(
     in.F, in.topo, in.geometry, in.frameU, topology, separation / 3.0, separation, movedFaces);
   if (cancelled == 0 && moved == 0)
   {

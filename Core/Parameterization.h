@@ -107,10 +107,9 @@ struct ParameterizationOptions
   double maximumRegridQuadCount = 1000;
   /// Opposite quarter singularities (+1/4 and -1/4) closer than this many grid edges along the
   /// surface cancel before the map is cut (cancelClosePairs), and a quarter closer than a third of
-  /// it to one of the same index moves apart to it (spreadCloseQuarters); the frames around the
-  /// changed edges
-  /// turn to agree; 0 keeps every one where it is. Both would have to lie on grid points: a pair
-  /// closer than a grid edge folds the map or stretches the quads between them.
+  /// it to one of the same index moves apart to it (moveCloseQuartersApart); the frames around the
+  /// changed edges turn to agree; 0 keeps every one where it is. Both would have to lie on grid
+  /// points: a pair closer than a grid edge folds the map or stretches the quads between them.
   double minimumSingularitySeparation = 1.5;
 };
 
@@ -145,7 +144,8 @@ struct Parameterization
   /// pairs of opposite singularities cancelled (options.minimumSingularitySeparation)
   int cancelledPairs = 0;
   /// quarter singularities moved away from one of the same index closer than a third of
-  /// minimumSingularitySeparation grid edges (spreadCloseQuarters)
+  /// minimumSingularitySeparation grid edges (moveCloseQuartersApart), before the map is solved
+  /// (not separatedBranchPoints: branch points of one triangle the rounding put apart)
   int movedSingularities = 0;
   int branchPoints = 0;         ///< inner points with a non-zero layer shift
   int branchPointsOnGrid = 0;   ///< of those, mapped to integer (u, v) within 1e-6

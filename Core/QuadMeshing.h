@@ -22,7 +22,8 @@ struct QuadMeshOptions
 {
   QuadExtractionOptions extraction;
   /// Relax the quads around every quad with a corner turned inside out (repairInvertedQuads) or
-  /// facing against the surface, and at the end move the corners of those left (repairFacing).
+  /// facing against the surface, at the end move the corners of those left (repairFacing), and
+  /// give the vertices of quads still inside out a last round with QuadRelaxOptions::unfold.
   bool repairInvertedQuads = true;
   /// Fill the holes that cells without a quad leave inside the surface with quads
   /// (patchQuadMesh), where the map could not be repaired.
@@ -54,7 +55,8 @@ struct QuadMeshResult
 /**
  * extractQuads, then patchQuadMesh, repairInvertedQuads (or only countInvertedQuads), repairQuads
  * of the quads facing against the surface, relaxQuads with options.relaxationIterations sweeps,
- * repairFacing, then measureQuads.
+ * repairFacing, a last repairQuads round with QuadRelaxOptions::unfold for the quads still inside
+ * out (kept when fewer stay so and none more faces against the surface), then measureQuads.
  * @throws std::invalid_argument as extractQuads does
  */
 QuadMeshResult buildQuadMesh(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F,

@@ -263,11 +263,12 @@ private:
     {
       searchUnfold(v, after, report);
     }
-    if ((moved - old).squaredNorm() > 0)
+    const Eigen::Vector3d now = mesh.V.row(v);
+    if ((now - old).squaredNorm() > 0)
     {
       mesh.vertexPoint[v] = -1;
     }
-    report.maxMove = std::max(report.maxMove, (moved - old).norm() / meanEdge);
+    report.maxMove = std::max(report.maxMove, (now - old).norm() / meanEdge);
   }
 
   /// Where moving towards the centre leaves a corner of v's quads inside out: short steps in

@@ -28,10 +28,10 @@ struct QuadRelaxOptions
   double featureAngle = 60.0;
   /// #V of the quad mesh, 1 for the vertices that may move; empty: all of them.
   std::vector<char> movable;
-  /// Where a corner of a vertex's quads is still inside out after its step (or the step was not
-  /// made), try short steps in eight directions of its triangle's plane (a twentieth to a third
-  /// of the mean quad edge) and take the best: the fewest corners inside out, then the best
-  /// worst corner.
+  /// Where a vertex's quads have a corner inside out and its step was not made or did not turn
+  /// fewer of them back, try short steps in eight directions of its triangle's plane (0.05, 0.15
+  /// and 0.3 of the mean quad edge) and take the best: the fewest corners inside out, then the
+  /// best worst corner.
   bool unfold = false;
 };
 
@@ -80,7 +80,6 @@ std::pair<int, int> repairQuads(const Eigen::MatrixX3d& V, const Eigen::MatrixX3
   const MeshTopology& topo, QuadMesh& mesh,
   const std::function<std::vector<int>(const QuadMesh&)>& findBad, int rings, int iterations,
   int rounds, const Progress& progress = Progress(), bool unfold = false);
-
 }
 
 #endif

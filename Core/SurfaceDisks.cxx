@@ -20,8 +20,12 @@ DiskTest::DiskTest(
   , edgeSeen_(topo.numEdges(), 0)
 {}
 
-bool DiskTest::inside(int a, double radius)
+bool DiskTest::ballIsDisk(int a, double radius)
 {
+  if (topo_.vertexComponent[a] < 0 || topo_.ringOffsets[a] == topo_.ringOffsets[a + 1])
+  {
+    return false; // a point of no triangle
+  }
   const int limit = topo_.components[topo_.vertexComponent[a]].numFaces / 2;
   const bool small = grow(a, radius, limit);
   bool disk = false;

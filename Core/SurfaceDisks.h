@@ -27,7 +27,7 @@ public:
   DiskTest(const Eigen::MatrixX3i& F, const MeshTopology& topo, const Eigen::MatrixX3d& edgeLength);
 
   /// Whether the triangles within `radius` of point a form a disk.
-  bool inside(int a, double radius);
+  bool ballIsDisk(int a, double radius);
 
 private:
   bool reached(int v) const;

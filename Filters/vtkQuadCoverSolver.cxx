@@ -134,8 +134,7 @@ void AddFigures(
   AddField<vtkIntArray>(fd, names::AlignedBoundaryEdges, { double(map.alignedBoundaryEdges) });
   AddField<vtkIntArray>(fd, names::AlignedFeatureEdges, { double(map.alignedFeatureEdges) });
   AddField<vtkIntArray>(fd, names::CancelledSingularityPairs, { double(map.cancelledPairs) });
-  AddField<vtkIntArray>(
-    fd, names::MovedSingularities, { double(map.movedSingularities) });
+  AddField<vtkIntArray>(fd, names::MovedSingularities, { double(map.movedSingularities) });
   AddField<vtkIntArray>(
     fd, names::BranchPointsOnGrid, { double(map.branchPoints), double(map.branchPointsOnGrid) });
   AddField<vtkDoubleArray>(fd, names::SeamTranslationError, { map.maxSeamError });

@@ -55,7 +55,9 @@ public:
    * RelaxationIterations does, until none is left or a round repairs nothing. Then the corners of
    * those left (a quad across a sharp crease, or wrapped around a part thinner than itself), and
    * of the quads around them, are moved one at a time to the point of the input nearby that makes
-   * the worst of their quads best (quadcover::repairFacing). Far from them nothing moves.
+   * the worst of their quads best (quadcover::repairFacing). Quads still inside out then get a
+   * last round in which their vertices also try short steps around them, kept when fewer stay
+   * inside out and none more faces against the input. Far from them nothing moves.
    * InvertedQuads and TurnedQuads report how many there were and are. */
   vtkSetMacro(RepairInvertedQuads, bool);
   vtkGetMacro(RepairInvertedQuads, bool);

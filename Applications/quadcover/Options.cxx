@@ -342,7 +342,8 @@ std::vector<Option> StageOptions(Pipeline& p)
     QC_NUMBER(
       "param", solver, UntangleWork, "the untangling's budget, in energy evaluations per triangle"),
     QC_NUMBER("param", solver, MinimumComponentQuadCount,
-      "quads at least on each connected component, per hole and handle (its own grid where needed)"),
+      "quads at least on each connected component, per hole and handle (its own grid where "
+      "needed)"),
     QC_NUMBER("param", solver, CurvatureEdgeLength,
       "edge length at most this over the mean curvature (4 quads around a tube), 0: no limit"),
     QC_NUMBER("param", solver, MaximumRegrids,
@@ -351,7 +352,8 @@ std::vector<Option> StageOptions(Pipeline& p)
     QC_NUMBER("param", solver, MaximumRegridQuadCount,
       "only maps of at most this many quads are tried on other grids"),
     QC_NUMBER("param", solver, MinimumSingularitySeparation,
-      "opposite singularities closer than this many grid edges cancel, like ones at a third of it move apart, 0: keep all"),
+      "opposite singularities closer than this many grid edges cancel, like ones at a third of it "
+      "move apart, 0: keep all"),
     QC_SWITCH("param", solver, SplitSeams,
       "write the surface cut open along the seams, with UV texture coordinates"),
     QC_SWITCH("quads", extractor, RepairInvertedQuads,

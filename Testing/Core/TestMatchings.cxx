@@ -326,6 +326,10 @@ TEST(Matchings, CloseOppositeQuartersCancelAndNothingElseChanges)
       {
         EXPECT_GT(cancelled, 0);
       }
+      else if (std::string(name) == "knot")
+      {
+        EXPECT_EQ(cancelled, 0);
+      }
       EXPECT_EQ(t.singularities, before.singularities - 2 * cancelled);
       EXPECT_EQ(std::count(changed.begin(), changed.end(), 1) > 0, cancelled > 0);
       // only opposite quarters went, in pairs; no point changed its index otherwise
@@ -409,15 +413,19 @@ TEST(Matchings, CloseLikeQuartersMoveApartAndKeepTheirIndices)
     const double length = 2.0 * m.geometry.referenceLength;
     std::vector<char> changed;
     FrameTopology t = before;
-    const int moved = spreadCloseQuarters(m.s.F, m.topo, m.geometry, U, t, length, length, changed);
-    std::printf("[ %s ] %d singularities, %d quarters moved apart\n", name, before.singularities,
-      moved);
+    const int moved =
+      moveCloseQuartersApart(m.s.F, m.topo, m.geometry, U, t, length, length, changed);
+    std::printf(
+      "[ %s ] %d singularities, %d quarters moved apart\n", name, before.singularities, moved);
     ASSERT_GT(closeLikePairs(m, before, length), 0) << name;
     if (m.topo.components[0].genus == 0)
     {
-      // (the torus is too narrow for a disk of 5 such lengths: it keeps them)
       EXPECT_GT(moved, 0) << name;
       EXPECT_LT(closeLikePairs(m, t, length), closeLikePairs(m, before, length)) << name;
+    }
+    else
+    {
+      EXPECT_EQ(moved, 0) << "the torus is too narrow for a disk of 5 such lengths";
     }
     EXPECT_EQ(std::count(changed.begin(), changed.end(), 1) > 0, moved > 0);
     // the same singularities, some elsewhere: as many of each index, no new index
@@ -429,7 +437,7 @@ TEST(Matchings, CloseLikeQuartersMoveApartAndKeepTheirIndices)
     EXPECT_NEAR(t.index.sum(), m.topo.eulerCharacteristic(), 1e-9);
     EXPECT_LT(t.maxIndexError, 1e-9);
     FrameTopology none = before;
-    EXPECT_EQ(spreadCloseQuarters(m.s.F, m.topo, m.geometry, U, none, 0.0, length, changed), 0);
+    EXPECT_EQ(moveCloseQuartersApart(m.s.F, m.topo, m.geometry, U, none, 0.0, length, changed), 0);
     EXPECT_EQ(none.matching, before.matching);
   }
 }

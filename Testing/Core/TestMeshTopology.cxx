@@ -362,18 +362,18 @@ TEST(MeshTopology, BallsAreDisksUntilTheyWrapAroundAHandle)
   DiskTest disks(torus.F, topo, length);
   for (const int a : { 0, 17, 500 })
   {
-    EXPECT_TRUE(disks.inside(a, 0.3)) << a;
-    EXPECT_FALSE(disks.inside(a, 1.2)) << a;
-    EXPECT_TRUE(disks.inside(a, 0.5)) << a << ": the same test again, after a wider one";
+    EXPECT_TRUE(disks.ballIsDisk(a, 0.3)) << a;
+    EXPECT_FALSE(disks.ballIsDisk(a, 1.2)) << a;
+    EXPECT_TRUE(disks.ballIsDisk(a, 0.5)) << a << ": the same test again, after a wider one";
   }
-  EXPECT_FALSE(disks.inside(0, 100.0)) << "the whole torus";
+  EXPECT_FALSE(disks.ballIsDisk(0, 100.0)) << "the whole torus";
   // On a sphere every ball short of the whole is a disk; past half of it the search stops.
   const Surface sphere = makeIcosphere(1.0, 3);
   const MeshTopology sphereTopo = buildTopology(sphere.F, static_cast<int>(sphere.V.rows()));
   const Eigen::MatrixX3d sphereLength = edgeLengths(sphere);
   DiskTest sphereDisks(sphere.F, sphereTopo, sphereLength);
-  EXPECT_TRUE(sphereDisks.inside(3, 0.5));
-  EXPECT_TRUE(sphereDisks.inside(3, 1.2));
-  EXPECT_FALSE(sphereDisks.inside(3, 10.0)) << "more than half of it";
-  EXPECT_TRUE(sphereDisks.inside(3, 0.0)) << "the triangles around the point alone";
+  EXPECT_TRUE(sphereDisks.ballIsDisk(3, 0.5));
+  EXPECT_TRUE(sphereDisks.ballIsDisk(3, 1.2));
+  EXPECT_FALSE(sphereDisks.ballIsDisk(3, 10.0)) << "more than half of it";
+  EXPECT_TRUE(sphereDisks.ballIsDisk(3, 0.0)) << "the triangles around the point alone";
 }

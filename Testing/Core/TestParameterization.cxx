@@ -510,9 +510,8 @@ TEST(Parameterization, BranchPointsOfOneTriangleNeverShareAGridPoint)
   EXPECT_EQ(moved.map.movedSingularities, 1);
   EXPECT_EQ(moved.map.branchPoints, c.field.branchPoints);
   EXPECT_NE(moved.map.layerShift, c.field.layerShift);
-  EXPECT_EQ(checks::branchPointsOffGrid(
-              c.s.F, c.topo, moved.map.layerShift, moved.map.cornerUV),
-    0);
+  EXPECT_EQ(
+    checks::branchPointsOffGrid(c.s.F, c.topo, moved.map.layerShift, moved.map.cornerUV), 0);
   // Kept where they are, the rounding must put them on different grid points.
   options.minimumSingularitySeparation = 0.0;
   c.map = computeParameterization(c.s.V, c.s.F, c.topo, c.geometry, c.frameU, M, options);
