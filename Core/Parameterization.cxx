@@ -148,14 +148,14 @@ void measureSeams(const Inputs& in, Parameterization& out)
 /// Opposite quarter singularities closer than options.minimumSingularitySeparation grid edges
 /// cancelled (cancelClosePairs): no grid can put both on grid points without stretching the
 /// quads between them (armadillo's smoothest field at 1,000 quads: 180 singularities, dozens of
-/// pairs within a grid edge, and a map that folds). The frames within a few grid edges of the
-/// changed edges turn to agree with the new matchings (fitFramesToMatchings), the rest held.
-/// Then quarters closer than a third of the separation to one of the same index move apart, to
-/// the separation (moveCloseQuartersApart), their number in `moved`.
-/// `given` is the field of in's matchings (evaluateField). Returns the pairs cancelled; frameU
-/// and matching are set when any changed.
-int cancelPairsCloserThanGrid(const Inputs& in, const FrameTopology& given, double edgeLength,
-  Eigen::MatrixX3d& frameU, Eigen::MatrixX3i& matching, int& moved)
+/// pairs within a grid edge, and a map that folds). Then quarters closer than a third of the
+/// separation to one of the same index move apart, to the separation (moveCloseQuartersApart),
+/// their number in `moved`. The frames within a few grid edges of the changed edges turn to
+/// agree with the new matchings (fitFramesToMatchings), the rest held. `given` is the field of in's
+/// matchings (evaluateField). Returns the pairs cancelled; frameU and matching are set when any
+/// changed.
+int settleSingularitiesCloserThanGrid(const Inputs& in, const FrameTopology& given,
+  double edgeLength, Eigen::MatrixX3d& frameU, Eigen::MatrixX3i& matching, int& moved)
 {
   moved = 0;
   const double separation = in.options.minimumSingularitySeparation * edgeLength;
@@ -302,7 +302,7 @@ Parameterization computeParameterization(const Eigen::MatrixX3d& V, const Eigen:
   Field field = evaluateField(given);
   Eigen::MatrixX3d ownFrames;
   Eigen::MatrixX3i ownMatching;
-  out.cancelledPairs = cancelPairsCloserThanGrid(
+  out.cancelledPairs = settleSingularitiesCloserThanGrid(
     given, field.topology, out.edgeLength, ownFrames, ownMatching, out.movedSingularities);
   const bool changed = out.cancelledPairs > 0 || out.movedSingularities > 0;
   const Inputs in =

@@ -255,13 +255,12 @@ private:
       ++report.rejectedMoves;
       if (options.unfold && before.inverted > 0)
       {
-        searchUnfold(v, before, report);
+        searchUnfold(v, before);
       }
-      return;
     }
-    if (options.unfold && after.inverted > 0 && after.inverted >= before.inverted)
+    else if (options.unfold && after.inverted > 0 && after.inverted >= before.inverted)
     {
-      searchUnfold(v, after, report);
+      searchUnfold(v, after);
     }
     const Eigen::Vector3d now = mesh.V.row(v);
     if ((now - old).squaredNorm() > 0)
@@ -272,10 +271,10 @@ private:
   }
 
   /// Where moving towards the centre leaves a corner of v's quads inside out: short steps in
-  /// eight directions of the plane of v's triangle (a twentieth to a third of the mean edge),
-  /// each put back onto the surface; the one with the fewest corners inside out and then the
-  /// best worst corner is taken, if it is better than where v is.
-  void searchUnfold(int v, Corners best, QuadRelaxReport& report)
+  /// eight directions of the plane of v's triangle (0.05, 0.15 and 0.3 of the mean edge), each
+  /// put back onto the surface; the one with the fewest corners inside out and then the best
+  /// worst corner is taken, if it is better than `best` (where v is).
+  void searchUnfold(int v, Corners best)
   {
     const Eigen::Vector3d start = mesh.V.row(v);
     const int startTriangle = mesh.vertexTriangle[v];
@@ -310,11 +309,6 @@ private:
     }
     mesh.V.row(v) = bestPoint;
     mesh.vertexTriangle[v] = bestTriangle;
-    if ((bestPoint - start).squaredNorm() > 0)
-    {
-      mesh.vertexPoint[v] = -1;
-      report.maxMove = std::max(report.maxMove, (bestPoint - start).norm() / meanEdge);
-    }
   }
 
   Eigen::Vector3d closestIn(int f, const Eigen::Vector3d& p) const
