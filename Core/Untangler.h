@@ -16,6 +16,16 @@ namespace quadcover
 {
 namespace param
 {
+/// One triangle's untangling energy at its Jacobian J (relative to the grid), with its gradient
+/// and Hessian in J's entries (J00, J01, J10, J11) where asked.
+double triangleEnergy(const Eigen::Matrix2d& J, double eps, double theta,
+  Eigen::Matrix2d* gradient = nullptr, Eigen::Matrix4d* hessian = nullptr);
+
+/// triangleEnergy's Hessian at J with each eigenvalue replaced by its absolute value, from its
+/// eigenvectors in closed form: semidefinite, and where the Hessian curves down (folds, saddles)
+/// as steep upwards, so that Newton steps leave a saddle instead of crawling along it.
+Eigen::Matrix4d absoluteHessian(const Eigen::Matrix2d& J, double eps, double theta);
+
 /**
  * Removes flipped triangles from a map x = (real unknowns, integer unknowns) by moving only real
  * unknowns near them: the foldover-free untangling of Garanzha et al. (2021). Each triangle's
@@ -23,7 +33,9 @@ namespace param
  *   (1 - theta) tr(J^T J) / chi(det J) + theta (det^2 J + 1) / chi(det J),
  *   chi(d) = (d + sqrt(eps^2 + d^2)) / 2,
  * a smooth stand-in for a barrier against det J <= 0 that stays finite on flipped triangles; eps
- * shrinks with the most negative determinant, so the minimizer (L-BFGS) becomes foldover-free.
+ * shrinks with the most negative determinant, so the minimizer becomes foldover-free. Each eps is
+ * minimized by Newton steps on the sum of the triangles' Hessians with their negative eigenvalues
+ * made positive (absoluteHessian), a sparse Cholesky factorization each.
  * The unknowns moved are those of the triangles within `rings` rings of a flipped one; every
  * triangle they touch is in the energy.
  */
@@ -35,8 +47,9 @@ struct Untangler
   double edgeLength;                                      // h: J relative to the unit cell
   int numReal;
   /// Work left, in triangle energy evaluations, shared by every run of one repair: runs stop
-  /// when it is spent (nullptr: no limit). Counting work, not seconds, keeps the result the same
-  /// on every machine.
+  /// when it is spent (nullptr: no limit); a Newton step's Hessian and its factorization count
+  /// as LocalEnergy::HessianCost evaluations, about what they take in time. Counting work, not
+  /// seconds, keeps the result the same on every machine.
   long long* work = nullptr;
   static constexpr double DefaultTheta = 0.25;
   double theta = DefaultTheta;
@@ -46,8 +59,8 @@ struct Untangler
   bool spent() const { return work && *work <= 0; }
 
   /// Untangles around `flipped` (faces), moving real unknowns not `frozen` (empty: none is);
-  /// callers recount the flips. Reports once per L-BFGS iteration
-  /// (approaching 1, as the number of iterations is not known beforehand).
+  /// callers recount the flips. Reports once per Newton step (approaching 1, as the number of
+  /// steps is not known beforehand).
   void run(const MeshTopology& topo, const Eigen::MatrixX3i& F, const std::vector<int>& flipped,
     int rings, int maxRounds, Eigen::VectorXd& x, const std::vector<char>& frozen,
     const Progress& progress) const;

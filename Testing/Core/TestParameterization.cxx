@@ -12,7 +12,9 @@
 #include "Surfaces.h"
 #include "TestChain.h"
 #include "TestSurfaces.h"
+#include "Untangler.h"
 
+#include <Eigen/Eigenvalues>
 #include <Eigen/Geometry>
 #include <gtest/gtest.h>
 
@@ -952,4 +954,49 @@ TEST(Parameterization, AComponentGetsItsMinimumOfQuadsForEachHandle)
   const int fewest = ParameterizationOptions().minimumComponentQuadCount;
   EXPECT_GT(torusCells, 1.6 * fewest);
   EXPECT_LT(torusCells, 3.0 * fewest);
+}
+
+TEST(Untangling, TriangleEnergyDerivativesMatchDifferences)
+{
+  // flipped, sheared and near-identity Jacobians, a similarity, a reflection and a collapse, at
+  // a large and a small eps
+  const Eigen::Matrix2d cases[] = {
+    (Eigen::Matrix2d() << 1.1, 0.2, -0.3, 0.9).finished(),
+    (Eigen::Matrix2d() << 0.4, 1.3, 0.7, -0.5).finished(),
+    (Eigen::Matrix2d() << -0.2, 0.05, 0.1, 0.3).finished(),
+    Eigen::Matrix2d::Identity(),                           // no anticonformal part
+    (Eigen::Matrix2d() << 0.7, 0.2, 0.2, -0.7).finished(), // no conformal part
+    Eigen::Matrix2d::Zero(),
+  };
+  for (const double eps : { 0.5, 0.01 })
+  {
+    for (const Eigen::Matrix2d& J : cases)
+    {
+      Eigen::Matrix2d G;
+      Eigen::Matrix4d H;
+      quadcover::param::triangleEnergy(J, eps, 0.25, &G, &H);
+      const double h = 1e-6;
+      for (int i = 0; i < 4; ++i)
+      {
+        Eigen::Matrix2d plus = J, minus = J;
+        plus(i / 2, i % 2) += h;
+        minus(i / 2, i % 2) -= h;
+        Eigen::Matrix2d Gp, Gm;
+        const double ep = quadcover::param::triangleEnergy(plus, eps, 0.25, &Gp, nullptr);
+        const double em = quadcover::param::triangleEnergy(minus, eps, 0.25, &Gm, nullptr);
+        const double scale = 1.0 + std::abs(G(i / 2, i % 2));
+        EXPECT_NEAR((ep - em) / (2 * h), G(i / 2, i % 2), 1e-5 * scale);
+        for (int j = 0; j < 4; ++j)
+        {
+          const double fd = (Gp(j / 2, j % 2) - Gm(j / 2, j % 2)) / (2 * h);
+          EXPECT_NEAR(fd, H(j, i), 1e-4 * (1.0 + std::abs(H(j, i))));
+        }
+      }
+      // the closed form's |H| is the numerical one's
+      const Eigen::SelfAdjointEigenSolver<Eigen::Matrix4d> eigen(H);
+      const Eigen::Matrix4d P = eigen.eigenvectors() * eigen.eigenvalues().cwiseAbs().asDiagonal() *
+        eigen.eigenvectors().transpose();
+      EXPECT_LE((quadcover::param::absoluteHessian(J, eps, 0.25) - P).norm(), 1e-9 * H.norm());
+    }
+  }
 }
