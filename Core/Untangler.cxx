@@ -1,4 +1,4 @@
-// Untangler.cxx: foldover-free untangling of flipped triangles by projected Newton steps.
+// Untangler.cxx: foldover-free untangling of flipped triangles by Newton steps.
 #include "Untangler.h"
 
 #include "Parallel.h"
@@ -472,7 +472,7 @@ private:
 /// Hessians with Armijo backtracking, until a step gains less than 1e-5 of the energy, at most
 /// 20 steps. Returns the energy at the new y. Where folds are, the faces' Hessians are
 /// indefinite and the steps gain linearly, not quadratically; run to 1e-9 and 50 steps, the
-/// repairs of the shared and generated surfaces ended the same in a third more time. With the
+/// repairs of eight shared surfaces ended the same in up to twice the time. With the
 /// negative eigenvalues dropped instead of turned positive, the steps crawled along a saddle (a
 /// refined spot's fans held around its cones: 1e-6 of the energy a step for 40 steps before
 /// the region unfolded) and stopped there.
