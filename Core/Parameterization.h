@@ -70,13 +70,14 @@ struct ParameterizationOptions
   /// energy, in at most this many rounds per neighbourhood; 0 leaves flips as they are.
   int maximumUntangleRounds = 30;
   /// The untangling's budget, so that its time stays bounded by a multiple of the solve's: at
-  /// most this many energy evaluations per triangle of the surface, in all (counted as work, not
-  /// time, so that every machine gives the same map). On the shared and generated meshes at 1,000
-  /// and 6,500 quads, both with the defaults and the smoothest field, every map that came out of
-  /// its repair without a flipped triangle spent at most 2,033 (the teapot at 1,000 quads); only
-  /// maps that kept flips spent more, up to 3,810 (armadillo, smoothest field, 1,000 quads).
-  /// (A budget of 2,500 cut those short, but also the repair of small components that their
-  /// trials on other grids then put right: Data/components.obj's small tori.)
+  /// most this many energy evaluations per triangle of the surface, in all (a Newton step's
+  /// Hessian counts as 12; counted as work, not time, so that every machine gives the same map).
+  /// On the shared and generated meshes at 1,000, 3,000 and 6,500 quads, both with the defaults
+  /// and the smoothest field, every map that came out of its repair without a flipped triangle
+  /// spent at most 1,553 (the teapot at 1,000 quads); maps that kept flips spent up to 9,575
+  /// (decimated-knight, smoothest field, 1,000 quads: 1,000 triangles, 0.4 s). (With L-BFGS,
+  /// a budget of 2,500 cut some short, but also the repair of small components that their trials
+  /// on other grids then put right: Data/components.obj's small tori.)
   int untangleWork = 10000;
   /// Worker threads of the untangling and of the maps of a surface's components, each on its own
   /// (0: defaultThreadCount()). Results do not depend on it.

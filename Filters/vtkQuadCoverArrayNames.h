@@ -116,7 +116,8 @@ constexpr const char* FlippedTriangles = "FlippedTriangles";
 /// (the map winds around them unlike the frame field; 0 unless untangling failed there).
 constexpr const char* WindingErrors = "WindingErrors";
 /// field, 1 x double: the untangling's work, in triangle energy evaluations per triangle of the
-/// surface (bounded by UntangleWork; 0 when no triangle was flipped).
+/// surface (a Newton step's Hessian counts as 12; bounded by UntangleWork; 0 when no triangle
+/// was flipped).
 constexpr const char* UntangleWorkSpent = "UntangleWorkSpent";
 /// field, 1 x double, 3 tuples: sum_f A_f |grad phi - K|^2 / (A |K|^2) of the continuous
 /// minimizer, after rounding, and of the output map (0 is a perfect fit, 1 a constant map).
