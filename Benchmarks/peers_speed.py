@@ -23,6 +23,8 @@ import tempfile
 
 import vtk
 
+from refine import refined
+
 HERE = os.path.dirname(os.path.abspath(__file__))
 MESHES = ("bunny-lowres spot fandisk rocker-arm cheburashka teapot armadillo bumpy-cube "
           "decimated-knight lion screwdriver 3holes fertility truck").split()
@@ -43,23 +45,12 @@ def write_obj(polydata, path):
 
 
 def prepared(path, level, scratch):
-    """The mesh as OBJ, refined `level` times (cleaned and triangulated first); its triangles."""
-    reader = vtk.vtkOBJReader()
-    reader.SetFileName(path)
-    clean = vtk.vtkCleanPolyData()
-    clean.SetInputConnection(reader.GetOutputPort())
-    triangles = vtk.vtkTriangleFilter()
-    triangles.SetInputConnection(clean.GetOutputPort())
-    last = triangles
-    if level > 0:
-        last = vtk.vtkLoopSubdivisionFilter()
-        last.SetNumberOfSubdivisions(level)
-        last.SetInputConnection(triangles.GetOutputPort())
-    last.Update()
-    out = os.path.join(scratch, "%s-%d.obj" % (os.path.basename(path)[:-4], level))
+    """The mesh as OBJ, refined `level` times (merged and triangulated first); its triangles."""
+    last = refined(path, level)
     if level == 0:
         out = path  # the file itself: every tool reads what a user would give it
     else:
+        out = os.path.join(scratch, "%s-%d.obj" % (os.path.basename(path)[:-4], level))
         write_obj(last.GetOutput(), out)
     return out, last.GetOutput().GetNumberOfPolys()
 

@@ -10,10 +10,9 @@ import sys
 import vtk
 
 
-def main():
-    if len(sys.argv) != 4:
-        sys.exit(__doc__.strip().splitlines()[0])
-    path, out, levels = sys.argv[1], sys.argv[2], int(sys.argv[3])
+def refined(path, levels):
+    """The surface in `path` (.obj, .vtp or .ply) merged, triangulated and subdivided `levels`
+    times (none at 0), as the algorithm whose output holds it (updated)."""
     readers = {"obj": vtk.vtkOBJReader, "vtp": vtk.vtkXMLPolyDataReader, "ply": vtk.vtkPLYReader}
     kind = path.rsplit(".", 1)[-1].lower()
     if kind not in readers:
@@ -22,11 +21,22 @@ def main():
     reader.SetFileName(path)
     clean = vtk.vtkCleanPolyData()
     clean.SetInputConnection(reader.GetOutputPort())
-    triangles = vtk.vtkTriangleFilter()
-    triangles.SetInputConnection(clean.GetOutputPort())
-    loop = vtk.vtkLoopSubdivisionFilter()
-    loop.SetNumberOfSubdivisions(levels)
-    loop.SetInputConnection(triangles.GetOutputPort())
+    last = vtk.vtkTriangleFilter()
+    last.SetInputConnection(clean.GetOutputPort())
+    if levels > 0:
+        loop = vtk.vtkLoopSubdivisionFilter()
+        loop.SetNumberOfSubdivisions(levels)
+        loop.SetInputConnection(last.GetOutputPort())
+        last = loop
+    last.Update()
+    return last
+
+
+def main():
+    if len(sys.argv) != 4:
+        sys.exit(__doc__.strip().splitlines()[0])
+    path, out, levels = sys.argv[1], sys.argv[2], int(sys.argv[3])
+    loop = refined(path, levels)
     writer = vtk.vtkXMLPolyDataWriter()
     writer.SetInputConnection(loop.GetOutputPort())
     writer.SetFileName(out)
