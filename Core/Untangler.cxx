@@ -22,14 +22,38 @@ namespace quadcover
 {
 namespace param
 {
+namespace
+{
+/// The scalars of a triangle's energy at J: det J, chi(det J) and its derivatives, and those of
+/// the second term g(det) = (det^2 + 1) / chi; the second derivatives only when asked.
+struct EnergyTerms
+{
+  double det, root, chi, chiPrime, trace, gPrime;
+  double curl = 0.0, gSecond = 0.0; // 2 chi'^2 / chi^3 - chi'' / chi^2, and g''
+
+  EnergyTerms(const Eigen::Matrix2d& J, double eps, bool second)
+    : det(J.determinant())
+    , root(std::sqrt(eps * eps + det * det))
+    , chi(0.5 * (det + root))
+    , chiPrime(0.5 * (1.0 + det / root))
+    , trace(J.squaredNorm())
+    , gPrime(2.0 * det / chi - (det * det + 1) * chiPrime / (chi * chi))
+  {
+    if (second)
+    {
+      const double chiSecond = eps * eps / (2.0 * root * root * root);
+      curl = 2.0 * chiPrime * chiPrime / (chi * chi * chi) - chiSecond / (chi * chi);
+      gSecond = 2.0 / chi - 4.0 * det * chiPrime / (chi * chi) + (det * det + 1) * curl;
+    }
+  }
+};
+}
+
 double triangleEnergy(const Eigen::Matrix2d& J, double eps, double theta, Eigen::Matrix2d* gradient,
   Eigen::Matrix4d* hessian)
 {
-  const double det = J.determinant();
-  const double root = std::sqrt(eps * eps + det * det);
-  const double chi = 0.5 * (det + root);
-  const double chiPrime = 0.5 * (1.0 + det / root);
-  const double trace = J.squaredNorm();
+  const EnergyTerms terms(J, eps, hessian != nullptr);
+  const double det = terms.det, chi = terms.chi, chiPrime = terms.chiPrime, trace = terms.trace;
   const double energy = (1 - theta) * trace / chi + theta * (det * det + 1) / chi;
   if (!gradient && !hessian)
   {
@@ -38,8 +62,7 @@ double triangleEnergy(const Eigen::Matrix2d& J, double eps, double theta, Eigen:
   // in the entries a = (J00, J01, J10, J11): det's gradient c and Hessian K
   const Eigen::Vector4d a(J(0, 0), J(0, 1), J(1, 0), J(1, 1));
   const Eigen::Vector4d c(J(1, 1), -J(1, 0), -J(0, 1), J(0, 0));
-  // g(det) = (det^2 + 1) / chi, the second term
-  const double gPrime = 2.0 * det / chi - (det * det + 1) * chiPrime / (chi * chi);
+  const double gPrime = terms.gPrime;
   const Eigen::Vector4d da =
     (1 - theta) * (2.0 * a / chi - trace * chiPrime / (chi * chi) * c) + theta * gPrime * c;
   if (gradient)
@@ -48,9 +71,7 @@ double triangleEnergy(const Eigen::Matrix2d& J, double eps, double theta, Eigen:
   }
   if (hessian)
   {
-    const double chiSecond = eps * eps / (2.0 * root * root * root);
-    const double curl = 2.0 * chiPrime * chiPrime / (chi * chi * chi) - chiSecond / (chi * chi);
-    const double gSecond = 2.0 / chi - 4.0 * det * chiPrime / (chi * chi) + (det * det + 1) * curl;
+    const double curl = terms.curl, gSecond = terms.gSecond;
     Eigen::Matrix4d K = Eigen::Matrix4d::Zero();
     K(0, 3) = K(3, 0) = 1.0;
     K(1, 2) = K(2, 1) = -1.0;
@@ -71,19 +92,12 @@ Eigen::Matrix4d absoluteHessian(const Eigen::Matrix2d& J, double eps, double the
   // a and c lie in the plane of J's conformal part and J's anticonformal part. The directions
   // in each K-plane across J's part are eigenvectors (2 psi_t + psi_d, 2 psi_t - psi_d); the
   // plane of the parts holds a 2 x 2 block.
-  const double det = J.determinant();
-  const double root = std::sqrt(eps * eps + det * det);
-  const double chi = 0.5 * (det + root);
-  const double chiPrime = 0.5 * (1.0 + det / root);
-  const double chiSecond = eps * eps / (2.0 * root * root * root);
-  const double curl = 2.0 * chiPrime * chiPrime / (chi * chi * chi) - chiSecond / (chi * chi);
-  const double trace = J.squaredNorm();
-  const double gPrime = 2.0 * det / chi - (det * det + 1) * chiPrime / (chi * chi);
-  const double gSecond = 2.0 / chi - 4.0 * det * chiPrime / (chi * chi) + (det * det + 1) * curl;
+  const EnergyTerms terms(J, eps, true);
+  const double chi = terms.chi, chiPrime = terms.chiPrime, trace = terms.trace;
   const double psiT = (1 - theta) / chi;
   const double psiTD = -(1 - theta) * chiPrime / (chi * chi);
-  const double psiD = -(1 - theta) * trace * chiPrime / (chi * chi) + theta * gPrime;
-  const double psiDD = (1 - theta) * trace * curl + theta * gSecond;
+  const double psiD = -(1 - theta) * trace * chiPrime / (chi * chi) + theta * terms.gPrime;
+  const double psiDD = (1 - theta) * trace * terms.curl + theta * terms.gSecond;
   // unit vectors along J's conformal part (c1) and across it (c2), along its anticonformal part
   // (a1) and across it (a2); any pair in a plane where J's part is 0
   const double p = 0.5 * (J(0, 0) + J(1, 1)), q = 0.5 * (J(1, 0) - J(0, 1));
