@@ -39,34 +39,61 @@ Eigen::VectorXd fitFramesToMatchings(const Eigen::MatrixX3d& V, const Eigen::Mat
     const Eigen::Vector3d b = V.row(F(f, 2)) - V.row(F(f, 0));
     area[f] = 0.5 * a.cross(b).norm();
   }
+  // The unknowns: the free frames (a held one keeps alpha = 0), so that a fit held but near a
+  // few changed edges solves a system of that neighbourhood's size.
+  std::vector<int> unknown(nF, -1);
+  int n = 0;
+  for (int f = 0; f < nF; ++f)
+  {
+    if (held.empty() || !held[f])
+    {
+      unknown[f] = n++;
+    }
+  }
   // Diagonal: the alignment term, plus a tiny multiple of the area so that the system stays
   // definite where no frame is weighted (the field is then fixed up to a common turn).
   std::vector<Eigen::Triplet<double>> t;
-  t.reserve(static_cast<std::size_t>(nF) * 7);
-  Eigen::VectorXd rhs = Eigen::VectorXd::Zero(nF);
+  t.reserve(static_cast<std::size_t>(n) * 7);
+  Eigen::VectorXd rhs = Eigen::VectorXd::Zero(n);
   for (int f = 0; f < nF; ++f)
   {
-    const double w = weight.size() ? weight[f] : 0.0;
-    // a held frame: a stiff spring to its angle (alpha = 0)
-    const double hold = !held.empty() && held[f] ? 1e6 * 8.0 * lambda * area[f] : 0.0;
-    t.emplace_back(f, f, (1.0 - lambda) * area[f] * w + 1e-9 * area[f] + hold);
+    if (unknown[f] >= 0)
+    {
+      const double w = weight.size() ? weight[f] : 0.0;
+      t.emplace_back(unknown[f], unknown[f], (1.0 - lambda) * area[f] * w + 1e-9 * area[f]);
+    }
   }
   forEachNeighbor(topo, [&](int f, int k, int g) {
-    if (g < f || matching(f, k) < 0)
+    const int a = unknown[f], b = unknown[g];
+    if (g < f || matching(f, k) < 0 || (a < 0 && b < 0))
     {
       return;
     }
     // residual after the rotations: delta + alpha_g - alpha_f
     const double delta = residual(turning(geometry, phi, f, k, g), matching(f, k));
     const double c = 8.0 * lambda * (area[f] + area[g]) / 3.0;
-    t.emplace_back(f, f, c);
-    t.emplace_back(g, g, c);
-    t.emplace_back(f, g, -c);
-    t.emplace_back(g, f, -c);
-    rhs[f] += c * delta;
-    rhs[g] -= c * delta;
+    if (a >= 0)
+    {
+      t.emplace_back(a, a, c);
+      rhs[a] += c * delta;
+    }
+    if (b >= 0)
+    {
+      t.emplace_back(b, b, c);
+      rhs[b] -= c * delta;
+    }
+    if (a >= 0 && b >= 0)
+    {
+      t.emplace_back(a, b, -c);
+      t.emplace_back(b, a, -c);
+    }
   });
-  Eigen::SparseMatrix<double> H(nF, nF);
+  Eigen::VectorXd alpha = Eigen::VectorXd::Zero(nF);
+  if (n == 0)
+  {
+    return alpha;
+  }
+  Eigen::SparseMatrix<double> H(n, n);
   H.setFromTriplets(t.begin(), t.end());
   SpdSolver<double> solver;
   solver.compute(H);
@@ -74,7 +101,15 @@ Eigen::VectorXd fitFramesToMatchings(const Eigen::MatrixX3d& V, const Eigen::Mat
   {
     throw std::runtime_error("fitFramesToMatchings: the system could not be factored");
   }
-  return solver.solve(rhs);
+  const Eigen::VectorXd free = solver.solve(rhs);
+  for (int f = 0; f < nF; ++f)
+  {
+    if (unknown[f] >= 0)
+    {
+      alpha[f] = free[unknown[f]];
+    }
+  }
+  return alpha;
 }
 
 }

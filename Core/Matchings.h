@@ -206,7 +206,8 @@ int moveCloseQuartersApart(const Eigen::MatrixX3i& F, const MeshTopology& topo,
  * parameterization need not fold to follow it. One sparse solve.
  * @param[in] weight #F alignment weights (FrameWeight), or empty for none (pure smoothing)
  * @param[in] held   #F, 1 for frames that stay as they are (held along boundaries and sharp
- *                   edges by smoothFrames), or empty
+ *                   edges by smoothFrames, or away from a few changed edges), or empty; only
+ *                   the others are unknowns
  * @return #F the angles alpha to turn each frame by (rotateFrames)
  * @throws std::invalid_argument on sizes that do not match or lambda outside (0, 1]
  */
