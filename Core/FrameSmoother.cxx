@@ -23,7 +23,29 @@ struct Link
   double theta; // angle of f's frame minus g's carried into f's plane
   double rho;   // transport from g's basis into f's
   double w;     // (A_f + A_g) / 3
+  Complex turn; // e^{4 i theta}
 };
+
+/// e^{4 i alpha} per triangle: with them a link's cos 4(theta + alpha_f - alpha_g) and its sine
+/// are the parts of turn z_f conj(z_g), a product instead of a cosine per link (linkPhasor).
+Eigen::VectorXcd phasors(const Eigen::VectorXd& alpha)
+{
+  Eigen::VectorXcd z(alpha.size());
+  for (Eigen::Index i = 0; i < alpha.size(); ++i)
+  {
+    z[i] = std::polar(1.0, 4.0 * alpha[i]);
+  }
+  return z;
+}
+
+/// turn z_f conj(z_g) of link l, written out (std::complex's product checks for infinities).
+inline Complex linkPhasor(const Link& l, const Eigen::VectorXcd& z)
+{
+  const Complex a = z[l.f], b = z[l.g];
+  const double re = a.real() * b.real() + a.imag() * b.imag();
+  const double im = a.imag() * b.real() - a.real() * b.imag();
+  return { l.turn.real() * re - l.turn.imag() * im, l.turn.real() * im + l.turn.imag() * re };
+}
 
 struct Problem
 {
@@ -31,12 +53,13 @@ struct Problem
   Eigen::VectorXd area, weight;
   double lambda = 0.5;
 
-  double energy(const Eigen::VectorXd& alpha) const
+  /// E at alpha, z = phasors(alpha).
+  double energy(const Eigen::VectorXd& alpha, const Eigen::VectorXcd& z) const
   {
     double smooth = 0.0, align = 0.0;
     for (const Link& l : links)
     {
-      smooth += l.w * (1.0 - std::cos(4.0 * (l.theta + alpha[l.f] - alpha[l.g])));
+      smooth += l.w * (1.0 - linkPhasor(l, z).real());
     }
     for (Eigen::Index i = 0; i < alpha.size(); ++i)
     {
@@ -137,8 +160,9 @@ void setUpProblem(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F, const Me
       if (f < g)
       {
         const double rho = geometry.transport(f, k);
-        P.links.push_back(
-          { f, g, wrapAngle(s.phi[f] - s.phi[g] - rho), rho, (P.area[f] + P.area[g]) / 3.0 });
+        const double theta = wrapAngle(s.phi[f] - s.phi[g] - rho);
+        P.links.push_back({ f, g, theta, rho, (P.area[f] + P.area[g]) / 3.0,
+          std::polar(1.0, 4.0 * theta) });
       }
     }
   }
@@ -220,17 +244,22 @@ public:
   Eigen::VectorXd run(Eigen::VectorXd alpha, std::vector<double>& history, int& iterations,
     const Progress& progress, double bar = std::numeric_limits<double>::infinity())
   {
-    double E = S.P.energy(alpha);
+    Eigen::VectorXcd z = phasors(alpha);
+    double E = S.P.energy(alpha, z);
     history.assign(1, E);
     iterations = 0;
     Eigen::VectorXd grad(S.n);
     for (int it = 0; it < Options.maximumNumberOfIterations && S.n > 0; ++it)
     {
       progress.report(static_cast<double>(it) / Options.maximumNumberOfIterations);
-      this->gradient(alpha, grad);
+      if (it > 0)
+      {
+        z = phasors(alpha); // afresh: products of products would drift off the unit circle
+      }
+      this->gradient(z, alpha, grad);
       const Eigen::VectorXd step = Solver.solve(-grad);
       double En = 0.0;
-      Eigen::VectorXd next = this->longestStep(alpha, step, En);
+      Eigen::VectorXd next = this->longestStep(alpha, z, step, En);
       if (!(En <= E))
       {
         // The bound guarantees descent: only rounding at the minimum gets here.
@@ -296,15 +325,15 @@ private:
     progress.report(1.0);
   }
 
-  /// dE/dalpha over the unknowns.
-  void gradient(const Eigen::VectorXd& alpha, Eigen::VectorXd& grad) const
+  /// dE/dalpha over the unknowns at alpha, z = phasors(alpha).
+  void gradient(const Eigen::VectorXcd& z, const Eigen::VectorXd& alpha, Eigen::VectorXd& grad) const
   {
     const Problem& P = S.P;
     const double lambda = P.lambda;
     grad.setZero();
     for (const Link& l : P.links)
     {
-      const double s = 4.0 * lambda * l.w * std::sin(4.0 * (l.theta + alpha[l.f] - alpha[l.g]));
+      const double s = 4.0 * lambda * l.w * linkPhasor(l, z).imag();
       if (S.unknown[l.f] >= 0)
         grad[S.unknown[l.f]] += s;
       if (S.unknown[l.g] >= 0)
@@ -332,16 +361,19 @@ private:
 
   /// The bound's step is safe but often short where the energy is flat: try longer ones and
   /// keep the lowest (only energies below the bound step's are taken, so the descent stays
-  /// monotone). @param[out] En the energy where it ends
-  Eigen::VectorXd longestStep(
-    const Eigen::VectorXd& alpha, const Eigen::VectorXd& step, double& En) const
+  /// monotone). z = phasors(alpha); the longer steps' phasors are z times the step's squared,
+  /// squared again. @param[out] En the energy where it ends
+  Eigen::VectorXd longestStep(const Eigen::VectorXd& alpha, const Eigen::VectorXcd& z,
+    const Eigen::VectorXd& step, double& En) const
   {
     Eigen::VectorXd next = this->advance(alpha, step, 1.0);
-    En = S.P.energy(next);
+    Eigen::VectorXcd turn = phasors(next - alpha);
+    En = S.P.energy(next, (z.array() * turn.array()).matrix());
     for (double scale = 2.0; scale <= 8.0; scale *= 2.0)
     {
       Eigen::VectorXd longer = this->advance(alpha, step, scale);
-      const double El = S.P.energy(longer);
+      turn = turn.cwiseProduct(turn);
+      const double El = S.P.energy(longer, (z.array() * turn.array()).matrix());
       if (!(El < En))
         break;
       next.swap(longer);
