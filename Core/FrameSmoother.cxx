@@ -386,7 +386,8 @@ private:
   static constexpr double Hopeless = 5.0;
   const Smoothing& S;
   const SmootherOptions& Options;
-  SpdSolver<double> Solver;
+  /// simplicial: one factorization, 40 to 60 solves (armadillo: 0.6 s less than supernodal)
+  SpdSolver<double> Solver{ Factorization::Simplicial };
   double EnergyScale = 1e-300;
   int Rejected = 0;
 };

@@ -1,7 +1,8 @@
 // SparseSolver.h: the sparse symmetric (Hermitian) positive definite solver of the core.
-// CHOLMOD's supernodal Cholesky (SuiteSparse) when the build found it, else Eigen's
-// SimplicialLDLT (CMake reports which at configure time). At a million triangles CHOLMOD factors
-// the smoother's complex system about seven times faster (Benchmarks/README.md).
+// CHOLMOD's Cholesky (SuiteSparse; supernodal, or simplicial where asked) when the build found
+// it, else Eigen's SimplicialLDLT (CMake reports which at configure time). At a million
+// triangles CHOLMOD factors the smoother's complex system about seven times faster
+// (Benchmarks/README.md).
 #ifndef quadcover_SparseSolver_h
 #define quadcover_SparseSolver_h
 
@@ -16,6 +17,16 @@
 
 namespace quadcover
 {
+/// How the factor is stored. Supernodal: in dense blocks factored and applied by the BLAS, the
+/// fastest to factor a system with much fill. Simplicial: a column at a time, without the BLAS;
+/// on surface meshes the supernodes are small, a BLAS call each, and its solves take half the
+/// time (Benchmarks/README.md): for a system solved many times.
+enum class Factorization
+{
+  Supernodal,
+  Simplicial
+};
+
 #ifdef QUADCOVER_HAVE_CHOLMOD
 /**
  * Eigen's CholmodSupernodalLLT with the BLAS on one thread wherever CHOLMOD calls it (the
@@ -29,10 +40,11 @@ class CholmodLLT : public Eigen::CholmodBase<MatrixType, Eigen::Lower, CholmodLL
   using Base = Eigen::CholmodBase<MatrixType, Eigen::Lower, CholmodLLT<MatrixType>>;
 
 public:
-  CholmodLLT()
+  explicit CholmodLLT(Factorization storage = Factorization::Supernodal)
   {
     this->m_cholmod.final_asis = 1;
-    this->m_cholmod.supernodal = CHOLMOD_SUPERNODAL;
+    this->m_cholmod.supernodal =
+      storage == Factorization::Supernodal ? CHOLMOD_SUPERNODAL : CHOLMOD_SIMPLICIAL;
   }
 
   CholmodLLT& compute(const MatrixType& matrix)
@@ -66,8 +78,13 @@ public:
 template<typename Scalar>
 using SpdSolver = CholmodLLT<Eigen::SparseMatrix<Scalar>>;
 #else
+/// Eigen's SimplicialLDLT (simplicial whatever the storage asked).
 template<typename Scalar>
-using SpdSolver = Eigen::SimplicialLDLT<Eigen::SparseMatrix<Scalar>>;
+class SpdSolver : public Eigen::SimplicialLDLT<Eigen::SparseMatrix<Scalar>>
+{
+public:
+  explicit SpdSolver(Factorization = Factorization::Supernodal) {}
+};
 #endif
 }
 
