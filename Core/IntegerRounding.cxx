@@ -45,6 +45,10 @@ void integerBlockOfInverse(
 {
   const int n = sys.numColumns();
   const int numInteger = sys.numInteger;
+  if (factor.solver.inverseOfLast(numInteger, factor.S))
+  {
+    return;
+  }
   factor.S.resize(numInteger, numInteger);
   // right-hand sides per solve: 64, down to 16 where they would take more than 8 MB (three
   // copies of them live at once: E, CHOLMOD's solution and its copy; at 64 they were 133 MB of
@@ -427,7 +431,9 @@ Eigen::VectorXd solveContinuous(const SeamlessSystem& sys, bool greedy, HessianF
   Eigen::VectorXd x = Eigen::VectorXd::Zero(n);
   if (n > 0)
   {
-    factor.solver.compute(sys.H);
+    // the integers ordered last: the greedy rounding's block of H^-1 then comes off the factor
+    factor.solver.analyzePatternWithLast(sys.H, greedy ? sys.numInteger : 0);
+    factor.solver.factorize(sys.H);
     if (factor.solver.info() != Eigen::Success)
     {
       throw std::runtime_error("the Poisson system could not be factored");

@@ -9,10 +9,15 @@
 #include <Eigen/Sparse>
 #include <Eigen/SparseCholesky>
 
+#include <algorithm>
+#include <type_traits>
+#include <vector>
+
 #ifdef QUADCOVER_HAVE_CHOLMOD
 #include "BlasThreads.h"
 
 #include <Eigen/CholmodSupport>
+#include <cholmod_camd.h>
 #endif
 
 namespace quadcover
@@ -54,6 +59,100 @@ public:
     return *this;
   }
 
+  /// analyzePattern, with the last `last` unknowns ordered after all others (CAMD, the
+  /// constrained minimum degree), so that inverseOfLast can read their block of the inverse off
+  /// the factor. Plain analyzePattern when last <= 0 or CAMD fails.
+  void analyzePatternWithLast(const MatrixType& matrix, int last)
+  {
+    const int n = static_cast<int>(matrix.rows());
+    if (last <= 0 || last > n)
+    {
+      this->analyzePattern(matrix);
+      return;
+    }
+    if (this->m_cholmodFactor)
+    {
+      cholmod_free_factor(&this->m_cholmodFactor, &this->m_cholmod);
+      this->m_cholmodFactor = nullptr;
+    }
+    cholmod_sparse A = Eigen::viewAsCholmod(matrix.template selfadjointView<Eigen::Lower>());
+    std::vector<int> member(n, 0), perm(n);
+    std::fill(member.end() - last, member.end(), 1);
+    cholmod_common& c = this->m_cholmod;
+    if (!cholmod_camd(&A, nullptr, 0, member.data(), perm.data(), &c))
+    {
+      this->analyzePattern(matrix);
+      return;
+    }
+    const int methods = c.nmethods, ordering = c.method[0].ordering;
+    c.nmethods = 1;
+    c.method[0].ordering = CHOLMOD_GIVEN;
+    this->m_cholmodFactor = cholmod_analyze_p(&A, perm.data(), nullptr, 0, &c);
+    c.nmethods = methods;
+    c.method[0].ordering = ordering;
+    this->m_isInitialized = true;
+    this->m_info = this->m_cholmodFactor ? Eigen::Success : Eigen::NumericalIssue;
+    this->m_analysisIsOk = this->m_cholmodFactor != nullptr;
+    this->m_factorizationIsOk = false;
+  }
+
+  /**
+   * The block of the inverse of the factored (real) matrix at its last `last` unknowns, from
+   * the factor: when they are the factor's last columns (analyzePatternWithLast; the elimination
+   * tree's postorder may move them), with L22 the factor's trailing block that block is
+   * (L22 L22^T)^-1, a dense last x last computation instead of `last` solves. False (S
+   * untouched) when the factor does not end with them or is not supernodal.
+   */
+  bool inverseOfLast(int last, Eigen::MatrixXd& S) const
+  {
+    static_assert(std::is_same<typename MatrixType::Scalar, double>::value, "real only");
+    const cholmod_factor* L = this->m_cholmodFactor;
+    if (!L || !this->m_factorizationIsOk || this->m_info != Eigen::Success || !L->is_super ||
+      last <= 0 || static_cast<std::size_t>(last) > L->n)
+    {
+      return false;
+    }
+    const int n = static_cast<int>(L->n), first = n - last;
+    const int* perm = static_cast<const int*>(L->Perm);
+    for (int p = first; p < n; ++p)
+    {
+      if (perm[p] < first)
+      {
+        return false;
+      }
+    }
+    const int* super = static_cast<const int*>(L->super);
+    const int* pi = static_cast<const int*>(L->pi);
+    const int* px = static_cast<const int*>(L->px);
+    const int* rows = static_cast<const int*>(L->s);
+    const double* x = static_cast<const double*>(L->x);
+    Eigen::MatrixXd L22 = Eigen::MatrixXd::Zero(last, last);
+    for (std::size_t s = 0; s < L->nsuper; ++s)
+    {
+      const int k1 = super[s], k2 = super[s + 1], nsrow = pi[s + 1] - pi[s];
+      for (int j = std::max(k1, first); j < k2; ++j)
+      {
+        // rows of a supernode: its own columns first, then the rest, ascending
+        for (int i = j - k1; i < nsrow; ++i)
+        {
+          L22(rows[pi[s] + i] - first, j - first) = x[px[s] + i + (j - k1) * nsrow];
+        }
+      }
+    }
+    const Eigen::MatrixXd W =
+      L22.triangularView<Eigen::Lower>().solve(Eigen::MatrixXd::Identity(last, last));
+    const Eigen::MatrixXd inverse = W.transpose() * W;
+    S.resize(last, last);
+    for (int p = 0; p < last; ++p)
+    {
+      for (int q = 0; q < last; ++q)
+      {
+        S(perm[first + p] - first, perm[first + q] - first) = inverse(p, q);
+      }
+    }
+    return true;
+  }
+
   void factorize(const MatrixType& matrix)
   {
     const OneBlasThread one;
@@ -78,12 +177,18 @@ public:
 template<typename Scalar>
 using SpdSolver = CholmodLLT<Eigen::SparseMatrix<Scalar>>;
 #else
-/// Eigen's SimplicialLDLT (simplicial whatever the storage asked).
+/// Eigen's SimplicialLDLT (simplicial whatever the storage asked; no block of the inverse
+/// from its factor).
 template<typename Scalar>
 class SpdSolver : public Eigen::SimplicialLDLT<Eigen::SparseMatrix<Scalar>>
 {
 public:
   explicit SpdSolver(Factorization = Factorization::Supernodal) {}
+  void analyzePatternWithLast(const Eigen::SparseMatrix<Scalar>& matrix, int)
+  {
+    this->analyzePattern(matrix);
+  }
+  bool inverseOfLast(int, Eigen::MatrixXd&) const { return false; }
 };
 #endif
 }
