@@ -291,10 +291,9 @@ public:
     z_.head(size()) = y;
     double* value = hessian_.valuePtr();
     std::fill(value, value + hessian_.nonZeros(), 0.0);
-    Eigen::Matrix<double, 4, Eigen::Dynamic> R;
     for (int j = 0; j < static_cast<int>(area_.size()); ++j)
     {
-      const int begin = freeBegin_[j], k = freeBegin_[j + 1] - begin;
+      const int k = freeBegin_[j + 1] - freeBegin_[j];
       if (k == 0)
       {
         continue;
@@ -302,17 +301,7 @@ public:
       const double scale = toUnitCell_[j];
       const Eigen::Matrix4d HJ =
         absoluteHessian(jacobian(j), eps, untangler_.theta) * (area_[j] * scale * scale);
-      R.setZero(4, k);
-      for (int i = 0; i < 4; ++i)
-      {
-        for (int t = rowBegin_[4 * j + i]; t < rowBegin_[4 * j + i + 1]; ++t)
-        {
-          if (termLocal_[t] >= 0)
-          {
-            R(i, termLocal_[t]) += coefficient_[t];
-          }
-        }
-      }
+      const Eigen::Matrix<double, 4, Eigen::Dynamic>& R = jacobianOfFree_[j];
       const Eigen::MatrixXd local = R.transpose() * HJ * R;
       int entry = entryBegin_[j];
       for (int b = 0; b < k; ++b)
@@ -390,7 +379,7 @@ private:
   }
 
   /// The Hessian's pattern over the free slots (lower triangle) and where each face's entries
-  /// go: freeBegin_, freeSlots_, termLocal_, entryBegin_, entries_, diagonal_.
+  /// go: freeBegin_, freeSlots_, termLocal_, entryBegin_, entries_, diagonal_, jacobianOfFree_.
   void buildHessianPattern()
   {
     const int m = size();
@@ -457,6 +446,22 @@ private:
       }
       entryBegin_.push_back(static_cast<int>(entries_.size()));
     }
+    jacobianOfFree_.resize(nf);
+    for (int j = 0; j < nf; ++j)
+    {
+      Eigen::Matrix<double, 4, Eigen::Dynamic>& R = jacobianOfFree_[j];
+      R.setZero(4, freeBegin_[j + 1] - freeBegin_[j]);
+      for (int i = 0; i < 4; ++i)
+      {
+        for (int t = rowBegin_[4 * j + i]; t < rowBegin_[4 * j + i + 1]; ++t)
+        {
+          if (termLocal_[t] >= 0)
+          {
+            R(i, termLocal_[t]) += coefficient_[t];
+          }
+        }
+      }
+    }
   }
 
   /// What a Hessian costs, in energy evaluations of as many faces (debited to the budget).
@@ -474,6 +479,8 @@ private:
   std::vector<int> freeBegin_;      // per face: where its free slots begin in freeSlots_
   std::vector<int> freeSlots_;      // per face: the free slots its rows use
   std::vector<int> entryBegin_;     // per face: where its Hessian entries begin in entries_
+  /// per face: d(J's 4 entries) / d(its free slots), the same for every Newton step
+  std::vector<Eigen::Matrix<double, 4, Eigen::Dynamic>> jacobianOfFree_;
   std::vector<int> entries_;        // per pair of a face's free slots: its place in hessian_
   std::vector<int> diagonal_;       // per free slot: its diagonal entry's place in hessian_
   Eigen::SparseMatrix<double> hessian_; // lower triangle
