@@ -34,7 +34,8 @@ enum class Factorization
 
 #ifdef QUADCOVER_HAVE_CHOLMOD
 /**
- * Eigen's CholmodSupernodalLLT with the BLAS on one thread wherever CHOLMOD calls it (the
+ * Eigen's CholmodSupernodalLLT (or, with Factorization::Simplicial, CHOLMOD's simplicial
+ * factor, which calls no BLAS) with the BLAS on one thread wherever CHOLMOD calls it (the
  * numeric factorization and the solves; the analysis uses no BLAS), so that the result does not
  * depend on the BLAS thread count (BlasThreads.h). compute() and solve() are used as Eigen's;
  * the solves run when the solve() expression is assigned, which calls _solve_impl below.
@@ -61,7 +62,7 @@ public:
 
   /// analyzePattern, with the last `last` unknowns ordered after all others (CAMD, the
   /// constrained minimum degree), so that inverseOfLast can read their block of the inverse off
-  /// the factor. Plain analyzePattern when last <= 0 or CAMD fails.
+  /// the factor. Plain analyzePattern when last <= 0 or CAMD or the analysis fails.
   void analyzePatternWithLast(const MatrixType& matrix, int last)
   {
     const int n = static_cast<int>(matrix.rows());
@@ -90,9 +91,14 @@ public:
     this->m_cholmodFactor = cholmod_analyze_p(&A, perm.data(), nullptr, 0, &c);
     c.nmethods = methods;
     c.method[0].ordering = ordering;
+    if (!this->m_cholmodFactor)
+    {
+      this->analyzePattern(matrix);
+      return;
+    }
     this->m_isInitialized = true;
-    this->m_info = this->m_cholmodFactor ? Eigen::Success : Eigen::NumericalIssue;
-    this->m_analysisIsOk = this->m_cholmodFactor != nullptr;
+    this->m_info = Eigen::Success;
+    this->m_analysisIsOk = true;
     this->m_factorizationIsOk = false;
   }
 
