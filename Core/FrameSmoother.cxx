@@ -20,10 +20,9 @@ using Complex = std::complex<double>;
 struct Link
 {
   int f, g;
-  double theta; // angle of f's frame minus g's carried into f's plane
   double rho;   // transport from g's basis into f's
   double w;     // (A_f + A_g) / 3
-  Complex turn; // e^{4 i theta}
+  Complex turn; // e^{4 i theta}, theta the angle of f's frame minus g's carried into f's plane
 };
 
 /// e^{4 i alpha} per triangle: with them a link's cos 4(theta + alpha_f - alpha_g) and its sine
@@ -161,8 +160,8 @@ void setUpProblem(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F, const Me
       {
         const double rho = geometry.transport(f, k);
         const double theta = wrapAngle(s.phi[f] - s.phi[g] - rho);
-        P.links.push_back({ f, g, theta, rho, (P.area[f] + P.area[g]) / 3.0,
-          std::polar(1.0, 4.0 * theta) });
+        P.links.push_back(
+          { f, g, rho, (P.area[f] + P.area[g]) / 3.0, std::polar(1.0, 4.0 * theta) });
       }
     }
   }

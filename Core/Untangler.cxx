@@ -379,13 +379,15 @@ private:
   }
 
   /// The Hessian's pattern over the free slots (lower triangle) and where each face's entries
-  /// go: freeBegin_, freeSlots_, termLocal_, entryBegin_, entries_, diagonal_, jacobianOfFree_.
+  /// go (freeBegin_, entryBegin_, entries_, diagonal_), and each face's jacobianOfFree_.
   void buildHessianPattern()
   {
     const int m = size();
     const int nf = static_cast<int>(area_.size());
-    termLocal_.assign(slot_.size(), -1);
+    std::vector<int> freeSlots;                   // per face: the free slots its rows use
+    std::vector<int> termLocal(slot_.size(), -1); // per term: its slot's index among its face's
     freeBegin_.assign(1, 0);
+    jacobianOfFree_.resize(nf);
     std::vector<Eigen::Triplet<double>> pattern;
     for (int i = 0; i < m; ++i)
     {
@@ -393,29 +395,41 @@ private:
     }
     for (int j = 0; j < nf; ++j)
     {
-      const int begin = static_cast<int>(freeSlots_.size());
+      const int begin = static_cast<int>(freeSlots.size());
       for (int t = rowBegin_[4 * j]; t < rowBegin_[4 * j + 4]; ++t)
       {
         if (slot_[t] >= m)
         {
           continue;
         }
-        const auto end = freeSlots_.end();
-        const auto found = std::find(freeSlots_.begin() + begin, end, slot_[t]);
-        termLocal_[t] = static_cast<int>(found - freeSlots_.begin()) - begin;
+        const auto end = freeSlots.end();
+        const auto found = std::find(freeSlots.begin() + begin, end, slot_[t]);
+        termLocal[t] = static_cast<int>(found - freeSlots.begin()) - begin;
         if (found == end)
         {
-          freeSlots_.push_back(slot_[t]);
+          freeSlots.push_back(slot_[t]);
         }
       }
-      freeBegin_.push_back(static_cast<int>(freeSlots_.size()));
+      freeBegin_.push_back(static_cast<int>(freeSlots.size()));
       for (int b = begin; b < freeBegin_.back(); ++b)
       {
         for (int a = b; a < freeBegin_.back(); ++a)
         {
-          const int r = std::max(freeSlots_[a], freeSlots_[b]);
-          const int c = std::min(freeSlots_[a], freeSlots_[b]);
+          const int r = std::max(freeSlots[a], freeSlots[b]);
+          const int c = std::min(freeSlots[a], freeSlots[b]);
           pattern.emplace_back(r, c, 0.0);
+        }
+      }
+      Eigen::Matrix<double, 4, Eigen::Dynamic>& R = jacobianOfFree_[j];
+      R.setZero(4, freeBegin_.back() - begin);
+      for (int i = 0; i < 4; ++i)
+      {
+        for (int t = rowBegin_[4 * j + i]; t < rowBegin_[4 * j + i + 1]; ++t)
+        {
+          if (termLocal[t] >= 0)
+          {
+            R(i, termLocal[t]) += coefficient_[t];
+          }
         }
       }
     }
@@ -441,26 +455,10 @@ private:
         for (int a = b; a < freeBegin_[j + 1]; ++a)
         {
           entries_.push_back(
-            offset(std::max(freeSlots_[a], freeSlots_[b]), std::min(freeSlots_[a], freeSlots_[b])));
+            offset(std::max(freeSlots[a], freeSlots[b]), std::min(freeSlots[a], freeSlots[b])));
         }
       }
       entryBegin_.push_back(static_cast<int>(entries_.size()));
-    }
-    jacobianOfFree_.resize(nf);
-    for (int j = 0; j < nf; ++j)
-    {
-      Eigen::Matrix<double, 4, Eigen::Dynamic>& R = jacobianOfFree_[j];
-      R.setZero(4, freeBegin_[j + 1] - freeBegin_[j]);
-      for (int i = 0; i < 4; ++i)
-      {
-        for (int t = rowBegin_[4 * j + i]; t < rowBegin_[4 * j + i + 1]; ++t)
-        {
-          if (termLocal_[t] >= 0)
-          {
-            R(i, termLocal_[t]) += coefficient_[t];
-          }
-        }
-      }
     }
   }
 
@@ -475,9 +473,7 @@ private:
   std::vector<int> slot_;           // per term: the slot of its symbol
   Eigen::VectorXd z_;               // per slot: the free unknowns, then the fixed symbols
   Eigen::VectorXd gradient_;        // per slot
-  std::vector<int> termLocal_;      // per term: its slot's index among its face's free slots
-  std::vector<int> freeBegin_;      // per face: where its free slots begin in freeSlots_
-  std::vector<int> freeSlots_;      // per face: the free slots its rows use
+  std::vector<int> freeBegin_;      // per face: where its free slots begin (its count of them)
   std::vector<int> entryBegin_;     // per face: where its Hessian entries begin in entries_
   /// per face: d(J's 4 entries) / d(its free slots), the same for every Newton step
   std::vector<Eigen::Matrix<double, 4, Eigen::Dynamic>> jacobianOfFree_;
