@@ -1,6 +1,7 @@
 // QuadFacing.cxx: quadFacing, turnedQuads and repairFacing.
 #include "QuadFacing.h"
 
+#include "BoundaryPaths.h"
 #include "QuadMeshAdjacency.h"
 #include "ScaledJacobian.h"
 
@@ -41,6 +42,7 @@ public:
     , topo_(topo)
     , surface_(surface)
     , mesh_(mesh)
+    , boundary_(V, F, topo, BoundaryCornerTurn)
   {
     collectVertexQuads();
     findFixed();
@@ -90,6 +92,10 @@ public:
   /// -0.13); true when it moved.
   bool improve(int v)
   {
+    if (fixed_[v])
+    {
+      return false;
+    }
     const Score now = vertexScore(v);
     if (now.worst >= Fine)
     {
@@ -121,6 +127,11 @@ public:
     mesh_.V.row(v) = chosen->point.transpose();
     mesh_.vertexTriangle[v] = chosen->triangle;
     mesh_.vertexPoint[v] = chosen->surfacePoint;
+    if (places_[v].loop >= 0)
+    {
+      places_[v] = boundary_.placeOf(chosen->point, chosen->triangle, chosen->surfacePoint);
+      fixed_[v] = places_[v].loop < 0;
+    }
     return true;
   }
 
@@ -132,6 +143,9 @@ private:
   /// the extraction took.
   static constexpr int Budget = 40;
   static constexpr int BudgetBase = 10000;
+  /// A boundary point where the surface's boundary turns by more than this (radians) is a corner:
+  /// a quad vertex there stays, and none slides past it.
+  static constexpr double BoundaryCornerTurn = Pi / 6;
   long long budget_ = 0;
 
   /// The smaller of quadFacing and quadScaledJacobian.
@@ -180,14 +194,24 @@ private:
     quadsOf_ = std::move(adjacency.quads);
   }
 
-  /// Vertices on the quad mesh's boundary, on the surface's boundary, or in no triangle.
+  /// The vertices that stay: those in no triangle, on the quad mesh's boundary but not the
+  /// surface's or the other way round, and on the surface's corners. Those on both boundaries
+  /// elsewhere slide along the surface's (places_).
   void findFixed()
   {
     fixed_ = quadMeshBoundary(mesh_);
+    places_.assign(fixed_.size(), BoundaryPaths::Place());
     for (int v = 0; v < static_cast<int>(fixed_.size()); ++v)
     {
       const int t = mesh_.vertexTriangle[v];
-      fixed_[v] |= t < 0 || t >= F_.rows() || onSurfaceBoundary(V_, F_, topo_, mesh_, v);
+      const bool onSurface = t >= 0 && t < F_.rows() && onSurfaceBoundary(V_, F_, topo_, mesh_, v);
+      if (fixed_[v] && onSurface)
+      {
+        places_[v] = boundary_.placeOf(mesh_.V.row(v).transpose(), t, mesh_.vertexPoint[v]);
+        fixed_[v] = places_[v].loop < 0;
+        continue;
+      }
+      fixed_[v] |= t < 0 || t >= F_.rows() || onSurface;
     }
   }
 
@@ -265,7 +289,9 @@ private:
   QuadMesh& mesh_;
   std::vector<int> offsets_; ///< #V + 1: where each vertex's quads start in quadsOf_
   std::vector<int> quadsOf_;
+  const BoundaryPaths boundary_;
   std::vector<char> fixed_;
+  std::vector<BoundaryPaths::Place> places_; ///< per vertex sliding along the boundary
   mutable long long evaluations_ = 0; ///< quality() calls, for the budget
 };
 
@@ -279,6 +305,15 @@ std::vector<Candidate> FacingRepairer::candidatesOf(int v) const
   std::vector<Candidate> list;
   if (!(r > 0))
   {
+    return list;
+  }
+  if (places_[v].loop >= 0)
+  {
+    for (const BoundaryPaths::Stop& s :
+      boundary_.slides(places_[v], p, { 0.1 * r, 0.25 * r, 0.5 * r, 0.75 * r }))
+    {
+      list.push_back({ s.point, s.triangle, s.surfacePoint });
+    }
     return list;
   }
   const std::vector<int> near = trianglesNear(v, p, r);

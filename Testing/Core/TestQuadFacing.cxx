@@ -1,7 +1,9 @@
 // The closest points of a whole surface (SurfaceLocator) and the quads that face against it:
-// turnedQuads finds them, repairFacing turns them back without changing the connectivity.
+// turnedQuads finds them, repairFacing turns them back without changing the connectivity (boundary
+// vertices sliding along the boundary).
 #include "QuadExtraction.h"
 #include "QuadFacing.h"
+#include "QuadMeshAdjacency.h"
 #include "QuadQuality.h"
 #include "ScaledJacobian.h"
 #include "SurfaceLocator.h"
@@ -10,6 +12,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <random>
 
 using namespace quadcover;
@@ -140,6 +143,60 @@ TEST(QuadFacing, MovesAVertexPushedOverItsNeighboursBack)
         c.s.V.row(c.s.F(q.vertexTriangle[u], 0)), c.s.V.row(c.s.F(q.vertexTriangle[u], 1)),
         c.s.V.row(c.s.F(q.vertexTriangle[u], 2)));
       EXPECT_LT((own - q.V.row(u).transpose()).norm(), 1e-9) << "vertex " << u << " in its triangle";
+    }
+  }
+}
+
+TEST(QuadFacing, SlidesABoundaryVertexBackAlongTheBoundary)
+{
+  const Chain c = runChain(testSurface("cylinder"), 800);
+  QuadMesh q = extractQuads(c.s.V, c.s.F, c.topo, c.map.cornerUV);
+  ASSERT_TRUE(badQuads(c.s, q).empty());
+  // a vertex on the upper circle and its neighbour along it
+  const std::vector<char> boundary = quadMeshBoundary(q);
+  int v = -1, w = -1;
+  for (int i = 0; i < q.Q.rows() && w < 0; ++i)
+  {
+    for (int k = 0; k < 4; ++k)
+    {
+      const int a = q.Q(i, k), b = q.Q(i, (k + 1) % 4);
+      if (boundary[a] && boundary[b] && q.V(a, 2) > 0.99 && q.V(b, 2) > 0.99)
+      {
+        v = a;
+        w = b;
+        break;
+      }
+    }
+  }
+  ASSERT_GE(w, 0);
+  // v moved along the circle past w, by a third of their distance: its quads turn inside out
+  const double from = std::atan2(q.V(v, 1), q.V(v, 0)), to = std::atan2(q.V(w, 1), q.V(w, 0));
+  constexpr double TwoPi = 6.28318530717958647692;
+  const auto turn = [&](double a) { return a - TwoPi * std::round(a / TwoPi); };
+  const double step = turn(to - from);
+  const double angle = to + step / 3.0;
+  const SurfaceLocator locator(c.s.V, c.s.F);
+  const SurfaceLocator::Hit hit =
+    locator.closest(Eigen::Vector3d(0.5 * std::cos(angle), 0.5 * std::sin(angle), 1.0));
+  q.V.row(v) = hit.point.transpose();
+  q.vertexTriangle[v] = hit.triangle;
+  q.vertexPoint[v] = -1;
+  ASSERT_TRUE(onSurfaceBoundary(c.s.V, c.s.F, c.topo, q, v));
+  ASSERT_FALSE(badQuads(c.s, q).empty()) << "the test needs a quad turned inside out";
+  const Eigen::MatrixX4i connectivity = q.Q;
+  const FacingRepair r = repairFacing(c.s.V, c.s.F, c.topo, locator, q);
+  EXPECT_GT(r.before, 0);
+  EXPECT_EQ(r.after, 0);
+  EXPECT_TRUE(badQuads(c.s, q).empty());
+  EXPECT_EQ(q.Q, connectivity);
+  // back on its own side of w (interior vertices alone can untwist its quads otherwise)
+  EXPECT_GT(turn(std::atan2(q.V(w, 1), q.V(w, 0)) - std::atan2(q.V(v, 1), q.V(v, 0))) * step, 0.0);
+  for (int u = 0; u < q.V.rows(); ++u)
+  {
+    if (boundary[u])
+    {
+      EXPECT_TRUE(onSurfaceBoundary(c.s.V, c.s.F, c.topo, q, u)) << "vertex " << u;
+      EXPECT_NEAR(std::abs(q.V(u, 2)), 1.0, 1e-12) << "vertex " << u;
     }
   }
 }
