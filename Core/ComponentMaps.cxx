@@ -131,6 +131,7 @@ void addComponent(const Inputs& in, const Component& part, const MeshTopology& t
   out.cut.cutEuler.insert(out.cut.cutEuler.end(), map.cut.cutEuler.begin(), map.cut.cutEuler.end());
   out.cancelledPairs += map.cancelledPairs;
   out.movedSingularities += map.movedSingularities;
+  out.addedConePairs += map.addedConePairs;
   out.branchPoints += map.branchPoints;
   out.branchPointsOnGrid += map.branchPointsOnGrid;
   out.seamEdges += map.seamEdges;

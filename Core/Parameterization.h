@@ -112,6 +112,10 @@ struct ParameterizationOptions
   /// changed edges turn to agree; 0 keeps every one where it is. Both would have to lie on grid
   /// points: a pair closer than a grid edge folds the map or stretches the quads between them.
   double minimumSingularitySeparation = 1.5;
+  /// Pairs of opposite quarter cones are added where the singularities leave the quads' size
+  /// uneven, each where it lowers the sum over the quads of the squared deviation of their log
+  /// size by at least this (conePairsForEvenScale, ConePairOptions::minimumGain); 0: none.
+  double conePairGain = 0.0;
 };
 
 /**
@@ -148,6 +152,8 @@ struct Parameterization
   /// minimumSingularitySeparation grid edges (moveCloseQuartersApart), before the map is solved
   /// (not separatedBranchPoints: branch points of one triangle the rounding put apart)
   int movedSingularities = 0;
+  /// pairs of opposite quarter cones added for quads of even size (conePairGain)
+  int addedConePairs = 0;
   int branchPoints = 0;         ///< inner points with a non-zero layer shift
   int branchPointsOnGrid = 0;   ///< of those, mapped to integer (u, v) within 1e-6
   int seamEdges = 0;            ///< cut edges

@@ -134,6 +134,9 @@ constexpr const char* CancelledSingularityPairs = "CancelledSingularityPairs";
 /// field, 1 x int: quarter singularities closer than a third of MinimumSingularitySeparation grid
 /// edges to one of the same index that the solver moved apart.
 constexpr const char* MovedSingularities = "MovedSingularities";
+/// field, 1 x int: pairs of opposite quarter cones the solver added for quads of even size
+/// (ConePairGain).
+constexpr const char* AddedConePairs = "AddedConePairs";
 /// field, 1 x int, 2 tuples: branch points, and those mapped to a grid point.
 constexpr const char* BranchPointsOnGrid = "BranchPointsOnGrid";
 /// field, 1 x double: largest distance of a seam translation from Z^2 (grid units).

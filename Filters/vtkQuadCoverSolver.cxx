@@ -135,6 +135,7 @@ void AddFigures(
   AddField<vtkIntArray>(fd, names::AlignedFeatureEdges, { double(map.alignedFeatureEdges) });
   AddField<vtkIntArray>(fd, names::CancelledSingularityPairs, { double(map.cancelledPairs) });
   AddField<vtkIntArray>(fd, names::MovedSingularities, { double(map.movedSingularities) });
+  AddField<vtkIntArray>(fd, names::AddedConePairs, { double(map.addedConePairs) });
   AddField<vtkIntArray>(
     fd, names::BranchPointsOnGrid, { double(map.branchPoints), double(map.branchPointsOnGrid) });
   AddField<vtkDoubleArray>(fd, names::SeamTranslationError, { map.maxSeamError });
@@ -162,6 +163,7 @@ vtkQuadCoverSolver::vtkQuadCoverSolver()
   this->MaximumRegrids = defaults.maximumRegrids;
   this->MaximumRegridQuadCount = defaults.maximumRegridQuadCount;
   this->MinimumSingularitySeparation = defaults.minimumSingularitySeparation;
+  this->ConePairGain = defaults.conePairGain;
   this->NumberOfThreads = defaults.numberOfThreads;
   this->SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_CELLS, names::FrameU);
   this->SetInputArrayToProcess(1, 0, 0, vtkDataObject::FIELD_ASSOCIATION_CELLS, names::Matching);
@@ -187,7 +189,8 @@ void vtkQuadCoverSolver::Execute(vtkQuadCoverSurface& in, vtkInformationVector* 
     { "BoundaryTolerance", this->BoundaryTolerance }, { "FeatureAngle", this->FeatureAngle },
     { "CurvatureEdgeLength", this->CurvatureEdgeLength },
     { "MaximumRegridQuadCount", this->MaximumRegridQuadCount },
-    { "MinimumSingularitySeparation", this->MinimumSingularitySeparation } });
+    { "MinimumSingularitySeparation", this->MinimumSingularitySeparation },
+    { "ConePairGain", this->ConePairGain } });
   quadcover::ParameterizationOptions options;
   options.targetEdgeLength = in.InCoreUnits(this->TargetEdgeLength); // for the scaled surface
   options.targetQuadCount = this->TargetQuadCount;
@@ -205,6 +208,7 @@ void vtkQuadCoverSolver::Execute(vtkQuadCoverSurface& in, vtkInformationVector* 
   options.maximumRegrids = this->MaximumRegrids;
   options.maximumRegridQuadCount = this->MaximumRegridQuadCount;
   options.minimumSingularitySeparation = this->MinimumSingularitySeparation;
+  options.conePairGain = this->ConePairGain;
   options.numberOfThreads = this->NumberOfThreads;
   const quadcover::Parameterization map = quadcover::computeParameterization(in.V, in.F, in.topo,
     geometry, U, matching, options, vtkQuadCoverEigen::CoreProgress(this, 0.15, 0.95));
@@ -285,6 +289,7 @@ void vtkQuadCoverSolver::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "MaximumRegridQuadCount: " << this->MaximumRegridQuadCount << "\n";
   os << indent << "MinimumSingularitySeparation: " << this->MinimumSingularitySeparation
      << "\n";
+  os << indent << "ConePairGain: " << this->ConePairGain << "\n";
   os << indent << "NumberOfThreads: " << this->NumberOfThreads << "\n";
   os << indent << "SplitSeams: " << (this->SplitSeams ? "On" : "Off") << "\n";
 }

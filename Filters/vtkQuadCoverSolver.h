@@ -193,6 +193,15 @@ public:
   ///@}
 
   ///@{
+  /** Pairs of opposite quarter cones (+1/4 and -1/4) are added where the field's singularities
+   * leave the quads uneven in size, each where it lowers the sum over the quads of the squared
+   * deviation of their log size by at least this (as the flat metric with cones at the
+   * singularities predicts it), in [0, 1e6] (default 0: none). Counted in AddedConePairs. */
+  vtkSetClampMacro(ConePairGain, double, 0.0, 1e6);
+  vtkGetMacro(ConePairGain, double);
+  ///@}
+
+  ///@{
   /** Number of threads for the untangling and for the maps of the components (each component
    * on its own), 0 for all cores (default 0). The result does not depend on it. */
   vtkSetClampMacro(NumberOfThreads, int, 0, 1024);
@@ -241,6 +250,7 @@ protected:
   int MaximumRegrids;
   double MaximumRegridQuadCount;
   double MinimumSingularitySeparation;
+  double ConePairGain;
   int NumberOfThreads;
   bool SplitSeams = false;
 

@@ -354,6 +354,9 @@ std::vector<Option> StageOptions(Pipeline& p)
     QC_NUMBER("param", solver, MinimumSingularitySeparation,
       "opposite singularities closer than this many grid edges cancel, like ones at a third of it "
       "move apart, 0: keep all"),
+    QC_NUMBER("param", solver, ConePairGain,
+      "a cone pair is added where it lowers the quads' summed squared log-size deviation by "
+      "this, 0: none"),
     QC_SWITCH("param", solver, SplitSeams,
       "write the surface cut open along the seams, with UV texture coordinates"),
     QC_SWITCH("quads", extractor, RepairInvertedQuads,

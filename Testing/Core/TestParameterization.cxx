@@ -9,6 +9,8 @@
 #include "Matchings.h"
 #include "MeshTopology.h"
 #include "Parameterization.h"
+#include "QuadExtraction.h"
+#include "QuadQuality.h"
 #include "Surfaces.h"
 #include "TestChain.h"
 #include "TestSurfaces.h"
@@ -999,4 +1001,32 @@ TEST(Untangling, TriangleEnergyDerivativesMatchDifferences)
       EXPECT_LE((quadcover::param::absoluteHessian(J, eps, 0.25) - P).norm(), 1e-9 * H.norm());
     }
   }
+}
+
+TEST(Parameterization, ConePairsEvenOutTheQuadsOfATubeOfVaryingWidth)
+{
+  // Two bulbs joined by a neck a sixth as wide: with the field's own singularities the grid keeps
+  // its number of lines around the neck, and its quads there are a sixth as wide as on the bulbs.
+  const Surface dumbbell = makeDumbbell(1.5, 0.8, 0.12, 48, 60);
+  const Chain plain = runChain(dumbbell, 3000);
+  ASSERT_EQ(plain.map.addedConePairs, 0) << "no pairs by default";
+  ParameterizationOptions options;
+  options.conePairGain = 13.0;
+  Chain c = runChain(dumbbell, 3000, options);
+  ASSERT_GT(c.map.addedConePairs, 0);
+  EXPECT_EQ(c.map.branchPoints, plain.map.branchPoints + 2 * c.map.addedConePairs);
+  EXPECT_NEAR(c.map.singularityIndex.sum(), 2.0, 1e-9) << "Poincare-Hopf: the sphere's chi";
+  // the map of the paired field: seamless, its branch points on the grid, nothing flipped
+  c.field.layerShift = c.map.layerShift;
+  c.field.index = c.map.singularityIndex;
+  expectIntegerGridMap(c, "dumbbell with cone pairs");
+  // and its quads more even
+  const QuadMesh plainQuads = extractQuads(plain.s.V, plain.s.F, plain.topo, plain.map.cornerUV);
+  const QuadMesh quads = extractQuads(c.s.V, c.s.F, c.topo, c.map.cornerUV);
+  const QuadQuality before = measureQuads(plainQuads.V, plainQuads.Q);
+  const QuadQuality after = measureQuads(quads.V, quads.Q);
+  EXPECT_EQ(after.quads, after.faces);
+  EXPECT_EQ(after.eulerCharacteristic, 2);
+  EXPECT_EQ(after.boundaryEdges, 0);
+  EXPECT_LT(after.edgeLengthRSD, 0.9 * before.edgeLengthRSD);
 }

@@ -1,0 +1,492 @@
+// ConePairs.cxx: cone pairs for quads of even size.
+#include "ConePairs.h"
+
+#include "BranchPointSearch.h"
+#include "SparseSolver.h"
+#include "SurfaceDisks.h"
+
+#include <Eigen/Geometry>
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <limits>
+#include <queue>
+
+namespace quadcover
+{
+namespace
+{
+using namespace branchsearch;
+constexpr double Infinity = std::numeric_limits<double>::infinity();
+/// Faces of steepest slope a round looks at, and dipoles it measures (of the three per face).
+constexpr int CandidateFaces = 6;
+constexpr std::size_t MeasuredDipoles = 3;
+
+/// Edge-path distances over the mesh's edges.
+class EdgeDistances
+{
+public:
+  EdgeDistances(const Eigen::MatrixX3d& V, const MeshTopology& topo)
+    : offsets_(topo.numVertices + 1, 0)
+    , scratch_(topo.numVertices, Infinity)
+  {
+    for (int e = 0; e < topo.numEdges(); ++e)
+    {
+      ++offsets_[topo.edges(e, 0) + 1];
+      ++offsets_[topo.edges(e, 1) + 1];
+    }
+    for (int v = 0; v < topo.numVertices; ++v)
+    {
+      offsets_[v + 1] += offsets_[v];
+    }
+    neighbours_.resize(offsets_.back());
+    std::vector<int> fill(offsets_.begin(), offsets_.end() - 1);
+    for (int e = 0; e < topo.numEdges(); ++e)
+    {
+      const int a = topo.edges(e, 0), b = topo.edges(e, 1);
+      const double length = (V.row(a) - V.row(b)).norm();
+      neighbours_[fill[a]++] = { b, length };
+      neighbours_[fill[b]++] = { a, length };
+    }
+  }
+
+  /// Lowers `distance` to the distance from the sources, where that is less than `limit`.
+  void spread(const std::vector<int>& sources, double limit, std::vector<double>& distance) const
+  {
+    run(sources, limit, distance, nullptr);
+  }
+
+  /// The points within `limit` of a, a first.
+  std::vector<int> within(int a, double limit) const
+  {
+    std::vector<int> list;
+    run({ a }, limit, scratch_, &list);
+    for (const int v : list)
+    {
+      scratch_[v] = Infinity;
+    }
+    return list;
+  }
+
+private:
+  /// Dijkstra from the sources within `limit`, lowering `distance`; each point settled is listed
+  /// in `settled` if given.
+  void run(const std::vector<int>& sources, double limit, std::vector<double>& distance,
+    std::vector<int>* settled) const
+  {
+    using Item = std::pair<double, int>;
+    std::priority_queue<Item, std::vector<Item>, std::greater<Item>> queue;
+    for (const int s : sources)
+    {
+      distance[s] = 0.0;
+      queue.push({ 0.0, s });
+    }
+    while (!queue.empty())
+    {
+      const auto [d, v] = queue.top();
+      queue.pop();
+      if (d > distance[v])
+      {
+        continue;
+      }
+      if (settled)
+      {
+        settled->push_back(v);
+      }
+      for (int j = offsets_[v]; j < offsets_[v + 1]; ++j)
+      {
+        const auto [w, length] = neighbours_[j];
+        const double nd = d + length;
+        if (nd < distance[w] && nd < limit)
+        {
+          distance[w] = nd;
+          queue.push({ nd, w });
+        }
+      }
+    }
+  }
+
+  std::vector<int> offsets_;
+  std::vector<std::pair<int, double>> neighbours_;
+  mutable std::vector<double> scratch_; ///< all infinite between calls of within
+};
+
+/// The gradient of the linear interpolation of u over triangle f (0 for a degenerate one).
+Eigen::Vector3d gradient(
+  const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F, int f, const Eigen::VectorXd& u)
+{
+  const Eigen::Vector3d a = V.row(F(f, 0)), b = V.row(F(f, 1)), c = V.row(F(f, 2));
+  const Eigen::Vector3d n = (b - a).cross(c - a);
+  const double twiceArea2 = n.squaredNorm();
+  if (!(twiceArea2 > 0))
+  {
+    return Eigen::Vector3d::Zero();
+  }
+  // sum of u_i times n x (the edge opposite i), over |n|^2
+  return (u[F(f, 0)] * n.cross(c - b) + u[F(f, 1)] * n.cross(a - c) + u[F(f, 2)] * n.cross(b - a)) /
+    twiceArea2;
+}
+
+/// The listed point nearest to p, -1 for none.
+int nearest(const Eigen::MatrixX3d& V, const std::vector<int>& points, const Eigen::Vector3d& p)
+{
+  int best = -1;
+  double distance = Infinity;
+  for (const int v : points)
+  {
+    const double d = (V.row(v).transpose() - p).squaredNorm();
+    if (d < distance)
+    {
+      distance = d;
+      best = v;
+    }
+  }
+  return best;
+}
+
+/// The cotangent Laplacian (each cotangent clamped to +-1e3) with a thousandth of a millionth of
+/// its mean diagonal added, 1 on the diagonal of unreferenced points; and each point's area.
+Eigen::SparseMatrix<double> cotangentLaplacian(
+  const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F, Eigen::VectorXd& area)
+{
+  const int n = static_cast<int>(V.rows());
+  std::vector<Eigen::Triplet<double>> entries;
+  entries.reserve(12 * F.rows() + n);
+  area.setZero(n);
+  for (int f = 0; f < F.rows(); ++f)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      const int i = F(f, k), j = F(f, (k + 1) % 3), o = F(f, (k + 2) % 3);
+      const Eigen::Vector3d a = V.row(i) - V.row(o), b = V.row(j) - V.row(o);
+      const double cross = a.cross(b).norm();
+      const double cot = cross > 0 ? std::clamp(a.dot(b) / cross, -1e3, 1e3) : 0.0;
+      entries.emplace_back(i, i, 0.5 * cot);
+      entries.emplace_back(j, j, 0.5 * cot);
+      entries.emplace_back(i, j, -0.5 * cot);
+      entries.emplace_back(j, i, -0.5 * cot);
+      area[i] += cross / 6.0;
+    }
+  }
+  Eigen::SparseMatrix<double> L(n, n);
+  L.setFromTriplets(entries.begin(), entries.end());
+  const double shift = 1e-9 * std::max(L.diagonal().cwiseAbs().mean(), 1e-300);
+  for (int v = 0; v < n; ++v)
+  {
+    L.coeffRef(v, v) += area[v] > 0 ? shift : 1.0;
+  }
+  return L;
+}
+
+/// The log scale seen at the grid's scale, and how cones change it: u~ = S L^-1 (charges), with
+/// S = D^-1 M the diffusion for a time of one grid edge squared (D = M + h^2 L), which takes out
+/// the log peak of a cone below the grid's scale (the map's quads do not follow it there).
+class ScaleModel
+{
+public:
+  ScaleModel(
+    const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F, const MeshTopology& topo, double h)
+    : topo_(topo)
+    , laplacian_(Factorization::Simplicial)
+    , diffusion_(Factorization::Simplicial)
+  {
+    const Eigen::SparseMatrix<double> L = cotangentLaplacian(V, F, area_);
+    laplacian_.compute(L);
+    Eigen::SparseMatrix<double> D = h * h * L;
+    for (int v = 0; v < topo.numVertices; ++v)
+    {
+      D.coeffRef(v, v) += area_[v];
+    }
+    diffusion_.compute(D);
+    ok_ = laplacian_.info() == Eigen::Success && diffusion_.info() == Eigen::Success;
+    for (int v = 0; v < topo.numVertices; ++v)
+    {
+      totalArea_ += area_[v];
+    }
+  }
+
+  bool ok() const { return ok_; }
+  double totalArea() const { return totalArea_; }
+  const Eigen::VectorXd& area() const { return area_; }
+
+  /// u~ of the given charges (curvature, each point's sum zero per component).
+  Eigen::VectorXd response(const Eigen::VectorXd& charges) const
+  {
+    const Eigen::VectorXd u = laplacian_.solve(charges);
+    return diffusion_.solve(Eigen::VectorXd(area_.cwiseProduct(u)));
+  }
+
+  /// u less each component's area-weighted mean.
+  Eigen::VectorXd centred(const Eigen::VectorXd& u) const
+  {
+    const int nc = topo_.numComponents();
+    std::vector<double> sum(nc, 0.0), weight(nc, 0.0);
+    for (int v = 0; v < topo_.numVertices; ++v)
+    {
+      const int c = topo_.vertexComponent[v];
+      if (c >= 0)
+      {
+        sum[c] += area_[v] * u[v];
+        weight[c] += area_[v];
+      }
+    }
+    Eigen::VectorXd r = Eigen::VectorXd::Zero(u.size());
+    for (int v = 0; v < topo_.numVertices; ++v)
+    {
+      const int c = topo_.vertexComponent[v];
+      r[v] = c >= 0 && weight[c] > 0 ? u[v] - sum[c] / weight[c] : 0.0;
+    }
+    return r;
+  }
+
+  /// The area-weighted variance of u about each component's mean.
+  double variance(const Eigen::VectorXd& u) const
+  {
+    const Eigen::VectorXd r = centred(u);
+    return totalArea_ > 0 ? r.dot(area_.cwiseProduct(r)) / totalArea_ : 0.0;
+  }
+
+  /// Per point x, what a unit charge at x adds to the variance of u to first order, over 2: with
+  /// r = u less its means, <r, S L^-1 e_x>_M / total area = (L^-1 M D^-1 M r)_x / total area
+  /// (L, D and M symmetric).
+  Eigen::VectorXd firstOrder(const Eigen::VectorXd& u) const
+  {
+    const Eigen::VectorXd r = centred(u);
+    const Eigen::VectorXd smoothed = diffusion_.solve(Eigen::VectorXd(area_.cwiseProduct(r)));
+    return laplacian_.solve(Eigen::VectorXd(area_.cwiseProduct(smoothed))) /
+      std::max(totalArea_, 1e-300);
+  }
+
+private:
+  const MeshTopology& topo_;
+  Eigen::VectorXd area_;
+  double totalArea_ = 0.0;
+  SpdSolver<double> laplacian_, diffusion_;
+  bool ok_ = false;
+};
+
+/// A +1/4 cone at `plus` and a -1/4 at `minus`, and what it lowers the variance by.
+struct Dipole
+{
+  int plus, minus;
+  double gain;
+};
+
+/// Dipoles across the steepest slopes of w (firstOrder): at the `faces` faces where it changes
+/// fastest (their points free, each at least `separation` from the others), the +1/4 one, two
+/// and three grid edges down the slope from the -1/4; gain to first order.
+std::vector<Dipole> dipolesAcrossSlopes(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F,
+  const EdgeDistances& distances, const Eigen::VectorXd& w, const std::vector<double>& blocked,
+  double separation, double h, int faces)
+{
+  const auto free = [&](int v) { return !(blocked[v] < separation); };
+  std::vector<std::pair<double, int>> slopes;
+  for (int f = 0; f < F.rows(); ++f)
+  {
+    if (free(F(f, 0)) && free(F(f, 1)) && free(F(f, 2)))
+    {
+      slopes.emplace_back(-gradient(V, F, f, w).norm(), f);
+    }
+  }
+  std::sort(slopes.begin(), slopes.end());
+  std::vector<Dipole> list;
+  std::vector<char> taken(V.rows(), 0);
+  int used = 0;
+  for (const auto& [slope, f] : slopes)
+  {
+    if (used >= faces || !(slope < 0))
+    {
+      break;
+    }
+    if (taken[F(f, 0)])
+    {
+      continue;
+    }
+    ++used;
+    const Eigen::Vector3d centre =
+      (V.row(F(f, 0)) + V.row(F(f, 1)) + V.row(F(f, 2))).transpose() / 3.0;
+    const Eigen::Vector3d down = -gradient(V, F, f, w).normalized();
+    const std::vector<int> around = distances.within(F(f, 0), 4.0 * h);
+    for (const double apart : { 1.0, 2.0, 3.0 })
+    {
+      const int a = nearest(V, around, centre + 0.5 * apart * h * down);
+      const int b = nearest(V, around, centre - 0.5 * apart * h * down);
+      if (a >= 0 && b >= 0 && a != b && free(a) && free(b))
+      {
+        list.push_back({ a, b, -Pi * (w[a] - w[b]) });
+      }
+    }
+    for (const int x : distances.within(F(f, 0), separation))
+    {
+      taken[x] = 1;
+    }
+  }
+  return list;
+}
+/// Whether the shortest path over regular inner points from a reaches b (edge lengths; no
+/// residual wrapped past +-pi with delta quarter turns, see findMergeTarget); the path is the
+/// search's.
+bool findPathTo(Optimizer& o, int a, int b, int delta)
+{
+  PathSearch& S = o.search;
+  S.begin(a);
+  int visited = 0;
+  while (!S.queue.empty() && visited < o.options.maximumSearchSize * 50)
+  {
+    const auto [d, u] = S.queue.top();
+    S.queue.pop();
+    if (d > S.dist[u])
+    {
+      continue;
+    }
+    ++visited;
+    if (u == b)
+    {
+      return true;
+    }
+    if (u != a && o.q[u] != 0)
+    {
+      continue; // paths through another singularity would disturb it
+    }
+    for (int i = 0; i < static_cast<int>(o.steps[u].size()); ++i)
+    {
+      const Step& s = o.steps[u][i];
+      double added = 0.0;
+      if (o.stepCost(s, delta, added))
+      {
+        S.relax(u, i, s.to, d + o.geometry.edgeLength(s.g, s.kg));
+      }
+    }
+  }
+  return false;
+}
+}
+
+ConePairs conePairsForEvenScale(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F,
+  const MeshTopology& topo, const Eigen::VectorXd& defect, const Eigen::VectorXd& index,
+  double edgeLength, const ConePairOptions& options)
+{
+  ConePairs result;
+  const int n = topo.numVertices;
+  if (!(options.minimumGain > 0) || options.maximumPairs <= 0 || !(edgeLength > 0) || n == 0)
+  {
+    return result;
+  }
+  const double h = edgeLength, separation = options.separation * edgeLength;
+  const ScaleModel model(V, F, topo, h);
+  if (!model.ok())
+  {
+    return result;
+  }
+  Eigen::VectorXd charges(n);
+  for (int v = 0; v < n; ++v)
+  {
+    charges[v] = model.area()[v] > 0 ? 2.0 * Pi * index[v] - defect[v] : 0.0;
+  }
+  Eigen::VectorXd u = model.response(charges);
+  // points no new cone may take: near a singularity or the boundary, or where the ring is not a
+  // disk
+  const EdgeDistances distances(V, topo);
+  std::vector<int> blocks;
+  for (int v = 0; v < n; ++v)
+  {
+    if ((std::abs(index[v]) > 0.1 && !topo.boundaryVertex[v]) || topo.boundaryVertex[v] ||
+      !topo.ringOrdered[v] || !(model.area()[v] > 0))
+    {
+      blocks.push_back(v);
+    }
+  }
+  std::vector<double> blocked(n, Infinity);
+  distances.spread(blocks, separation, blocked);
+  // the gain asked of a pair, as a lowered variance: minimumGain over the grid's cells
+  const double minimumGain = options.minimumGain / std::max(model.totalArea() / (h * h), 1.0);
+  double variance = model.variance(u);
+  result.deviationBefore = std::sqrt(variance);
+  while (static_cast<int>(result.pairs.size()) < options.maximumPairs)
+  {
+    std::vector<Dipole> dipoles = dipolesAcrossSlopes(
+      V, F, distances, model.firstOrder(u), blocked, separation, h, CandidateFaces);
+    std::sort(dipoles.begin(), dipoles.end(),
+      [](const Dipole& a, const Dipole& b) { return a.gain > b.gain; });
+    // the best few by the first order, measured; the best taken, and each other one that still
+    // gains enough with those taken before it and is not near them
+    std::vector<std::pair<Dipole, Eigen::VectorXd>> measured;
+    for (std::size_t i = 0; i < dipoles.size() && i < MeasuredDipoles; ++i)
+    {
+      Eigen::VectorXd charge = Eigen::VectorXd::Zero(n);
+      charge[dipoles[i].plus] = Pi / 2;
+      charge[dipoles[i].minus] = -Pi / 2;
+      Eigen::VectorXd response = model.response(charge);
+      const double gain = variance - model.variance(u + response);
+      measured.push_back({ { dipoles[i].plus, dipoles[i].minus, gain }, std::move(response) });
+    }
+    std::stable_sort(measured.begin(), measured.end(),
+      [](const auto& a, const auto& b) { return a.first.gain > b.first.gain; });
+    const int before = static_cast<int>(result.pairs.size());
+    for (auto& [dipole, response] : measured)
+    {
+      if (static_cast<int>(result.pairs.size()) >= options.maximumPairs ||
+        blocked[dipole.plus] < separation || blocked[dipole.minus] < separation)
+      {
+        continue;
+      }
+      const double after = model.variance(u + response);
+      if (!(variance - after >= minimumGain))
+      {
+        continue;
+      }
+      u += response;
+      variance = after;
+      result.pairs.emplace_back(dipole.plus, dipole.minus);
+      distances.spread({ dipole.plus, dipole.minus }, separation, blocked);
+    }
+    if (static_cast<int>(result.pairs.size()) == before)
+    {
+      break;
+    }
+  }
+  result.deviationAfter = std::sqrt(std::max(variance, 0.0));
+  return result;
+}
+
+int addConePairs(const Eigen::MatrixX3i& F, const MeshTopology& topo, const FrameGeometry& geometry,
+  const Eigen::MatrixX3d& frameU, FrameTopology& topology,
+  const std::vector<std::pair<int, int>>& pairs, std::vector<char>& changedFaces)
+{
+  changedFaces.assign(F.rows(), 0);
+  if (pairs.empty() || geometry.edgeLength.rows() == 0)
+  {
+    return 0;
+  }
+  const BranchPointOptions options;
+  Optimizer o(F, topo, geometry, frameU, topology, options);
+  TwistCheck twist(o);
+  DiskTest disk(F, topo, geometry.edgeLength);
+  int added = 0;
+  for (const auto& [plus, minus] : pairs)
+  {
+    if (o.q[plus] != 0 || o.q[minus] != 0 || topo.boundaryVertex[plus] ||
+      topo.boundaryVertex[minus] || !findPathTo(o, plus, minus, 1))
+    {
+      continue;
+    }
+    // with handles, only inside a disk around the path (see cancelClosePairs)
+    if (topo.components[topo.vertexComponent[plus]].genus != 0 &&
+      !disk.ballIsDisk(plus, 2.0 * o.search.dist[minus]))
+    {
+      continue;
+    }
+    if (changeUntwisted(o, twist, plus, minus, 1, changedFaces))
+    {
+      ++added;
+    }
+  }
+  if (added > 0)
+  {
+    topology = evaluateMatchings(F, topo, geometry, frameU, topology.matching);
+  }
+  return added;
+}
+
+}

@@ -1,0 +1,78 @@
+// ConePairs.h: where a frame field's singularities leave the quads uneven in size, and the pairs
+// of opposite quarter cones that even them out.
+#ifndef quadcover_ConePairs_h
+#define quadcover_ConePairs_h
+
+#include "Matchings.h"
+#include "MeshTopology.h"
+
+#include <Eigen/Core>
+
+#include <utility>
+#include <vector>
+
+namespace quadcover
+{
+
+struct ConePairOptions
+{
+  /// A pair is added only where it lowers the sum over the grid's cells of the squared deviation
+  /// of their log size (as conePairsForEvenScale models it) by at least this; 0: no pairs.
+  double minimumGain = 0.0;
+  /// At most this many pairs.
+  int maximumPairs = 100;
+  /// A new cone stays this many grid edges away from every other singularity and the boundary.
+  double separation = 3.0;
+};
+
+struct ConePairs
+{
+  /// (+1/4 point, -1/4 point) of each pair, in the order they were chosen
+  std::vector<std::pair<int, int>> pairs;
+  /// the area-weighted RMS of the modelled log scale about its mean per component, with the
+  /// field's own singularities and with the pairs added
+  double deviationBefore = 0.0;
+  double deviationAfter = 0.0;
+};
+
+/**
+ * Pairs of opposite quarter cones that make the quads more even in size. The model: the log
+ * scale u of the flat metric with cones at the field's singularities (as in Ben-Chen, Gotsman and
+ * Bunin 2008), L u = kappa - K, with L the cotangent Laplacian (free boundary), K the angle
+ * defects (Gaussian curvature inside, geodesic on the boundary) and kappa = 2 pi index at every
+ * point, seen at the grid's scale (diffused for a time of one grid edge squared, which takes out
+ * the log peak of each cone: the quads do not follow it below a grid edge). The integer-grid map
+ * follows it: its log area scale goes with u/2 (correlation 0.83 on spot with its 54
+ * singularities, 0.99 on a dumbbell and bumpy-cube), so that where u is low the quads are large.
+ * A single cone, or a pair far apart, spreads its log potential over the whole surface and
+ * raises the variance; a dipole does not. So, greedily: at the faces where u changes fastest
+ * (their points regular, inside, and `separation` grid edges from every singularity and the
+ * boundary), a +1/4 cone on the low side and a -1/4 on the high side, one, two or three grid
+ * edges apart (a dipole across a slope lowers it between the two and hardly changes u
+ * elsewhere); the pairs best to first order are measured, and each kept that lowers the
+ * variance of u, summed over the grid's cells (area / h^2), by `minimumGain`. Each round
+ * costs two solves and two a measured pair, with two factorizations in all.
+ * @param[in] defect     #V angleDefects
+ * @param[in] index      #V the field's index at each point (FrameTopology::index)
+ * @param[in] edgeLength the grid's edge length h
+ */
+ConePairs conePairsForEvenScale(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F,
+  const MeshTopology& topo, const Eigen::VectorXd& defect, const Eigen::VectorXd& index,
+  double edgeLength, const ConePairOptions& options);
+
+/**
+ * Adds cone pairs: for each (a, b), a +1/4 singularity at a and a -1/4 at b, by a quarter turn
+ * of the matchings along the shortest edge path between them over regular inner points. On a
+ * component with handles only where the triangles within twice the path's length of a form a
+ * disk (see cancelClosePairs); a pair that would leave a tube twisted (see optimizeBranchPoints)
+ * is undone. Updates `topology` in place.
+ * @param[out] changedFaces #F, 1 for the faces on both sides of a changed edge
+ * @return the number of pairs added
+ */
+int addConePairs(const Eigen::MatrixX3i& F, const MeshTopology& topo, const FrameGeometry& geometry,
+  const Eigen::MatrixX3d& frameU, FrameTopology& topology,
+  const std::vector<std::pair<int, int>>& pairs, std::vector<char>& changedFaces);
+
+}
+
+#endif
