@@ -196,7 +196,10 @@ public:
   /** Pairs of opposite quarter cones (+1/4 and -1/4) are added where the field's singularities
    * leave the quads uneven in size, each where it lowers the sum over the quads of the squared
    * deviation of their log size by at least this (as the flat metric with cones at the
-   * singularities predicts it), in [0, 1e6] (default 0: none). Counted in AddedConePairs. */
+   * singularities predicts it), in [0, 1e6] (default 0: none). The frames are then fitted to
+   * the new matchings as the smoothest field, which undoes a curvature alignment: meant for the
+   * smoothest field with its own singularities (vtkFrameSmoother::SmoothingWeight 1,
+   * vtkMatchingBuilder::OptimizeBranchPoints off; 13 there). Counted in AddedConePairs. */
   vtkSetClampMacro(ConePairGain, double, 0.0, 1e6);
   vtkGetMacro(ConePairGain, double);
   ///@}

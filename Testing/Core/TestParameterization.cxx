@@ -341,8 +341,9 @@ TEST(Parameterization, TargetQuadsCorrectsTheGridSizeByTheMapsArea)
     return sum;
   };
   const Surface torus = makeTorus(1.0, 0.6, 96, 48);
-  Chain plain = runChain(torus, 1500);
   ParameterizationOptions options;
+  options.conePairGain = 0.0; // the torus' field as it is
+  Chain plain = runChain(torus, 1500, options);
   options.targetQuadCount = 1500; // and targetEdgeLength 0: chosen by the count, corrected
   Chain corrected = plain;
   corrected.map = computeParameterization(
@@ -1008,8 +1009,10 @@ TEST(Parameterization, ConePairsEvenOutTheQuadsOfATubeOfVaryingWidth)
   // Two bulbs joined by a neck a sixth as wide: with the field's own singularities the grid keeps
   // its number of lines around the neck, and its quads there are a sixth as wide as on the bulbs.
   const Surface dumbbell = makeDumbbell(1.5, 0.8, 0.12, 48, 60);
-  const Chain plain = runChain(dumbbell, 3000);
-  ASSERT_EQ(plain.map.addedConePairs, 0) << "no pairs by default";
+  ParameterizationOptions none;
+  none.conePairGain = 0.0;
+  const Chain plain = runChain(dumbbell, 3000, none);
+  ASSERT_EQ(plain.map.addedConePairs, 0);
   ParameterizationOptions options;
   options.conePairGain = 13.0;
   Chain c = runChain(dumbbell, 3000, options);

@@ -24,7 +24,8 @@ using namespace quadcover;
 
 namespace
 {
-/// Every inner branch point must be a quad vertex of valence 4 - 4 * index; every other inner
+/// Every inner branch point of the map (its own LayerShift and SingularityIndex, cone pairs
+/// included) must be a quad vertex of valence 4 - 4 * index; every other inner
 /// quad vertex has valence 4. Returns the branch points found among the quad vertices.
 int expectValencesFromIndices(const Chain& c, const QuadMesh& q, const QuadQuality& m)
 {
@@ -32,10 +33,11 @@ int expectValencesFromIndices(const Chain& c, const QuadMesh& q, const QuadQuali
   for (int v = 0; v < q.V.rows(); ++v)
   {
     const int p = q.vertexPoint[v];
-    if (p >= 0 && !c.topo.boundaryVertex[p] && c.field.layerShift[p] != 0)
+    if (p >= 0 && !c.topo.boundaryVertex[p] && c.map.layerShift[p] != 0)
     {
       ++found;
-      EXPECT_EQ(m.valence[v], static_cast<int>(std::lround(4 - 4 * c.field.index[p]))) << p;
+      EXPECT_EQ(m.valence[v], static_cast<int>(std::lround(4 - 4 * c.map.singularityIndex[p])))
+        << p;
     }
   }
   return found;
@@ -626,7 +628,7 @@ TEST(QuadExtraction, AMapFoldedAtSeamlessPointsStillGivesAValidMesh)
         c.map.cornerUV(f, 2 * k + 1) ==
           c.map.cornerUV(corners[p][0].first, 2 * corners[p][0].second + 1);
     }
-    if (!oneChart || c.field.layerShift[p] != 0)
+    if (!oneChart || c.map.layerShift[p] != 0)
     {
       continue;
     }
