@@ -19,9 +19,11 @@ namespace
 {
 using namespace branchsearch;
 constexpr double Infinity = std::numeric_limits<double>::infinity();
-/// Faces of steepest slope a round looks at, and dipoles it measures (of the three per face).
+/// Faces of steepest slope a round looks at, and how many of their dipoles (the best to first
+/// order) it measures; a dipole's cones are this many grid edges apart.
 constexpr int CandidateFaces = 6;
 constexpr std::size_t MeasuredDipoles = 3;
+constexpr double DipoleLength = 3.0;
 
 /// Edge-path distances over the mesh's edges.
 class EdgeDistances
@@ -145,7 +147,7 @@ int nearest(const Eigen::MatrixX3d& V, const std::vector<int>& points, const Eig
   return best;
 }
 
-/// The cotangent Laplacian (each cotangent clamped to +-1e3) with a thousandth of a millionth of
+/// The cotangent Laplacian (triangles of zero area left out) with a thousandth of a millionth of
 /// its mean diagonal added, 1 on the diagonal of unreferenced points; and each point's area.
 Eigen::SparseMatrix<double> cotangentLaplacian(
   const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F, Eigen::VectorXd& area)
@@ -161,7 +163,7 @@ Eigen::SparseMatrix<double> cotangentLaplacian(
       const int i = F(f, k), j = F(f, (k + 1) % 3), o = F(f, (k + 2) % 3);
       const Eigen::Vector3d a = V.row(i) - V.row(o), b = V.row(j) - V.row(o);
       const double cross = a.cross(b).norm();
-      const double cot = cross > 0 ? std::clamp(a.dot(b) / cross, -1e3, 1e3) : 0.0;
+      const double cot = cross > 0 ? a.dot(b) / cross : 0.0;
       entries.emplace_back(i, i, 0.5 * cot);
       entries.emplace_back(j, j, 0.5 * cot);
       entries.emplace_back(i, j, -0.5 * cot);
@@ -274,11 +276,11 @@ struct Dipole
 };
 
 /// Dipoles across the steepest slopes of w (firstOrder): at the `faces` faces where it changes
-/// fastest (their points free, each at least `separation` from the others), the +1/4 one, two
-/// and three grid edges down the slope from the -1/4; gain to first order.
+/// fastest (their points free, each at least `separation` from the others), the +1/4 `apart`
+/// grid edges down the slope from the -1/4; gain to first order.
 std::vector<Dipole> dipolesAcrossSlopes(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F,
   const EdgeDistances& distances, const Eigen::VectorXd& w, const std::vector<double>& blocked,
-  double separation, double h, int faces)
+  double separation, double apart, double h, int faces)
 {
   const auto free = [&](int v) { return !(blocked[v] < separation); };
   std::vector<std::pair<double, int>> slopes;
@@ -286,36 +288,34 @@ std::vector<Dipole> dipolesAcrossSlopes(const Eigen::MatrixX3d& V, const Eigen::
   {
     if (free(F(f, 0)) && free(F(f, 1)) && free(F(f, 2)))
     {
-      slopes.emplace_back(-gradient(V, F, f, w).norm(), f);
+      const double slope = gradient(V, F, f, w).norm();
+      if (std::isfinite(slope) && slope > 0)
+      {
+        slopes.emplace_back(-slope, f);
+      }
     }
   }
-  std::sort(slopes.begin(), slopes.end());
+  // the steepest few hundred in order (the faces taken are apart, so few are skipped)
+  const auto sorted = slopes.begin() + std::min<std::size_t>(slopes.size(), 64 * faces);
+  std::partial_sort(slopes.begin(), sorted, slopes.end());
   std::vector<Dipole> list;
   std::vector<char> taken(V.rows(), 0);
-  int used = 0;
-  for (const auto& [slope, f] : slopes)
+  for (auto it = slopes.begin(); it != sorted && static_cast<int>(list.size()) < faces; ++it)
   {
-    if (used >= faces || !(slope < 0))
-    {
-      break;
-    }
-    if (taken[F(f, 0)])
+    const int f = it->second;
+    if (taken[F(f, 0)] || taken[F(f, 1)] || taken[F(f, 2)])
     {
       continue;
     }
-    ++used;
     const Eigen::Vector3d centre =
       (V.row(F(f, 0)) + V.row(F(f, 1)) + V.row(F(f, 2))).transpose() / 3.0;
     const Eigen::Vector3d down = -gradient(V, F, f, w).normalized();
-    const std::vector<int> around = distances.within(F(f, 0), 4.0 * h);
-    for (const double apart : { 1.0, 2.0, 3.0 })
+    const std::vector<int> around = distances.within(F(f, 0), apart * h);
+    const int a = nearest(V, around, centre + 0.5 * apart * h * down);
+    const int b = nearest(V, around, centre - 0.5 * apart * h * down);
+    if (a >= 0 && b >= 0 && a != b && free(a) && free(b))
     {
-      const int a = nearest(V, around, centre + 0.5 * apart * h * down);
-      const int b = nearest(V, around, centre - 0.5 * apart * h * down);
-      if (a >= 0 && b >= 0 && a != b && free(a) && free(b))
-      {
-        list.push_back({ a, b, -Pi * (w[a] - w[b]) });
-      }
+      list.push_back({ a, b, -Pi * (w[a] - w[b]) });
     }
     for (const int x : distances.within(F(f, 0), separation))
     {
@@ -324,6 +324,7 @@ std::vector<Dipole> dipolesAcrossSlopes(const Eigen::MatrixX3d& V, const Eigen::
   }
   return list;
 }
+
 /// Whether the shortest path over regular inner points from a reaches b (edge lengths; no
 /// residual wrapped past +-pi with delta quarter turns, see findMergeTarget); the path is the
 /// search's.
@@ -332,7 +333,7 @@ bool findPathTo(Optimizer& o, int a, int b, int delta)
   PathSearch& S = o.search;
   S.begin(a);
   int visited = 0;
-  while (!S.queue.empty() && visited < o.options.maximumSearchSize * 50)
+  while (!S.queue.empty() && visited < o.options.maximumSearchSize)
   {
     const auto [d, u] = S.queue.top();
     S.queue.pop();
@@ -406,7 +407,7 @@ ConePairs conePairsForEvenScale(const Eigen::MatrixX3d& V, const Eigen::MatrixX3
   while (static_cast<int>(result.pairs.size()) < options.maximumPairs)
   {
     std::vector<Dipole> dipoles = dipolesAcrossSlopes(
-      V, F, distances, model.firstOrder(u), blocked, separation, h, CandidateFaces);
+      V, F, distances, model.firstOrder(u), blocked, separation, DipoleLength, h, CandidateFaces);
     std::sort(dipoles.begin(), dipoles.end(),
       [](const Dipole& a, const Dipole& b) { return a.gain > b.gain; });
     // the best few by the first order, measured; the best taken, and each other one that still

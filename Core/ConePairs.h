@@ -16,8 +16,8 @@ namespace quadcover
 
 struct ConePairOptions
 {
-  /// A pair is added only where it lowers the sum over the grid's cells of the squared deviation
-  /// of their log size (as conePairsForEvenScale models it) by at least this; 0: no pairs.
+  /// A pair is added only where it lowers the variance of the modelled log scale u, summed over
+  /// the grid's cells (conePairsForEvenScale), by at least this; 0: no pairs.
   double minimumGain = 0.0;
   /// At most this many pairs.
   int maximumPairs = 100;
@@ -45,13 +45,14 @@ struct ConePairs
  * follows it: its log area scale goes with u/2 (correlation 0.83 on spot with its 54
  * singularities, 0.99 on a dumbbell and bumpy-cube), so that where u is low the quads are large.
  * A single cone, or a pair far apart, spreads its log potential over the whole surface and
- * raises the variance; a dipole does not. So, greedily: at the faces where u changes fastest
- * (their points regular, inside, and `separation` grid edges from every singularity and the
- * boundary), a +1/4 cone on the low side and a -1/4 on the high side, one, two or three grid
- * edges apart (a dipole across a slope lowers it between the two and hardly changes u
- * elsewhere); the pairs best to first order are measured, and each kept that lowers the
- * variance of u, summed over the grid's cells (area / h^2), by `minimumGain`. Each round
- * costs two solves and two a measured pair, with two factorizations in all.
+ * raises the variance; a dipole does not. So, greedily: w, what a unit cone at each point adds
+ * to the variance of u to first order (two solves for all points at once), and at the six faces
+ * where w changes fastest (their points regular, inside, and `separation` grid edges from every
+ * singularity and the boundary) a +1/4 cone on the low side of w and a -1/4 on the high side,
+ * three grid edges apart (a dipole across a slope lowers it between the two and hardly changes
+ * u elsewhere); the three best to first order are measured (two solves each), and each kept that
+ * lowers the variance of u, summed over the grid's cells (area / h^2), by `minimumGain`. Two
+ * factorizations in all.
  * @param[in] defect     #V angleDefects
  * @param[in] index      #V the field's index at each point (FrameTopology::index)
  * @param[in] edgeLength the grid's edge length h
@@ -64,8 +65,8 @@ ConePairs conePairsForEvenScale(const Eigen::MatrixX3d& V, const Eigen::MatrixX3
  * Adds cone pairs: for each (a, b), a +1/4 singularity at a and a -1/4 at b, by a quarter turn
  * of the matchings along the shortest edge path between them over regular inner points. On a
  * component with handles only where the triangles within twice the path's length of a form a
- * disk (see cancelClosePairs); a pair that would leave a tube twisted (see optimizeBranchPoints)
- * is undone. Updates `topology` in place.
+ * disk (see cancelClosePairs). (The twist check of optimizeBranchPoints cannot object: both ends
+ * stay singular.) Updates `topology` in place.
  * @param[out] changedFaces #F, 1 for the faces on both sides of a changed edge
  * @return the number of pairs added
  */

@@ -113,8 +113,8 @@ struct ParameterizationOptions
   /// points: a pair closer than a grid edge folds the map or stretches the quads between them.
   double minimumSingularitySeparation = 1.5;
   /// Pairs of opposite quarter cones are added where the singularities leave the quads' size
-  /// uneven, each where it lowers the sum over the quads of the squared deviation of their log
-  /// size by at least this (conePairsForEvenScale, ConePairOptions::minimumGain); 0: none.
+  /// uneven, each where it lowers the variance of the modelled log scale, summed over the grid's
+  /// cells, by at least this (conePairsForEvenScale, ConePairOptions::minimumGain); 0: none.
   double conePairGain = 0.0;
 };
 

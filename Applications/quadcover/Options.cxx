@@ -355,8 +355,8 @@ std::vector<Option> StageOptions(Pipeline& p)
       "opposite singularities closer than this many grid edges cancel, like ones at a third of it "
       "move apart, 0: keep all"),
     QC_NUMBER("param", solver, ConePairGain,
-      "a cone pair is added where it lowers the quads' summed squared log-size deviation by "
-      "this, 0: none"),
+      "a cone pair is added where it lowers the modelled log scale's variance, summed over the "
+      "quads, by this, 0: none"),
     QC_SWITCH("param", solver, SplitSeams,
       "write the surface cut open along the seams, with UV texture coordinates"),
     QC_SWITCH("quads", extractor, RepairInvertedQuads,
