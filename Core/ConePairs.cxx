@@ -295,13 +295,19 @@ std::vector<Dipole> dipolesAcrossSlopes(const Eigen::MatrixX3d& V, const Eigen::
       }
     }
   }
-  // the steepest few hundred in order (the faces taken are apart, so few are skipped)
-  const auto sorted = slopes.begin() + std::min<std::size_t>(slopes.size(), 64 * faces);
-  std::partial_sort(slopes.begin(), sorted, slopes.end());
+  // in order of steepness: the steepest few hundred sorted first, the rest only when those run
+  // out (the faces near one taken are skipped, and on a fine mesh the steepest hundreds may all
+  // lie around two or three places)
   std::vector<Dipole> list;
   std::vector<char> taken(V.rows(), 0);
-  for (auto it = slopes.begin(); it != sorted && static_cast<int>(list.size()) < faces; ++it)
+  const auto first = slopes.begin() + std::min<std::size_t>(64 * faces, slopes.size());
+  std::partial_sort(slopes.begin(), first, slopes.end());
+  for (auto it = slopes.begin(); it != slopes.end() && static_cast<int>(list.size()) < faces; ++it)
   {
+    if (it == first)
+    {
+      std::sort(it, slopes.end());
+    }
     const int f = it->second;
     if (taken[F(f, 0)] || taken[F(f, 1)] || taken[F(f, 2)])
     {
