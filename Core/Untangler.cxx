@@ -293,7 +293,8 @@ public:
     std::fill(value, value + hessian_.nonZeros(), 0.0);
     for (int j = 0; j < static_cast<int>(area_.size()); ++j)
     {
-      const int k = freeBegin_[j + 1] - freeBegin_[j];
+      const Eigen::Matrix<double, 4, Eigen::Dynamic>& R = jacobianOfFree_[j];
+      const int k = static_cast<int>(R.cols());
       if (k == 0)
       {
         continue;
@@ -301,7 +302,6 @@ public:
       const double scale = toUnitCell_[j];
       const Eigen::Matrix4d HJ =
         absoluteHessian(jacobian(j), eps, untangler_.theta) * (area_[j] * scale * scale);
-      const Eigen::Matrix<double, 4, Eigen::Dynamic>& R = jacobianOfFree_[j];
       const Eigen::MatrixXd local = R.transpose() * HJ * R;
       int entry = entryBegin_[j];
       for (int b = 0; b < k; ++b)
@@ -379,14 +379,14 @@ private:
   }
 
   /// The Hessian's pattern over the free slots (lower triangle) and where each face's entries
-  /// go (freeBegin_, entryBegin_, entries_, diagonal_), and each face's jacobianOfFree_.
+  /// go (entryBegin_, entries_, diagonal_), and each face's jacobianOfFree_.
   void buildHessianPattern()
   {
     const int m = size();
     const int nf = static_cast<int>(area_.size());
     std::vector<int> freeSlots;                   // per face: the free slots its rows use
+    std::vector<int> freeBegin(1, 0);             // per face: where its free slots begin
     std::vector<int> termLocal(slot_.size(), -1); // per term: its slot's index among its face's
-    freeBegin_.assign(1, 0);
     jacobianOfFree_.resize(nf);
     std::vector<Eigen::Triplet<double>> pattern;
     for (int i = 0; i < m; ++i)
@@ -410,10 +410,10 @@ private:
           freeSlots.push_back(slot_[t]);
         }
       }
-      freeBegin_.push_back(static_cast<int>(freeSlots.size()));
-      for (int b = begin; b < freeBegin_.back(); ++b)
+      freeBegin.push_back(static_cast<int>(freeSlots.size()));
+      for (int b = begin; b < freeBegin.back(); ++b)
       {
-        for (int a = b; a < freeBegin_.back(); ++a)
+        for (int a = b; a < freeBegin.back(); ++a)
         {
           const int r = std::max(freeSlots[a], freeSlots[b]);
           const int c = std::min(freeSlots[a], freeSlots[b]);
@@ -421,7 +421,7 @@ private:
         }
       }
       Eigen::Matrix<double, 4, Eigen::Dynamic>& R = jacobianOfFree_[j];
-      R.setZero(4, freeBegin_.back() - begin);
+      R.setZero(4, freeBegin.back() - begin);
       for (int i = 0; i < 4; ++i)
       {
         for (int t = rowBegin_[4 * j + i]; t < rowBegin_[4 * j + i + 1]; ++t)
@@ -450,9 +450,9 @@ private:
     entryBegin_.assign(1, 0);
     for (int j = 0; j < nf; ++j)
     {
-      for (int b = freeBegin_[j]; b < freeBegin_[j + 1]; ++b)
+      for (int b = freeBegin[j]; b < freeBegin[j + 1]; ++b)
       {
-        for (int a = b; a < freeBegin_[j + 1]; ++a)
+        for (int a = b; a < freeBegin[j + 1]; ++a)
         {
           entries_.push_back(
             offset(std::max(freeSlots[a], freeSlots[b]), std::min(freeSlots[a], freeSlots[b])));
@@ -473,7 +473,6 @@ private:
   std::vector<int> slot_;           // per term: the slot of its symbol
   Eigen::VectorXd z_;               // per slot: the free unknowns, then the fixed symbols
   Eigen::VectorXd gradient_;        // per slot
-  std::vector<int> freeBegin_;      // per face: where its free slots begin (its count of them)
   std::vector<int> entryBegin_;     // per face: where its Hessian entries begin in entries_
   /// per face: d(J's 4 entries) / d(its free slots), the same for every Newton step
   std::vector<Eigen::Matrix<double, 4, Eigen::Dynamic>> jacobianOfFree_;
