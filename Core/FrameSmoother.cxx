@@ -96,6 +96,10 @@ void checkInputs(const Eigen::MatrixX3i& F, const MeshTopology& topo,
   {
     throw std::invalid_argument("smoothFrames: smoothing weight must lie in [0, 1]");
   }
+  if (!(options.coherenceRadius >= 0.0 && std::isfinite(options.coherenceRadius)))
+  {
+    throw std::invalid_argument("smoothFrames: coherence radius must be finite and at least 0");
+  }
 }
 
 /// The energy's terms (areas, weights, a link per inner edge) and the frames held along
@@ -557,6 +561,70 @@ Eigen::VectorXd turnsToField(
 
 /// Runs 2 and 3: descents from the global starts (Knoeppel et al. 2013); the first with the
 /// lowest end goes into alpha and R. Returns false when there is none.
+/// How far each input frame agrees with those around it, in [0, 1]: |c_f| with c the input's
+/// four-fold field q = e^{4 i phi} diffused over about `radius` (one implicit step of the
+/// connection Laplacian of the links: (M + t L) c = M q, t = 2 radius^2 / l^2 for the typical
+/// edge length l of the links' weights). Incoherent directions (noise, umbilics, directions that
+/// turn within the radius) average out towards 0.
+Eigen::VectorXd frameCoherence(const Smoothing& s, double radius)
+{
+  const Problem& P = s.P;
+  const int nf = static_cast<int>(P.area.size());
+  Eigen::VectorXd coherence = Eigen::VectorXd::Ones(nf);
+  const double meanArea = nf > 0 ? P.area.sum() / nf : 0.0;
+  const double l2 = 4.0 / std::sqrt(3.0) * meanArea;
+  if (!(radius > 0.0) || !(l2 > 0.0) || nf == 0)
+  {
+    return coherence;
+  }
+  const double t = 2.0 * radius * radius / l2;
+  Eigen::VectorXd diag = Eigen::VectorXd::Zero(nf);
+  std::vector<Eigen::Triplet<Complex>> triplets;
+  triplets.reserve(2 * P.links.size() + nf);
+  for (const Link& l : P.links)
+  {
+    addLink(diag, triplets, l.f, l.g, t * l.w, std::polar(1.0, 4.0 * l.rho));
+  }
+  Eigen::VectorXcd b(nf);
+  for (int f = 0; f < nf; ++f)
+  {
+    const double m = P.area[f] + 1e-12 * meanArea;
+    triplets.emplace_back(f, f, Complex(diag[f] + m, 0.0));
+    b[f] = m * std::polar(1.0, 4.0 * s.phi[f]);
+  }
+  Eigen::SparseMatrix<Complex> A(nf, nf);
+  A.setFromTriplets(triplets.begin(), triplets.end());
+  SpdSolver<Complex> solver;
+  solver.compute(A);
+  if (solver.info() != Eigen::Success)
+  {
+    return coherence;
+  }
+  const Eigen::VectorXcd c = solver.solve(b);
+  for (int f = 0; f < nf; ++f)
+  {
+    coherence[f] = std::min(1.0, std::abs(c[f]));
+  }
+  return coherence;
+}
+
+/// Multiplies each triangle's alignment weight by its frameCoherence (radius: a fraction of the
+/// square root of the surface's area) to the power CoherencePower; returns the coherence (1
+/// everywhere when the radius is 0).
+Eigen::VectorXd weighByCoherence(Smoothing& s, double radius)
+{
+  // The power: the alignment fades fast below full agreement. Chosen on the shared meshes with
+  // the smoothing weight 0.95 and no merges at 6,500 quads: 8 against 4 and 16 (medians of the
+  // edge-length RSD 10.3% against 10.9 and 10.0, angle RSD 7.7% against 7.9 and 8.8).
+  constexpr double CoherencePower = 8.0;
+  const Eigen::VectorXd coherence = frameCoherence(s, radius * std::sqrt(s.P.area.sum()));
+  for (Eigen::Index f = 0; f < coherence.size(); ++f)
+  {
+    s.P.weight[f] *= std::pow(coherence[f], CoherencePower);
+  }
+  return coherence;
+}
+
 bool descendFromGlobalStarts(const Smoothing& s, Descent& descent, const Eigen::VectorXd& start,
   Eigen::VectorXd& alpha, SmootherResult& R, const Progress& progress)
 {
@@ -593,6 +661,7 @@ SmootherResult smoothFrames(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F
   Smoothing s;
   s.phi = vectorAngles(geometry.bases, frameU);
   setUpProblem(V, F, topo, geometry, weight, options, s, R);
+  R.coherence = weighByCoherence(s, options.coherenceRadius);
   numberUnknowns(s, R);
   progress.report(0.01);
   Descent descent(s, options, progress.part(0.01, 0.05));

@@ -36,6 +36,14 @@ struct SmootherOptions
   /// alignment term is weak, below 2% of the smoothing term's weight) the smoothest field
   /// itself; keep the run that ends with the lowest energy.
   bool globalStart = true;
+  /// The curvature directions count where they are nearly parallel over this radius (a fraction
+  /// of the square root of the surface's area), where following them costs little smoothness:
+  /// each triangle's alignment weight is multiplied by its coherence to the 8th power, |c| for
+  /// the four-fold field of the input frames diffused over the radius with the surface's
+  /// transport (1 where they are parallel, as on a cylinder; towards 0 where they scatter, as on
+  /// a noisy scan or over bumps smaller than the radius; about 0.5-0.65 where they turn, as on a
+  /// torus). Elsewhere the field is the smoothest one. 0: the weights as given.
+  double coherenceRadius = 0.1;
 };
 
 struct SmootherResult
@@ -54,6 +62,9 @@ struct SmootherResult
   /// Steps that raised the energy by more than rounding (always 0 if the bound holds: the
   /// descent would stop at such a step, so only this count can show it).
   int rejectedSteps = 0;
+  /// #F how far each curvature frame agrees with those around it, in [0, 1]
+  /// (SmootherOptions::coherenceRadius; 1 everywhere when that is 0)
+  Eigen::VectorXd coherence;
   bool fromGlobalStart = false; ///< the chosen run started from a global field
 };
 

@@ -115,7 +115,7 @@ struct ParameterizationOptions
   /// Pairs of opposite quarter cones are added where the singularities leave the quads' size
   /// uneven, each where it lowers the variance of the modelled log scale, summed over the grid's
   /// cells, by at least this (conePairsForEvenScale, ConePairOptions::minimumGain); 0: none.
-  double conePairGain = 0.0;
+  double conePairGain = 13.0;
 };
 
 /**

@@ -30,6 +30,7 @@ vtkFrameSmoother::vtkFrameSmoother()
   this->MinimumFeatureLength = defaults.minimumFeatureLength;
   this->AlignToBoundary = defaults.alignToBoundary;
   this->GlobalStart = defaults.globalStart;
+  this->CoherenceRadius = defaults.coherenceRadius;
   namespace names = vtkQuadCoverArrayNames;
   this->SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_CELLS, names::FrameU);
   this->SetInputArrayToProcess(1, 0, 0, vtkDataObject::FIELD_ASSOCIATION_CELLS, names::FrameV);
@@ -57,8 +58,8 @@ void vtkFrameSmoother::Execute(vtkQuadCoverSurface& in, vtkInformationVector* ou
   this->UpdateProgress(0.2);
 
   vtkQuadCoverEigen::RequireNumbers({ { "SmoothingWeight", this->SmoothingWeight },
-    { "ConvergenceTolerance", this->ConvergenceTolerance },
-    { "FeatureAngle", this->FeatureAngle } });
+    { "ConvergenceTolerance", this->ConvergenceTolerance }, { "FeatureAngle", this->FeatureAngle },
+    { "CoherenceRadius", this->CoherenceRadius } });
   quadcover::SmootherOptions options;
   options.smoothingWeight = this->SmoothingWeight;
   options.maximumNumberOfIterations = this->MaximumNumberOfIterations;
@@ -68,6 +69,7 @@ void vtkFrameSmoother::Execute(vtkQuadCoverSurface& in, vtkInformationVector* ou
   options.minimumFeatureLength = this->MinimumFeatureLength;
   options.alignToBoundary = this->AlignToBoundary;
   options.globalStart = this->GlobalStart;
+  options.coherenceRadius = this->CoherenceRadius;
   const quadcover::SmootherResult r = quadcover::smoothFrames(in.V, in.F, in.topo, geometry, U, Vf,
     weight, options, vtkQuadCoverEigen::CoreProgress(this, 0.2, 0.95));
 
@@ -78,6 +80,7 @@ void vtkFrameSmoother::Execute(vtkQuadCoverSurface& in, vtkInformationVector* ou
   cd->AddArray(ToArray(r.frameU, names::FrameU));
   cd->AddArray(ToArray(r.frameV, names::FrameV));
   cd->AddArray(ToArray(r.rotation, names::FrameRotation));
+  cd->AddArray(ToArray(r.coherence, names::FrameCoherence));
   cd->AddArray(ToArray<vtkUnsignedCharArray>(
     Eigen::Map<const Eigen::Matrix<char, Eigen::Dynamic, 1>>(r.constrained.data(), nf),
     names::FrameConstrained));
@@ -103,4 +106,5 @@ void vtkFrameSmoother::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "MinimumFeatureLength: " << this->MinimumFeatureLength << "\n";
   os << indent << "AlignToBoundary: " << (this->AlignToBoundary ? "On" : "Off") << "\n";
   os << indent << "GlobalStart: " << (this->GlobalStart ? "On" : "Off") << "\n";
+  os << indent << "CoherenceRadius: " << this->CoherenceRadius << "\n";
 }

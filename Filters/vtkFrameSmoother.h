@@ -29,7 +29,8 @@
  * and FrameWeight (if absent, 1 everywhere), by default the names vtkCurvatureFrames writes;
  * point the filter at others with SetInputArrayToProcess(0|1|2, 0, 0,
  * vtkDataObject::FIELD_ASSOCIATION_CELLS, name). Output: the surface with FrameU and FrameV
- * replaced by the smoothed frames, cell data FrameRotation and FrameConstrained, field data
+ * replaced by the smoothed frames, cell data FrameRotation, FrameConstrained and FrameCoherence
+ * (how nearly parallel the input frames are around each triangle, CoherenceRadius), field data
  * SmoothingEnergy (before: the input with held frames already on their edges; after),
  * SmoothingIterations and ConstrainedFrameCount. Names: vtkQuadCoverArrayNames.h.
  *
@@ -95,6 +96,18 @@ public:
   ///@}
 
   ///@{
+  /**
+   * The curvature directions count where they are nearly parallel over this radius, a fraction
+   * of the square root of the surface's area (default 0.1; 0: everywhere): each triangle's
+   * FrameWeight is multiplied by its FrameCoherence to the 8th power, so the field follows
+   * curvature where that costs little smoothness (cylinders, bodies of revolution) and is the
+   * smoothest field where the directions scatter or turn (scan noise, bumps, a torus' inside).
+   */
+  vtkSetClampMacro(CoherenceRadius, double, 0.0, 10.0);
+  vtkGetMacro(CoherenceRadius, double);
+  ///@}
+
+  ///@{
   /** Also start from the globally optimal fields (default on; off: from the input only). */
   vtkSetMacro(GlobalStart, bool);
   vtkGetMacro(GlobalStart, bool);
@@ -116,6 +129,7 @@ protected:
   int MinimumFeatureLength;
   bool AlignToBoundary;
   bool GlobalStart;
+  double CoherenceRadius;
 
 private:
   vtkFrameSmoother(const vtkFrameSmoother&) = delete;

@@ -7,7 +7,7 @@
  * the edge (the smallest angle), then derives what the matchings imply at the points: the layer
  * shift of the branched covering (Def. 4) and the frame field's true index.
  *
- * With OptimizeBranchPoints (default on) it then runs the greedy search of Sect. 4.2: paths
+ * With OptimizeBranchPoints (default off) it then runs the greedy search of Sect. 4.2: paths
  * from singular points (index +-1/4 or +-1/2) to nearby singular points get their matchings
  * changed when that lowers BranchPointWeight * (number of singular points) + sum over edges of
  * the matched frames' angle (radians), each edge's angle counted in proportion to its length
@@ -55,7 +55,8 @@ public:
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   ///@{
-  /** Run the branch-point optimization of Sect. 4.2 (default on). Off, singularities of index
+  /** Run the branch-point optimization of Sect. 4.2 (default off: merges buy few singularities
+   * with stretch; the field's own singularities give evener quads). Off, singularities of index
    * >= 3/4 are still split into quarter ones (no quad mesh has vertices of valence 1 or 0, and
    * the map cannot follow such a field); nothing is merged. */
   vtkSetMacro(OptimizeBranchPoints, bool);

@@ -52,6 +52,9 @@ constexpr const char* CurvatureRadius = "CurvatureRadius";
 // ---- vtkFrameSmoother (rewrites FrameU and FrameV, adds these) ----
 /// cell, 1 x double: the angle (radians) each frame was turned about its normal.
 constexpr const char* FrameRotation = "FrameRotation";
+/// cell, 1 x double: how far the input frames agree with those around them (CoherenceRadius),
+/// in [0, 1]; FrameWeight is multiplied by its 8th power.
+constexpr const char* FrameCoherence = "FrameCoherence";
 /// cell, 1 x unsigned char: 1 where the frame is held along a boundary or sharp edge.
 constexpr const char* FrameConstrained = "FrameConstrained";
 /// field, 1 x double, 2 tuples: the energy at the start of the descent (held frames already on

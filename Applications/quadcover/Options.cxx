@@ -318,6 +318,9 @@ std::vector<Option> StageOptions(Pipeline& p)
     QC_SWITCH2("smooth", smoother, solver, AlignToBoundary,
       "quads follow the boundary: frames held along it, boundary edges on grid lines"),
     QC_SWITCH("smooth", smoother, GlobalStart, "also start from the globally smoothest fields"),
+    QC_NUMBER("smooth", smoother, CoherenceRadius,
+      "align to curvature only where its directions are nearly parallel over this radius (a "
+      "fraction of the surface's size)"),
     QC_SWITCH("matching", matching, OptimizeBranchPoints,
       "merge pairs of singularities that cancel (Sect. 4.2)"),
     QC_NUMBER("matching", matching, BranchPointWeight,

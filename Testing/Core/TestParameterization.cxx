@@ -137,7 +137,9 @@ TEST(Parameterization, TorusCurvatureLinesGiveTheAnalyticIntegerGrid)
   // (the mean of 1/rho around a meridian is 1/sqrt(R^2 - r^2)), rounded to an integer.
   const double R = 1.0;
   const double r = 0.4;
-  const Chain c = runChain(makeTorus(R, r, 96, 48), 1500);
+  SmootherOptions alignedEverywhere; // the curvature lines, though they turn along the parallels
+  alignedEverywhere.coherenceRadius = 0.0;
+  const Chain c = runChain(makeTorus(R, r, 96, 48), 1500, {}, alignedEverywhere);
   EXPECT_EQ(c.map.branchPoints, 0);
   EXPECT_EQ(c.map.integerUnknowns, 4) << "the two periods of a torus, u and v each";
   expectIntegerGridMap(c, "torus");
@@ -437,8 +439,11 @@ TEST(Parameterization, BranchPointsOfOneTriangleNeverShareAGridPoint)
 {
   // Move one +1/4 branch point of the sphere next to another (changing the matchings along an
   // edge path), so that on a coarse grid both round to the same grid point; the rounding must
-  // put them on different grid points.
-  Chain c = runChain(testSurface("sphere"), 200);
+  // put them on different grid points. (The field as curvature alignment everywhere gives it:
+  // where its eight quarters lie, the two chosen meet on this grid.)
+  SmootherOptions aligned;
+  aligned.coherenceRadius = 0.0;
+  Chain c = runChain(testSurface("sphere"), 200, {}, aligned);
   Eigen::MatrixX3i& M = c.field.matching;
   std::vector<int> branch;
   for (int v = 0; v < c.s.V.rows(); ++v)
@@ -506,6 +511,7 @@ TEST(Parameterization, BranchPointsOfOneTriangleNeverShareAGridPoint)
   ASSERT_EQ(c.field.layerShift[a], 0);
   ASSERT_EQ(c.field.layerShift[path[0]], 1);
   ParameterizationOptions options;
+  options.conePairGain = 0.0; // the two where they were put
   options.targetEdgeLength =
     c.map.edgeLength * 2.0; // about 50 quads: one grid cell spans several edges
   // By default the two move apart before the map is solved (spreadCloseQuarters): the map's

@@ -102,14 +102,14 @@ TEST(vtkFrameSmoother, DefaultsClampsAndPrintSelf)
 TEST(vtkMatchingBuilder, DefaultsClampsAndPrintSelf)
 {
   vtkNew<vtkMatchingBuilder> m;
-  EXPECT_TRUE(m->GetOptimizeBranchPoints());
+  EXPECT_FALSE(m->GetOptimizeBranchPoints());
   EXPECT_EQ(m->GetBranchPointWeight(), 4.0);
   EXPECT_EQ(m->GetNumberOfOutputPorts(), 2);
   m->SetBranchPointWeight(-1.0);
   EXPECT_EQ(m->GetBranchPointWeight(), 0.0);
   std::ostringstream os;
   m->Print(os);
-  EXPECT_NE(os.str().find("OptimizeBranchPoints: On"), std::string::npos);
+  EXPECT_NE(os.str().find("OptimizeBranchPoints: Off"), std::string::npos);
 }
 
 TEST(vtkFrameStages, MissingFramesAndBadSurfacesAreErrors)
@@ -233,6 +233,7 @@ TEST(vtkMatchingBuilder, BoundaryToleranceReachesTheTwistCheck)
     {
       vtkNew<vtkMatchingBuilder> m;
       m->SetInputData(pd);
+      m->OptimizeBranchPointsOn();
       m->SetBranchPointWeight(100.0); // merge if at all possible
       m->SetBoundaryTolerance(run == 0 ? 10.0 : 0.0);
       vtkNew<vtkQuadCoverErrorObserver> errors;

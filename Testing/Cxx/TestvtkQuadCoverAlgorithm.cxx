@@ -64,6 +64,7 @@ struct Chain
     smoother->SetInputConnection(curvature->GetOutputPort());
     smoother->SetSmoothingWeight(0.5); // more iterations than the default
     matching->SetInputConnection(smoother->GetOutputPort());
+    matching->OptimizeBranchPointsOn(); // the merges: the matching stage's long work
     solver->SetInputConnection(matching->GetOutputPort());
     solver->SetTargetQuadCount(1500);
     extractor->SetInputConnection(solver->GetOutputPort());

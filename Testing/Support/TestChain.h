@@ -22,18 +22,18 @@ struct Chain
   Parameterization map;
 };
 
-/// Curvature frames, smoothing, matchings with branch-point optimization and the frames fitted
-/// to them (the filters' defaults, buildMatchings), then the map with edge length
-/// sqrt(area / quads) (or options.targetEdgeLength).
-inline Chain runChain(
-  Surface s, double quads, ParameterizationOptions options = ParameterizationOptions())
+/// Curvature frames, smoothing (`smoothing`), matchings (the filters' defaults, buildMatchings),
+/// then the map with edge length sqrt(area / quads) (or options.targetEdgeLength).
+inline Chain runChain(Surface s, double quads,
+  ParameterizationOptions options = ParameterizationOptions(),
+  const SmootherOptions& smoothing = SmootherOptions())
 {
   Chain r{ std::move(s), {}, {}, {}, {}, {} };
   r.topo = buildTopology(r.s.F, static_cast<int>(r.s.V.rows()));
   r.geometry = computeFrameGeometry(r.s.V, r.s.F, r.topo);
   const CurvatureField c = computeCurvatureField(r.s.V, r.s.F, r.topo);
   const SmootherResult smooth =
-    smoothFrames(r.s.V, r.s.F, r.topo, r.geometry, c.frameU, c.frameV, c.weight);
+    smoothFrames(r.s.V, r.s.F, r.topo, r.geometry, c.frameU, c.frameV, c.weight, smoothing);
   const MatchingResult m = buildMatchings(
     r.s.V, r.s.F, r.topo, r.geometry, smooth.frameU, smooth.frameV, c.weight, smooth.constrained);
   r.frameU = m.frameU;
