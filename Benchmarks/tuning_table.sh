@@ -3,7 +3,9 @@
 # (vtkFrameSmoother, --smoothing-weight) and branch-point weight (vtkMatchingBuilder,
 # --branch-point-weight):
 # irregular inner vertices, edge-length RSD / angle RSD, and (!) where the map kept a flipped
-# triangle or a fan wound the wrong way. The table that chose the defaults, kept in Documentation/Algorithms.md.
+# triangle or a fan wound the wrong way. The table that chose λ and the weight for the former
+# defaults (merges on, no cone pairs, alignment everywhere: the options it passes), kept in
+# Documentation/Algorithms.md.
 #   bash Benchmarks/tuning_table.sh [SHARED_DIR] [QUADS]      (after bash Scripts/build.sh)
 set -euo pipefail
 shared=${1:-../shared/data}
@@ -25,6 +27,7 @@ for mesh in $(surfaces "$shared"); do
   for p in "${pairs[@]}"; do
     set -- $p
     build/bin/quadcover "$shared/$mesh.obj" -o "$tmp/q.vtp" --target-quad-count "$quads" \
+      --optimize-branch-points --cone-pair-gain 0 --coherence-radius 0 \
       --smoothing-weight "$1" --branch-point-weight "$2" --no-compute-hausdorff-distance --stats "$tmp/s.json" 2>/dev/null
     row+=" $(/usr/bin/python3 - "$tmp/s.json" <<'PY'
 import json, sys

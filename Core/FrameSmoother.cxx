@@ -559,13 +559,13 @@ Eigen::VectorXd turnsToField(
   return global;
 }
 
-/// Runs 2 and 3: descents from the global starts (Knoeppel et al. 2013); the first with the
-/// lowest end goes into alpha and R. Returns false when there is none.
 /// How far each input frame agrees with those around it, in [0, 1]: |c_f| with c the input's
 /// four-fold field q = e^{4 i phi} diffused over about `radius` (one implicit step of the
-/// connection Laplacian of the links: (M + t L) c = M q, t = 2 radius^2 / l^2 for the typical
-/// edge length l of the links' weights). Incoherent directions (noise, umbilics, directions that
-/// turn within the radius) average out towards 0.
+/// connection Laplacian of the links: (M + t L) c = M q, t = 2 radius^2 / l^2 for the mean
+/// edge length l). The links' weights are areas, so the step reaches about radius / l triangles
+/// whatever their local size: a radius in mean edge lengths, not in distance, on a mesh whose
+/// triangles vary in size. Incoherent directions (noise, umbilics, directions that turn within
+/// the radius) average out towards 0. A system that cannot be factored (never seen) leaves 1.
 Eigen::VectorXd frameCoherence(const Smoothing& s, double radius)
 {
   const Problem& P = s.P;
@@ -625,6 +625,8 @@ Eigen::VectorXd weighByCoherence(Smoothing& s, double radius)
   return coherence;
 }
 
+/// Runs 2 and 3: descents from the global starts (Knoeppel et al. 2013); the first with the
+/// lowest end goes into alpha and R. Returns false when there is none.
 bool descendFromGlobalStarts(const Smoothing& s, Descent& descent, const Eigen::VectorXd& start,
   Eigen::VectorXd& alpha, SmootherResult& R, const Progress& progress)
 {
@@ -661,7 +663,8 @@ SmootherResult smoothFrames(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F
   Smoothing s;
   s.phi = vectorAngles(geometry.bases, frameU);
   setUpProblem(V, F, topo, geometry, weight, options, s, R);
-  R.coherence = weighByCoherence(s, options.coherenceRadius);
+  // at lambda 1 the alignment term is gone: nothing to weigh, no factorization
+  R.coherence = weighByCoherence(s, s.P.lambda < 1.0 ? options.coherenceRadius : 0.0);
   numberUnknowns(s, R);
   progress.report(0.01);
   Descent descent(s, options, progress.part(0.01, 0.05));

@@ -42,7 +42,8 @@ struct SmootherOptions
   /// the four-fold field of the input frames diffused over the radius with the surface's
   /// transport (1 where they are parallel, as on a cylinder; towards 0 where they scatter, as on
   /// a noisy scan or over bumps smaller than the radius; about 0.5-0.65 where they turn, as on a
-  /// torus). Elsewhere the field is the smoothest one. 0: the weights as given.
+  /// torus). Elsewhere the field is the smoothest one. 0 (or smoothingWeight 1): the weights as
+  /// given.
   double coherenceRadius = 0.1;
 };
 
@@ -73,7 +74,8 @@ struct SmootherResult
  *   E = lambda * sum_{inner edges ij} (A_i + A_j)/3 (1 - cos 4(theta_ij + alpha_i - alpha_j))
  *     + (1 - lambda) * sum_i A_i w_i alpha_i^2
  * where theta_ij is the angle between the frames after transporting one into the other's plane
- * and w is the curvature weight (FrameWeight). Each iteration minimizes a quadratic upper bound
+ * and w is the curvature weight (FrameWeight, times the coherence to the 8th power with
+ * options.coherenceRadius). Each iteration minimizes a quadratic upper bound
  * of E (1 - cos is bounded by its second-order expansion with curvature 1), so E never
  * increases; the bound's matrix does not change, so it is factored once.
  * Frames held along features and boundaries: the triangle's longest such edge wins (at corners,

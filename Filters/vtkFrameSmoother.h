@@ -8,8 +8,9 @@
  *   E = lambda * sum_{edges ij} (A_i + A_j)/3 (1 - cos 4(theta_ij + alpha_i - alpha_j))
  *     + (1 - lambda) * sum_i A_i w_i alpha_i^2,
  * theta_ij being the angle between neighbouring frames after transport across their edge and
- * w = FrameWeight; lambda = SmoothingWeight. So frames spread from where curvature is
- * pronounced into umbilic and flat regions, with as few singularities as the surface allows.
+ * w = FrameWeight x FrameCoherence^8 (CoherenceRadius); lambda = SmoothingWeight. So frames spread
+ * from where curvature is pronounced into umbilic and flat regions, with as few singularities as
+ * the surface allows.
  *
  * The minimization starts from the input and from the globally optimal four-fold fields
  * (Knoeppel et al. 2013: the smoothest field blended with the alignment term, and the smoothest
@@ -100,8 +101,9 @@ public:
    * The curvature directions count where they are nearly parallel over this radius, a fraction
    * of the square root of the surface's area (default 0.1; 0: everywhere): each triangle's
    * FrameWeight is multiplied by its FrameCoherence to the 8th power, so the field follows
-   * curvature where that costs little smoothness (cylinders, bodies of revolution) and is the
-   * smoothest field where the directions scatter or turn (scan noise, bumps, a torus' inside).
+   * curvature where that costs little smoothness (a cylinder: coherence 1) and is the smoothest
+   * field where the directions scatter or turn (scan noise, bumps, a torus: 0.5-0.65). Not
+   * computed at SmoothingWeight 1 (FrameCoherence 1 there).
    */
   vtkSetClampMacro(CoherenceRadius, double, 0.0, 10.0);
   vtkGetMacro(CoherenceRadius, double);

@@ -139,7 +139,9 @@ TEST(Parameterization, TorusCurvatureLinesGiveTheAnalyticIntegerGrid)
   const double r = 0.4;
   SmootherOptions alignedEverywhere; // the curvature lines, though they turn along the parallels
   alignedEverywhere.coherenceRadius = 0.0;
-  const Chain c = runChain(makeTorus(R, r, 96, 48), 1500, {}, alignedEverywhere);
+  ParameterizationOptions noPairs; // and no cone pairs: the field as it is
+  noPairs.conePairGain = 0.0;
+  const Chain c = runChain(makeTorus(R, r, 96, 48), 1500, noPairs, alignedEverywhere);
   EXPECT_EQ(c.map.branchPoints, 0);
   EXPECT_EQ(c.map.integerUnknowns, 4) << "the two periods of a torus, u and v each";
   expectIntegerGridMap(c, "torus");

@@ -87,13 +87,19 @@ TEST(vtkFrameSmoother, DefaultsClampsAndPrintSelf)
   EXPECT_TRUE(f->GetAlignToFeatures());
   EXPECT_TRUE(f->GetAlignToBoundary());
   EXPECT_TRUE(f->GetGlobalStart());
+  EXPECT_EQ(f->GetCoherenceRadius(), 0.1);
+  f->SetCoherenceRadius(-1.0);
+  EXPECT_EQ(f->GetCoherenceRadius(), 0.0);
+  f->SetCoherenceRadius(20.0);
+  EXPECT_EQ(f->GetCoherenceRadius(), 10.0);
   f->SetSmoothingWeight(2.0);
   EXPECT_EQ(f->GetSmoothingWeight(), 1.0);
   f->SetFeatureAngle(-5.0);
   EXPECT_EQ(f->GetFeatureAngle(), 0.0);
   std::ostringstream os;
   f->Print(os);
-  for (const char* p : { "SmoothingWeight: 1", "FeatureAngle: 0", "AlignToBoundary: On" })
+  for (const char* p :
+    { "SmoothingWeight: 1", "FeatureAngle: 0", "AlignToBoundary: On", "CoherenceRadius: 10" })
   {
     EXPECT_NE(os.str().find(p), std::string::npos) << p;
   }
@@ -155,6 +161,14 @@ TEST(vtkFrameStages, ArraysOfTheChain)
     vtkDoubleArray::SafeDownCast(smoothed->GetCellData()->GetArray(names::FrameRotation)));
   EXPECT_TRUE(
     vtkUnsignedCharArray::SafeDownCast(smoothed->GetCellData()->GetArray(names::FrameConstrained)));
+  vtkDoubleArray* coherence =
+    vtkDoubleArray::SafeDownCast(smoothed->GetCellData()->GetArray(names::FrameCoherence));
+  ASSERT_NE(coherence, nullptr);
+  EXPECT_EQ(coherence->GetNumberOfTuples(), smoothed->GetNumberOfCells());
+  double range[2];
+  coherence->GetRange(range);
+  EXPECT_GE(range[0], 0.0);
+  EXPECT_LE(range[1], 1.0);
   EXPECT_EQ(smoothed->GetFieldData()->GetArray(names::SmoothingEnergy)->GetNumberOfTuples(), 2);
   EXPECT_LT(Field(smoothed, names::SmoothingEnergy, 1), Field(smoothed, names::SmoothingEnergy, 0));
   // The curvature stage's arrays pass through untouched except the frames.
@@ -317,7 +331,8 @@ TEST_P(ChainOn, IndicesSumToTheEulerCharacteristic)
   EXPECT_LE(singularAfter, singularBefore + splitMore);
   if (shared)
   {
-    // Every shared mesh has pairs to cancel (README: bunny-lowres 62 -> 24, ...).
+    // Every shared mesh has pairs to cancel (Documentation/Algorithms.md, the singularity table:
+    // bunny-lowres 44 -> 24 with the merges).
     EXPECT_LT(singularAfter, singularBefore + splitMore);
   }
   if (splitMore == 0)

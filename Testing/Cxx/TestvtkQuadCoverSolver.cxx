@@ -319,8 +319,10 @@ TEST_P(ParameterizeOn, SeamlessGridMapWithBranchPointsOnTheGridAndNoFlips)
     rounded, continuous > 0 ? 100 * (rounded / continuous - 1) : 0.0, final,
     Field(out, names::FlippedTriangles, 0), Field(out, names::FlippedTriangles, 1),
     Field(out, names::FlippedTriangles, 2));
-  // Rounding costs little: 15%, and each branch point put on a grid point about a quarter cell
-  // squared over its cell's share of the energy (1/3000 of it), 1e-4 (spot's 64: +42%).
+  // Rounding costs little: 15% of the energy, plus 1e-4 (absolute: the energy is normalized so
+  // that the whole map counts 1 per unit of squared gradient error) for each branch point put
+  // on a grid point, about a quarter cell squared over one of the 3,000 cells (spot's 64:
+  // +42%).
   EXPECT_LT(rounded, 1.15 * continuous + 1e-4 * Field(out, names::BranchPointsOnGrid) + 1e-3)
     << "rounding costs little";
 }
