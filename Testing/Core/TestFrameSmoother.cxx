@@ -132,13 +132,9 @@ TEST(FrameSmoother, CoherenceIsOneOnParallelDirectionsAndFallsWhereTheyScatterOr
   const auto meanCoherence = [](const Case& c, const Eigen::MatrixX3d& U, double radius) {
     SmootherOptions opt;
     opt.coherenceRadius = radius;
-    Eigen::MatrixX3d V(U.rows(), 3);
-    for (Eigen::Index f = 0; f < U.rows(); ++f)
-    {
-      V.row(f) = c.geometry.bases.normal.row(f).cross(U.row(f));
-    }
+    const auto [u, v] = tangentFrames(c.geometry.bases, U, Eigen::MatrixX3d());
     const SmootherResult r =
-      smoothFrames(c.s.V, c.s.F, c.topo, c.geometry, U, V, c.curvature.weight, opt);
+      smoothFrames(c.s.V, c.s.F, c.topo, c.geometry, u, v, c.curvature.weight, opt);
     EXPECT_EQ(r.coherence.size(), c.s.F.rows());
     EXPECT_GE(r.coherence.minCoeff(), 0.0);
     EXPECT_LE(r.coherence.maxCoeff(), 1.0);

@@ -272,10 +272,8 @@ TEST_P(ParameterizeOn, SeamlessGridMapWithBranchPointsOnTheGridAndNoFlips)
   }
   EXPECT_EQ(branchPoints, Field(out, names::BranchPointsOnGrid, 0));
   // No flipped triangle and every point keeps its index, except 2 triangles and 8 points of
-  // cheburashka where an ear, a thin disk with a sharp rim, meets the head: at 3,000 quads the
-  // ear is thinner than a grid cell and the map folds there (known: the quality issue's adaptive
-  // density is the fix; at 6,500 quads none).
-  const int knownWindingErrors = std::string(GetParam()) == "cheburashka" ? 8 : 0;
+  // cheburashka where the map folds at an ear (KnownWindingErrors; at 6,500 quads none).
+  const int knownWindingErrors = KnownWindingErrors(GetParam(), 3000);
   const int knownFlips = std::string(GetParam()) == "cheburashka" ? 2 : 0;
   EXPECT_EQ(checks::flippedTriangles(uv), knownFlips);
   EXPECT_EQ(checks::windingErrors(F, topo, index, uv), knownWindingErrors);
