@@ -5,7 +5,10 @@ set -euo pipefail
 
 packages=(
   cmake g++ make pkg-config
-  libvtk9-dev python3-vtk9 python3-dev python3-numpy   # VTK 9.1 with its Python wrapping
+  # ParaView 5.11 and its own VTK 9.2, which builds everything (C++, Python, the plugin);
+  # python3-paraview replaces python3-vtk9 and libvtk9-dev (apt removes them: they conflict)
+  paraview paraview-dev python3-paraview python3-dev python3-numpy
+  openmpi-bin                                          # mpiexec, for pvbatch on several ranks
   libeigen3-dev                                        # Eigen 3.4
   libsuitesparse-dev                                   # CHOLMOD for the sparse solves
   libopenblas0-pthread                                 # its BLAS: 3x faster factorizations

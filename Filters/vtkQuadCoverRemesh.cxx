@@ -1,0 +1,187 @@
+#include "vtkQuadCoverRemesh.h"
+
+#include "vtkCurvatureFrames.h"
+#include "vtkFrameSmoother.h"
+#include "vtkMatchingBuilder.h"
+#include "vtkQuadCoverErrorObserver.h"
+#include "vtkQuadCoverSolver.h"
+#include "vtkQuadCoverSurfaceRepair.h"
+#include "vtkQuadExtractor.h"
+
+#include "vtkCallbackCommand.h"
+#include "vtkInformation.h"
+#include "vtkInformationVector.h"
+#include "vtkObjectFactory.h"
+#include "vtkPolyData.h"
+
+#include <algorithm>
+
+vtkStandardNewMacro(vtkQuadCoverRemesh);
+
+//------------------------------------------------------------------------------
+vtkQuadCoverRemesh::vtkQuadCoverRemesh()
+{
+  this->Repair->SetInputData(this->Surface);
+  this->Curvature->SetInputConnection(this->Repair->GetOutputPort());
+  this->Smoother->SetInputConnection(this->Curvature->GetOutputPort());
+  this->Matching->SetInputConnection(this->Smoother->GetOutputPort());
+  this->Solver->SetInputConnection(this->Matching->GetOutputPort());
+  this->Extractor->SetInputConnection(this->Solver->GetOutputPort());
+  vtkNew<vtkCallbackCommand> progress;
+  progress->SetCallback(&vtkQuadCoverRemesh::OnProgress);
+  progress->SetClientData(this);
+  for (int i = 0; i < StageCount; ++i)
+  {
+    this->Errors->Attach(this->Stage(i));
+    this->Stage(i)->AddObserver(vtkCommand::ProgressEvent, progress);
+  }
+}
+
+//------------------------------------------------------------------------------
+vtkAlgorithm* vtkQuadCoverRemesh::Stage(int i) const
+{
+  vtkAlgorithm* const stages[StageCount] = { this->Repair, this->Curvature, this->Smoother,
+    this->Matching, this->Solver, this->Extractor };
+  return stages[i];
+}
+
+//------------------------------------------------------------------------------
+vtkQuadCoverRemesh::~vtkQuadCoverRemesh() = default;
+
+//------------------------------------------------------------------------------
+void vtkQuadCoverRemesh::SetTargetQuadCount(int count)
+{
+  this->Solver->SetTargetQuadCount(count);
+}
+int vtkQuadCoverRemesh::GetTargetQuadCount()
+{
+  return this->Solver->GetTargetQuadCount();
+}
+void vtkQuadCoverRemesh::SetTargetEdgeLength(double length)
+{
+  this->Solver->SetTargetEdgeLength(length);
+}
+double vtkQuadCoverRemesh::GetTargetEdgeLength()
+{
+  return this->Solver->GetTargetEdgeLength();
+}
+void vtkQuadCoverRemesh::SetFeatureLines(bool on)
+{
+  this->Solver->SetFeatureLines(on);
+}
+bool vtkQuadCoverRemesh::GetFeatureLines()
+{
+  return this->Solver->GetFeatureLines();
+}
+void vtkQuadCoverRemesh::SetFeatureAngle(double degrees)
+{
+  this->Smoother->SetFeatureAngle(degrees);
+  this->Solver->SetFeatureAngle(degrees);
+}
+double vtkQuadCoverRemesh::GetFeatureAngle()
+{
+  return this->Smoother->GetFeatureAngle();
+}
+void vtkQuadCoverRemesh::SetNumberOfThreads(int count)
+{
+  this->Curvature->SetNumberOfThreads(count);
+  this->Solver->SetNumberOfThreads(count);
+}
+int vtkQuadCoverRemesh::GetNumberOfThreads()
+{
+  return this->Curvature->GetNumberOfThreads();
+}
+
+//------------------------------------------------------------------------------
+vtkQuadCoverSurfaceRepair* vtkQuadCoverRemesh::GetSurfaceRepair()
+{
+  return this->Repair;
+}
+vtkCurvatureFrames* vtkQuadCoverRemesh::GetCurvatureFrames()
+{
+  return this->Curvature;
+}
+vtkFrameSmoother* vtkQuadCoverRemesh::GetFrameSmoother()
+{
+  return this->Smoother;
+}
+vtkMatchingBuilder* vtkQuadCoverRemesh::GetMatchingBuilder()
+{
+  return this->Matching;
+}
+vtkQuadCoverSolver* vtkQuadCoverRemesh::GetSolver()
+{
+  return this->Solver;
+}
+vtkQuadExtractor* vtkQuadCoverRemesh::GetQuadExtractor()
+{
+  return this->Extractor;
+}
+
+//------------------------------------------------------------------------------
+vtkMTimeType vtkQuadCoverRemesh::GetMTime()
+{
+  vtkMTimeType latest = this->Superclass::GetMTime();
+  for (int i = 0; i < StageCount; ++i)
+  {
+    latest = std::max(latest, this->Stage(i)->GetMTime());
+  }
+  return latest;
+}
+
+//------------------------------------------------------------------------------
+void vtkQuadCoverRemesh::OnProgress(
+  vtkObject* caller, unsigned long, void* clientData, void* callData)
+{
+  auto* self = static_cast<vtkQuadCoverRemesh*>(clientData);
+  int stage = 0;
+  while (stage + 1 < StageCount && self->Stage(stage) != caller)
+  {
+    ++stage;
+  }
+  self->StageProgress(stage, *static_cast<double*>(callData));
+}
+
+void vtkQuadCoverRemesh::StageProgress(int stage, double progress)
+{
+  this->UpdateProgress((stage + std::min(std::max(progress, 0.0), 1.0)) / StageCount);
+  if (this->GetAbortExecute())
+  {
+    this->Stage(stage)->SetAbortExecute(1);
+  }
+}
+
+//------------------------------------------------------------------------------
+int vtkQuadCoverRemesh::RequestData(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  vtkPolyData* input = vtkPolyData::GetData(inputVector[0]);
+  vtkPolyData* output = vtkPolyData::GetData(outputVector);
+  // The stages' input stays connected (connecting it would make this filter look modified); a
+  // new input reaches them as a change of its data, a changed property re-runs its stage onward.
+  this->Surface->ShallowCopy(input);
+  this->Errors->Clear();
+  this->Extractor->Update();
+  for (int w = 0; w < this->Errors->GetNumberOfWarnings(); ++w)
+  {
+    vtkWarningMacro(<< this->Errors->GetWarning(w));
+  }
+  if (!this->Errors->GetError().empty())
+  {
+    vtkErrorMacro(<< this->Errors->GetError());
+    return 0;
+  }
+  output->ShallowCopy(this->Extractor->GetOutput());
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+void vtkQuadCoverRemesh::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "TargetQuadCount: " << this->GetTargetQuadCount() << "\n";
+  os << indent << "TargetEdgeLength: " << this->GetTargetEdgeLength() << "\n";
+  os << indent << "FeatureLines: " << (this->GetFeatureLines() ? "On" : "Off") << "\n";
+  os << indent << "FeatureAngle: " << this->GetFeatureAngle() << "\n";
+  os << indent << "NumberOfThreads: " << this->GetNumberOfThreads() << "\n";
+}

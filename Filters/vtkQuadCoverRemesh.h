@@ -1,0 +1,115 @@
+/**
+ * @class   vtkQuadCoverRemesh
+ * @brief   the whole QuadCover chain in one filter: a surface in, a quad mesh out
+ *
+ * Runs vtkQuadCoverSurfaceRepair, vtkCurvatureFrames, vtkFrameSmoother, vtkMatchingBuilder,
+ * vtkQuadCoverSolver and vtkQuadExtractor on its input, as the `quadcover` command line does, and
+ * gives vtkQuadExtractor's output: the quad mesh with its point, cell and field data.
+ *
+ * The properties are the command line's main options and set the stages that use them:
+ * TargetQuadCount or TargetEdgeLength (the solver), FeatureLines (the solver), FeatureAngle (the
+ * smoother and the solver), NumberOfThreads (the curvature estimate and the solver). Every other
+ * option is reached through the stage itself, e.g. GetFrameSmoother()->SetSmoothingWeight(1);
+ * a change there re-runs the chain (GetMTime includes the stages').
+ *
+ * Errors: the first stage's error, as that stage words it ("Cannot smooth frames: ..."), through
+ * vtkErrorMacro; RequestData then returns 0. The stages' warnings become this filter's.
+ * Progress runs over the six stages; AbortExecute stops the running stage.
+ * @sa vtkQuadCoverSurfaceRepair vtkQuadExtractor
+ */
+#ifndef vtkQuadCoverRemesh_h
+#define vtkQuadCoverRemesh_h
+
+#include "vtkNew.h" // for vtkNew
+#include "vtkPolyDataAlgorithm.h"
+#include "vtkQuadCoverFiltersModule.h" // for export macro
+
+class vtkAlgorithm;
+class vtkCurvatureFrames;
+class vtkFrameSmoother;
+class vtkMatchingBuilder;
+class vtkPolyData;
+class vtkQuadCoverErrorObserver;
+class vtkQuadCoverSolver;
+class vtkQuadCoverSurfaceRepair;
+class vtkQuadExtractor;
+
+class VTKQUADCOVERFILTERS_EXPORT vtkQuadCoverRemesh : public vtkPolyDataAlgorithm
+{
+public:
+  static vtkQuadCoverRemesh* New();
+  vtkTypeMacro(vtkQuadCoverRemesh, vtkPolyDataAlgorithm);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  ///@{
+  /** About this many quads (vtkQuadCoverSolver's TargetQuadCount, default 3000). */
+  void SetTargetQuadCount(int count);
+  int GetTargetQuadCount();
+  ///@}
+
+  ///@{
+  /** Quad edge length in world units; 0 for TargetQuadCount (the solver's, default 0). */
+  void SetTargetEdgeLength(double length);
+  double GetTargetEdgeLength();
+  ///@}
+
+  ///@{
+  /** Quad edges along the sharp creases (vtkQuadCoverSolver's FeatureLines, default off). */
+  void SetFeatureLines(bool on);
+  bool GetFeatureLines();
+  vtkBooleanMacro(FeatureLines, bool);
+  ///@}
+
+  ///@{
+  /** Edges sharper than this (degrees) are features: the smoother's and solver's (default 60). */
+  void SetFeatureAngle(double degrees);
+  double GetFeatureAngle();
+  ///@}
+
+  ///@{
+  /** Worker threads of the curvature estimate and the solver, 0 for all cores (default 0). */
+  void SetNumberOfThreads(int count);
+  int GetNumberOfThreads();
+  ///@}
+
+  ///@{
+  /** The stages, for their other properties. */
+  vtkQuadCoverSurfaceRepair* GetSurfaceRepair();
+  vtkCurvatureFrames* GetCurvatureFrames();
+  vtkFrameSmoother* GetFrameSmoother();
+  vtkMatchingBuilder* GetMatchingBuilder();
+  vtkQuadCoverSolver* GetSolver();
+  vtkQuadExtractor* GetQuadExtractor();
+  ///@}
+
+  /// The latest of this filter's and its stages' modification times.
+  vtkMTimeType GetMTime() override;
+
+protected:
+  vtkQuadCoverRemesh();
+  ~vtkQuadCoverRemesh() override;
+
+  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+
+private:
+  vtkQuadCoverRemesh(const vtkQuadCoverRemesh&) = delete;
+  void operator=(const vtkQuadCoverRemesh&) = delete;
+
+  static constexpr int StageCount = 6;
+  /// Stage i (0: the repair ... 5: the extractor).
+  vtkAlgorithm* Stage(int i) const;
+  /// Stage `stage` (0..5) reported `progress`: this filter's progress, and its abort passed on.
+  void StageProgress(int stage, double progress);
+  static void OnProgress(vtkObject* caller, unsigned long, void* clientData, void* callData);
+
+  vtkNew<vtkPolyData> Surface;
+  vtkNew<vtkQuadCoverSurfaceRepair> Repair;
+  vtkNew<vtkCurvatureFrames> Curvature;
+  vtkNew<vtkFrameSmoother> Smoother;
+  vtkNew<vtkMatchingBuilder> Matching;
+  vtkNew<vtkQuadCoverSolver> Solver;
+  vtkNew<vtkQuadExtractor> Extractor;
+  vtkNew<vtkQuadCoverErrorObserver> Errors;
+};
+
+#endif

@@ -1,0 +1,194 @@
+// vtkQuadCoverRemesh: the six stages in one filter give what the six filters chained give; its
+// properties reach the stages; errors, warnings, progress and re-execution behave as a filter's.
+#include "vtkCommand.h"
+#include "vtkCurvatureFrames.h"
+#include "vtkFieldData.h"
+#include "vtkFrameSmoother.h"
+#include "vtkMatchingBuilder.h"
+#include "vtkNew.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkQuadCoverEigen.h"
+#include "vtkQuadCoverErrorObserver.h"
+#include "vtkQuadCoverRemesh.h"
+#include "vtkQuadCoverSolver.h"
+#include "vtkQuadCoverSurfaceRepair.h"
+#include "vtkQuadExtractor.h"
+
+#include "Surfaces.h"
+
+#include <gtest/gtest.h>
+
+#include <sstream>
+#include <vector>
+
+namespace
+{
+vtkSmartPointer<vtkPolyData> Dumbbell()
+{
+  const quadcover::Surface s = quadcover::makeDumbbell(2.0, 0.6, 0.25, 48, 96);
+  return vtkQuadCoverEigen::ToPolyData(s.V, s.F);
+}
+
+class ProgressLog : public vtkCommand
+{
+public:
+  static ProgressLog* New() { return new ProgressLog; }
+  void Execute(vtkObject*, unsigned long, void* callData) override
+  {
+    this->Values.push_back(*static_cast<double*>(callData));
+  }
+  std::vector<double> Values;
+};
+}
+
+TEST(vtkQuadCoverRemesh, GivesTheChainsQuads)
+{
+  vtkSmartPointer<vtkPolyData> surface = Dumbbell();
+  vtkNew<vtkQuadCoverSurfaceRepair> repair;
+  vtkNew<vtkCurvatureFrames> curvature;
+  vtkNew<vtkFrameSmoother> smoother;
+  vtkNew<vtkMatchingBuilder> matching;
+  vtkNew<vtkQuadCoverSolver> solver;
+  vtkNew<vtkQuadExtractor> extractor;
+  repair->SetInputData(surface);
+  curvature->SetInputConnection(repair->GetOutputPort());
+  smoother->SetInputConnection(curvature->GetOutputPort());
+  matching->SetInputConnection(smoother->GetOutputPort());
+  solver->SetInputConnection(matching->GetOutputPort());
+  solver->SetTargetQuadCount(800);
+  extractor->SetInputConnection(solver->GetOutputPort());
+  ASSERT_EQ(vtkQuadCoverErrorObserver::Run(extractor), "");
+
+  vtkNew<vtkQuadCoverRemesh> remesh;
+  remesh->SetInputData(surface);
+  remesh->SetTargetQuadCount(800);
+  ASSERT_EQ(vtkQuadCoverErrorObserver::Run(remesh), "");
+  vtkPolyData* chain = extractor->GetOutput();
+  vtkPolyData* one = remesh->GetOutput();
+  ASSERT_GT(one->GetNumberOfPolys(), 400);
+  ASSERT_EQ(one->GetNumberOfPolys(), chain->GetNumberOfPolys());
+  ASSERT_EQ(one->GetNumberOfPoints(), chain->GetNumberOfPoints());
+  for (vtkIdType p = 0; p < one->GetNumberOfPoints(); ++p)
+  {
+    double a[3], b[3];
+    one->GetPoint(p, a);
+    chain->GetPoint(p, b);
+    ASSERT_EQ(a[0], b[0]);
+    ASSERT_EQ(a[1], b[1]);
+    ASSERT_EQ(a[2], b[2]);
+  }
+  // the quad mesh's arrays come along
+  EXPECT_NE(one->GetPointData()->GetArray("Valence"), nullptr);
+  EXPECT_NE(one->GetFieldData()->GetArray("EulerCharacteristic"), nullptr);
+}
+
+TEST(vtkQuadCoverRemesh, PropertiesSetTheStagesThatUseThem)
+{
+  vtkNew<vtkQuadCoverRemesh> remesh;
+  const vtkNew<vtkQuadCoverSolver> solver;
+  const vtkNew<vtkFrameSmoother> smoother;
+  const vtkNew<vtkCurvatureFrames> curvature;
+  // defaults are the stages'
+  EXPECT_EQ(remesh->GetTargetQuadCount(), solver->GetTargetQuadCount());
+  EXPECT_EQ(remesh->GetTargetEdgeLength(), solver->GetTargetEdgeLength());
+  EXPECT_EQ(remesh->GetFeatureLines(), solver->GetFeatureLines());
+  EXPECT_EQ(remesh->GetFeatureAngle(), smoother->GetFeatureAngle());
+  EXPECT_EQ(remesh->GetNumberOfThreads(), curvature->GetNumberOfThreads());
+
+  remesh->SetTargetQuadCount(1234);
+  remesh->SetTargetEdgeLength(0.5);
+  remesh->FeatureLinesOn();
+  remesh->SetFeatureAngle(40.0);
+  remesh->SetNumberOfThreads(1);
+  EXPECT_EQ(remesh->GetSolver()->GetTargetQuadCount(), 1234);
+  EXPECT_EQ(remesh->GetSolver()->GetTargetEdgeLength(), 0.5);
+  EXPECT_TRUE(remesh->GetSolver()->GetFeatureLines());
+  EXPECT_EQ(remesh->GetFrameSmoother()->GetFeatureAngle(), 40.0);
+  EXPECT_EQ(remesh->GetSolver()->GetFeatureAngle(), 40.0);
+  EXPECT_EQ(remesh->GetCurvatureFrames()->GetNumberOfThreads(), 1);
+  EXPECT_EQ(remesh->GetSolver()->GetNumberOfThreads(), 1);
+  // the stages' own clamps hold
+  remesh->SetTargetQuadCount(0);
+  EXPECT_EQ(remesh->GetTargetQuadCount(), 1);
+  remesh->SetFeatureAngle(500.0);
+  EXPECT_EQ(remesh->GetFeatureAngle(), 180.0);
+
+  std::ostringstream printed;
+  remesh->Print(printed);
+  for (const char* name : { "TargetQuadCount: 1", "TargetEdgeLength: 0.5", "FeatureLines: On",
+         "FeatureAngle: 180", "NumberOfThreads: 1" })
+  {
+    EXPECT_NE(printed.str().find(name), std::string::npos) << name;
+  }
+}
+
+TEST(vtkQuadCoverRemesh, RunsAgainOnlyWhenItOrAStageChanged)
+{
+  vtkNew<vtkQuadCoverRemesh> remesh;
+  remesh->SetInputData(Dumbbell());
+  remesh->SetTargetQuadCount(300);
+  ASSERT_EQ(vtkQuadCoverErrorObserver::Run(remesh), "");
+  const vtkMTimeType first = remesh->GetOutput()->GetMTime();
+  remesh->Update();
+  EXPECT_EQ(remesh->GetOutput()->GetMTime(), first) << "ran again with nothing changed";
+  const vtkIdType quads = remesh->GetOutput()->GetNumberOfPolys();
+
+  // a stage's own property: the chain runs again from there
+  remesh->GetSolver()->SetTargetQuadCount(1200);
+  remesh->Update();
+  EXPECT_GT(remesh->GetOutput()->GetMTime(), first);
+  EXPECT_GT(remesh->GetOutput()->GetNumberOfPolys(), 2 * quads);
+}
+
+TEST(vtkQuadCoverRemesh, StagesErrorsAndWarningsAreItsOwn)
+{
+  // an input with no polygons: the repair's error, as the repair words it, once
+  vtkNew<vtkPolyData> points;
+  vtkNew<vtkPoints> p;
+  p->InsertNextPoint(0, 0, 0);
+  points->SetPoints(p);
+  vtkNew<vtkQuadCoverRemesh> remesh;
+  remesh->SetInputData(points);
+  vtkNew<vtkQuadCoverErrorObserver> errors;
+  errors->Attach(remesh);
+  remesh->Update();
+  EXPECT_EQ(errors->GetError().rfind("Cannot repair the surface: ", 0), 0u) << errors->GetError();
+  EXPECT_EQ(remesh->GetOutput()->GetNumberOfCells(), 0);
+
+  // then a good input runs, with no error left over from the bad one
+  errors->Clear();
+  remesh->SetInputData(Dumbbell());
+  remesh->SetTargetQuadCount(300);
+  remesh->Update();
+  EXPECT_EQ(errors->GetError(), "");
+  EXPECT_GT(remesh->GetOutput()->GetNumberOfPolys(), 100);
+}
+
+TEST(vtkQuadCoverRemesh, ProgressRunsOverTheSixStagesToOne)
+{
+  vtkNew<vtkQuadCoverRemesh> remesh;
+  remesh->SetInputData(Dumbbell());
+  remesh->SetTargetQuadCount(300);
+  vtkNew<ProgressLog> log;
+  remesh->AddObserver(vtkCommand::ProgressEvent, log);
+  ASSERT_EQ(vtkQuadCoverErrorObserver::Run(remesh), "");
+  ASSERT_GT(log->Values.size(), 12u);
+  for (std::size_t i = 1; i < log->Values.size(); ++i)
+  {
+    // each stage starts at its sixth (the executive reports 0 when a stage starts)
+    EXPECT_GE(log->Values[i], log->Values[i - 1] - 1e-12) << "at report " << i;
+  }
+  EXPECT_EQ(log->Values.back(), 1.0);
+  // every sixth was passed
+  for (int stage = 1; stage < 6; ++stage)
+  {
+    bool seen = false;
+    for (double v : log->Values)
+    {
+      seen = seen || (v >= stage / 6.0 - 1e-12 && v < (stage + 1) / 6.0);
+    }
+    EXPECT_TRUE(seen) << "no progress in stage " << stage;
+  }
+}
