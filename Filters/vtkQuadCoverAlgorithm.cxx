@@ -2,6 +2,7 @@
 
 #include "vtkQuadCoverEigen.h"
 #include "vtkQuadCoverInput.h"
+#include "vtkQuadCoverPieces.h"
 
 #include "vtkDataArray.h"
 #include "vtkDataObject.h"
@@ -88,6 +89,11 @@ int vtkQuadCoverAlgorithm::RequestData(
       vtkPolyData::GetData(outputVector, i)->Initialize();
     }
   };
+  if (this->EmptyPiece)
+  {
+    clearOutputs(); // the rank of piece 0 computes the whole surface
+    return 1;
+  }
   try
   {
     std::string warning;
@@ -112,6 +118,15 @@ int vtkQuadCoverAlgorithm::RequestData(
   }
   this->UpdateProgress(1.0);
   return 1;
+}
+
+//------------------------------------------------------------------------------
+int vtkQuadCoverAlgorithm::RequestUpdateExtent(
+  vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  const int done = this->Superclass::RequestUpdateExtent(request, inputVector, outputVector);
+  this->EmptyPiece = vtkQuadCoverPieces::RequestWholeSurface(inputVector, outputVector);
+  return done;
 }
 
 //------------------------------------------------------------------------------

@@ -70,6 +70,9 @@ protected:
   void Warn(const std::string& text);
 
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+  /// The whole surface on every rank of a distributed pipeline, remeshed on the rank of piece 0
+  /// (vtkQuadCoverPieces.h).
+  int RequestUpdateExtent(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
 private:
   vtkQuadCoverAlgorithm(const vtkQuadCoverAlgorithm&) = delete;
@@ -77,6 +80,8 @@ private:
 
   InputRequirement Requirement;
   const char* Action;
+  /// This rank's piece is not piece 0 of a whole surface: its outputs stay empty.
+  bool EmptyPiece = false;
 };
 
 #endif

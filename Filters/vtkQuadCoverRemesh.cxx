@@ -4,6 +4,7 @@
 #include "vtkFrameSmoother.h"
 #include "vtkMatchingBuilder.h"
 #include "vtkQuadCoverErrorObserver.h"
+#include "vtkQuadCoverPieces.h"
 #include "vtkQuadCoverSolver.h"
 #include "vtkQuadCoverSurfaceRepair.h"
 #include "vtkQuadExtractor.h"
@@ -152,11 +153,25 @@ void vtkQuadCoverRemesh::StageProgress(int stage, double progress)
 }
 
 //------------------------------------------------------------------------------
+int vtkQuadCoverRemesh::RequestUpdateExtent(
+  vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  const int done = this->Superclass::RequestUpdateExtent(request, inputVector, outputVector);
+  this->EmptyPiece = vtkQuadCoverPieces::RequestWholeSurface(inputVector, outputVector);
+  return done;
+}
+
+//------------------------------------------------------------------------------
 int vtkQuadCoverRemesh::RequestData(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
   vtkPolyData* input = vtkPolyData::GetData(inputVector[0]);
   vtkPolyData* output = vtkPolyData::GetData(outputVector);
+  if (this->EmptyPiece)
+  {
+    output->Initialize(); // the rank of piece 0 remeshes the whole surface
+    return 1;
+  }
   // The stages' input stays connected (connecting it would make this filter look modified); a
   // new input reaches them as a change of its data, a changed property re-runs its stage onward.
   this->Surface->ShallowCopy(input);

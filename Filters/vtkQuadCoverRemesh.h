@@ -14,7 +14,9 @@
  *
  * Errors: the first stage's error, as that stage words it ("Cannot smooth frames: ..."), through
  * vtkErrorMacro; RequestData then returns 0. The stages' warnings become this filter's.
- * Progress runs over the six stages; AbortExecute stops the running stage.
+ * Progress runs over the six stages; AbortExecute stops the running stage. In a distributed
+ * pipeline (pvbatch over MPI) a surface is remeshed whole on the rank of piece 0, never piece by
+ * piece; the blocks of a composite input are remeshed each on the rank that holds it.
  * @sa vtkQuadCoverSurfaceRepair vtkQuadExtractor
  */
 #ifndef vtkQuadCoverRemesh_h
@@ -90,6 +92,8 @@ protected:
   ~vtkQuadCoverRemesh() override;
 
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+  /// The whole surface on every rank, remeshed on the rank of piece 0 (vtkQuadCoverPieces.h).
+  int RequestUpdateExtent(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
 private:
   vtkQuadCoverRemesh(const vtkQuadCoverRemesh&) = delete;
@@ -110,6 +114,7 @@ private:
   vtkNew<vtkQuadCoverSolver> Solver;
   vtkNew<vtkQuadExtractor> Extractor;
   vtkNew<vtkQuadCoverErrorObserver> Errors;
+  bool EmptyPiece = false;
 };
 
 #endif

@@ -15,6 +15,7 @@
 #include "vtkQuadCoverSolver.h"
 #include "vtkQuadCoverSurfaceRepair.h"
 #include "vtkQuadExtractor.h"
+#include "vtkSphereSource.h"
 
 #include "Surfaces.h"
 
@@ -191,4 +192,46 @@ TEST(vtkQuadCoverRemesh, ProgressRunsOverTheSixStagesToOne)
     }
     EXPECT_TRUE(seen) << "no progress in stage " << stage;
   }
+}
+
+TEST(vtkQuadCoverRemesh, ASurfaceInPiecesIsRemeshedWholeOnPieceZero)
+{
+  // a source that gives pieces: half a sphere for piece 0 of 2
+  vtkNew<vtkSphereSource> sphere;
+  sphere->SetThetaResolution(40);
+  sphere->SetPhiResolution(40);
+  vtkNew<vtkQuadCoverRemesh> remesh;
+  remesh->SetInputConnection(sphere->GetOutputPort());
+  remesh->SetTargetQuadCount(300);
+  ASSERT_EQ(vtkQuadCoverErrorObserver::Run(remesh), "");
+  const vtkIdType whole = remesh->GetOutput()->GetNumberOfPolys();
+  ASSERT_GT(whole, 150);
+
+  remesh->UpdatePiece(0, 2, 1);
+  EXPECT_EQ(remesh->GetOutput()->GetNumberOfPolys(), whole);
+  remesh->UpdatePiece(1, 2, 1);
+  EXPECT_EQ(remesh->GetOutput()->GetNumberOfCells(), 0);
+
+  // the stages do the same: the chain's last stage asked for piece 0 of 2 gives the whole
+  // surface's quads, for piece 1 nothing
+  vtkNew<vtkQuadCoverSurfaceRepair> repair;
+  repair->SetInputConnection(sphere->GetOutputPort());
+  vtkNew<vtkCurvatureFrames> curvature;
+  curvature->SetInputConnection(repair->GetOutputPort());
+  vtkNew<vtkFrameSmoother> smoother;
+  smoother->SetInputConnection(curvature->GetOutputPort());
+  vtkNew<vtkMatchingBuilder> matching;
+  matching->SetInputConnection(smoother->GetOutputPort());
+  vtkNew<vtkQuadCoverSolver> solver;
+  solver->SetInputConnection(matching->GetOutputPort());
+  solver->SetTargetQuadCount(300);
+  vtkNew<vtkQuadExtractor> extractor;
+  extractor->SetInputConnection(solver->GetOutputPort());
+  extractor->UpdatePiece(0, 2, 1);
+  EXPECT_EQ(extractor->GetOutput()->GetNumberOfPolys(), whole);
+  extractor->UpdatePiece(1, 2, 1);
+  EXPECT_EQ(extractor->GetOutput()->GetNumberOfCells(), 0);
+  // upstream of an empty piece only the piece was read, and nothing computed from it
+  EXPECT_EQ(solver->GetOutput()->GetNumberOfCells(), 0);
+  EXPECT_LT(sphere->GetOutput()->GetNumberOfCells(), 40 * 38 * 2 / 2 + 100);
 }
