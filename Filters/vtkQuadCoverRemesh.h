@@ -14,6 +14,9 @@
  *
  * Errors: the first stage's error, as that stage words it ("Cannot smooth frames: ..."), through
  * vtkErrorMacro; RequestData then returns 0. The stages' warnings become this filter's.
+ * A composite input (vtkMultiBlockDataSet, vtkPartitionedDataSetCollection) gives a composite
+ * output of the same structure and names, each surface remeshed on its own (VTK's composite
+ * pipeline runs the filter block by block; so do the stages).
  * Progress runs over the six stages; AbortExecute stops the running stage. In a distributed
  * pipeline (pvbatch over MPI) a surface is remeshed whole on the rank of piece 0, never piece by
  * piece; the blocks of a composite input are remeshed each on the rank that holds it.

@@ -1,5 +1,7 @@
 # cmake -DBUILD_DIR=... -DSCRATCH=... -DEXAMPLES=... -DDATA=... -DVTK_DIR=... -DGENERATOR=...
-#       [-DPYTHON=... -DPY_DEST=...] -DLIBDIR=... -DBINDIR=... -DWITH_CLI=0|1 -P TestInstall.cmake
+#       [-DPYTHON=... -DPY_DEST=...] -DLIBDIR=... -DBINDIR=... -DWITH_CLI=0|1
+#       [-DPLUGIN=QuadCover.so -DPLUGIN_DIR=lib/paraview-5.11/plugins/QuadCover -DPVPYTHON=...]
+#       -P TestInstall.cmake
 function(run what)
   execute_process(COMMAND ${ARGN} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
   if (NOT rc EQUAL 0)
@@ -49,6 +51,24 @@ if (PYTHON AND PY_DEST)
     --quads 600)
   if (NOT last_output MATCHES "8 irregular inner vertices.*Euler characteristic 2")
     message(FATAL_ERROR "unexpected figures from the Python example: ${last_output}")
+  endif ()
+endif ()
+# The installed plugin finds the installed libraries without help.
+if (PLUGIN AND PVPYTHON)
+  set(plugin "${prefix}/${PLUGIN_DIR}/${PLUGIN}")
+  if (NOT EXISTS "${plugin}")
+    message(FATAL_ERROR "the ParaView plugin is not installed as ${plugin}")
+  endif ()
+  run("the installed plugin" "${PVPYTHON}" -c "
+from paraview.simple import *
+from paraview import servermanager
+LoadPlugin('${plugin}', remote=False, ns=globals())
+q = QuadCoverRemesh(Input=Triangulate(Input=Sphere(ThetaResolution=32, PhiResolution=32)))
+q.TargetQuadCount = 300
+print('Euler characteristic', servermanager.Fetch(q).GetFieldData().GetArray('EulerCharacteristic').GetValue(0))
+")
+  if (NOT last_output MATCHES "Euler characteristic 2")
+    message(FATAL_ERROR "unexpected output of the installed plugin: ${last_output}")
   endif ()
 endif ()
 message(STATUS "installed QuadCover: the examples build and run")
