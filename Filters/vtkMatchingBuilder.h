@@ -14,8 +14,8 @@
  * over sqrt(area / 2000) with LengthScaledCost (default; about one per edge on a 4,000-triangle
  * mesh), so that a finer mesh of the same surface keeps about the same singularities. Only pairs
  * that cancel are merged: no singularity grows. Poincare-Hopf holds before and after. It first
- * splits every inner point of index 1/2 or more into quarters; without it, those of index 1 or
- * more are split all the same: no map can follow a whole turn.
+ * splits every inner point of index 1/2 or more into quarters; without it, those of index 3/4 or
+ * more are split all the same (no map can follow a whole turn), and those of 1/2 stay.
  *
  * Output 0: the surface with cell data Matching (3 x int: for edge k = (point k, point k+1),
  * X_{neighbour,m} = X_{this,(m - r) mod 4}, X_0 = FrameU, X_1 = n x FrameU, ...; -1 on boundary

@@ -20,6 +20,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <stdexcept>
 
 vtkStandardNewMacro(vtkQuadCoverSolver);
@@ -170,6 +171,48 @@ vtkQuadCoverSolver::vtkQuadCoverSolver()
 }
 
 //------------------------------------------------------------------------------
+double vtkQuadCoverSolver::MaximumQuadCount(vtkIdType triangles)
+{
+  return std::max(2e6, 50.0 * static_cast<double>(triangles));
+}
+
+namespace
+{
+/// Throws when `options` ask more quads of the surface than MaximumQuadCount allows.
+void CheckQuadCount(const vtkQuadCoverSurface& in, const quadcover::ParameterizationOptions& o,
+  double worldEdgeLength)
+{
+  double area = 0.0;
+  for (Eigen::Index f = 0; f < in.F.rows(); ++f)
+  {
+    const Eigen::Vector3d a = in.V.row(in.F(f, 0)), b = in.V.row(in.F(f, 1)),
+                          c = in.V.row(in.F(f, 2));
+    area += 0.5 * (b - a).cross(c - a).norm();
+  }
+  const double share = o.targetEdgeLength > 0.0 ? area / (o.targetEdgeLength * o.targetEdgeLength)
+                                                : static_cast<double>(o.targetQuadCount);
+  // each component's minimum comes on top of its share, at most
+  const double quads = share + o.minimumComponentQuadCount * in.topo.numComponents();
+  const double most = vtkQuadCoverSolver::MaximumQuadCount(in.F.rows());
+  if (!(quads > most)) // NaN (a zero-area surface) is for the map to refuse
+  {
+    return;
+  }
+  char text[320];
+  if (o.targetEdgeLength > 0.0)
+    std::snprintf(text, sizeof text, "TargetEdgeLength %g gives", worldEdgeLength);
+  else
+    std::snprintf(text, sizeof text, "TargetQuadCount %.0f gives", o.targetQuadCount);
+  const std::string asked = text;
+  std::snprintf(text, sizeof text,
+    " up to %.3g quads, too many for this surface (about %.0f GB of memory); at most %.0f quads "
+    "are taken (2000000, or 50 for each of its %lld triangles)",
+    quads, std::ceil(quads * 0.6e3 / 1e9), most, static_cast<long long>(in.F.rows()));
+  throw std::invalid_argument(asked + text);
+}
+}
+
+//------------------------------------------------------------------------------
 void vtkQuadCoverSolver::Execute(vtkQuadCoverSurface& in, vtkInformationVector* outputVector)
 {
   vtkDataArray* u = this->RequireCellArray(0, in.polyData, 3, names::FrameU,
@@ -210,6 +253,7 @@ void vtkQuadCoverSolver::Execute(vtkQuadCoverSurface& in, vtkInformationVector* 
   options.minimumSingularitySeparation = this->MinimumSingularitySeparation;
   options.conePairGain = this->ConePairGain;
   options.numberOfThreads = this->NumberOfThreads;
+  CheckQuadCount(in, options, this->TargetEdgeLength);
   const quadcover::Parameterization map = quadcover::computeParameterization(in.V, in.F, in.topo,
     geometry, U, matching, options, vtkQuadCoverEigen::CoreProgress(this, 0.15, 0.95));
   if (map.wrongWindings > 0)

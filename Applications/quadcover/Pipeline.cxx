@@ -152,7 +152,7 @@ Pipeline::Pipeline()
 
 double Pipeline::MaximumQuadCount(long long triangles)
 {
-  return std::max(2e6, 50.0 * static_cast<double>(triangles));
+  return vtkQuadCoverSolver::MaximumQuadCount(static_cast<vtkIdType>(triangles));
 }
 
 std::string Pipeline::CheckQuadCount() const

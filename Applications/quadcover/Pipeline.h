@@ -47,10 +47,9 @@ public:
 
   /**
    * The most quads the param stage may be asked for on a surface of `triangles` triangles:
-   * 2,000,000, or 50 a triangle for larger surfaces. The quads stage takes about 0.6 KB a quad
-   * whatever the surface (1.2 GB at 2,000,000 quads); quads finer than a fiftieth of a triangle
-   * only resample flat triangles, so a larger target is almost surely a slip, which would
-   * allocate for minutes and end out of memory.
+   * vtkQuadCoverSolver::MaximumQuadCount (2,000,000, or 50 a triangle on larger surfaces). The
+   * solver refuses more itself; CheckQuadCount refuses them right after the repair, before the
+   * longer stages run.
    */
   static double MaximumQuadCount(long long triangles);
 

@@ -158,6 +158,25 @@ TEST(vtkQuadCoverRemesh, StagesErrorsAndWarningsAreItsOwn)
   EXPECT_EQ(errors->GetError().rfind("Cannot repair the surface: ", 0), 0u) << errors->GetError();
   EXPECT_EQ(remesh->GetOutput()->GetNumberOfCells(), 0);
 
+  // a target too large for the surface is refused before anything is allocated
+  errors->Clear();
+  remesh->SetInputData(Dumbbell());
+  remesh->SetTargetQuadCount(100000000);
+  remesh->Update();
+  EXPECT_EQ(errors->GetError().rfind("Cannot parameterize: TargetQuadCount 100000000 gives up to "
+                                     "1e+08 quads, too many for this surface (about 61 GB",
+              0),
+    0u)
+    << errors->GetError();
+  errors->Clear();
+  remesh->SetTargetQuadCount(0);
+  remesh->SetTargetEdgeLength(1e-6);
+  remesh->Update();
+  EXPECT_EQ(
+    errors->GetError().rfind("Cannot parameterize: TargetEdgeLength 1e-06 gives up to ", 0), 0u)
+    << errors->GetError();
+  remesh->SetTargetEdgeLength(0.0);
+
   // then a good input runs, with no error left over from the bad one
   errors->Clear();
   remesh->SetInputData(Dumbbell());
