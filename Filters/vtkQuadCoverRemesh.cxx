@@ -183,6 +183,7 @@ int vtkQuadCoverRemesh::RequestData(
   }
   if (!this->Errors->GetError().empty())
   {
+    output->Initialize(); // nothing of an earlier run
     vtkErrorMacro(<< this->Errors->GetError());
     return 0;
   }

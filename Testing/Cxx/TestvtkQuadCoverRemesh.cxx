@@ -158,11 +158,17 @@ TEST(vtkQuadCoverRemesh, StagesErrorsAndWarningsAreItsOwn)
   EXPECT_EQ(errors->GetError().rfind("Cannot repair the surface: ", 0), 0u) << errors->GetError();
   EXPECT_EQ(remesh->GetOutput()->GetNumberOfCells(), 0);
 
-  // a target too large for the surface is refused before anything is allocated
+  // a target too large for the surface is refused before anything is allocated, and the
+  // output holds nothing of the run before
   errors->Clear();
   remesh->SetInputData(Dumbbell());
+  remesh->SetTargetQuadCount(300);
+  remesh->Update();
+  ASSERT_EQ(errors->GetError(), "");
+  ASSERT_GT(remesh->GetOutput()->GetNumberOfCells(), 0);
   remesh->SetTargetQuadCount(100000000);
   remesh->Update();
+  EXPECT_EQ(remesh->GetOutput()->GetNumberOfCells(), 0);
   EXPECT_EQ(errors->GetError().rfind("Cannot parameterize: TargetQuadCount 100000000 gives up to "
                                      "1e+08 quads, too many for this surface (about 61 GB",
               0),
