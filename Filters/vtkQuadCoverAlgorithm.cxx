@@ -125,7 +125,7 @@ int vtkQuadCoverAlgorithm::RequestUpdateExtent(
   vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
   const int done = this->Superclass::RequestUpdateExtent(request, inputVector, outputVector);
-  this->EmptyPiece = vtkQuadCoverPieces::RequestWholeSurface(inputVector, outputVector);
+  this->EmptyPiece = vtkQuadCoverPieces::RequestWholeSurface(request, inputVector, outputVector);
   return done;
 }
 

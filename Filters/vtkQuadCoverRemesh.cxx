@@ -10,6 +10,7 @@
 #include "vtkQuadExtractor.h"
 
 #include "vtkCallbackCommand.h"
+#include "vtkExecutive.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
 #include "vtkObjectFactory.h"
@@ -28,13 +29,12 @@ vtkQuadCoverRemesh::vtkQuadCoverRemesh()
   this->Matching->SetInputConnection(this->Smoother->GetOutputPort());
   this->Solver->SetInputConnection(this->Matching->GetOutputPort());
   this->Extractor->SetInputConnection(this->Solver->GetOutputPort());
-  vtkNew<vtkCallbackCommand> progress;
-  progress->SetCallback(&vtkQuadCoverRemesh::OnProgress);
-  progress->SetClientData(this);
+  this->Progress->SetCallback(&vtkQuadCoverRemesh::OnProgress);
+  this->Progress->SetClientData(this);
   for (int i = 0; i < StageCount; ++i)
   {
     this->Errors->Attach(this->Stage(i));
-    this->Stage(i)->AddObserver(vtkCommand::ProgressEvent, progress);
+    this->Stage(i)->AddObserver(vtkCommand::ProgressEvent, this->Progress);
   }
 }
 
@@ -47,7 +47,17 @@ vtkAlgorithm* vtkQuadCoverRemesh::Stage(int i) const
 }
 
 //------------------------------------------------------------------------------
-vtkQuadCoverRemesh::~vtkQuadCoverRemesh() = default;
+vtkQuadCoverRemesh::~vtkQuadCoverRemesh()
+{
+  // a stage someone still holds must not call back into this filter
+  for (int i = 0; i < StageCount; ++i)
+  {
+    vtkAlgorithm* stage = this->Stage(i);
+    stage->RemoveObserver(this->Progress);
+    stage->RemoveObserver(this->Errors);
+    stage->GetExecutive()->RemoveObserver(this->Errors);
+  }
+}
 
 //------------------------------------------------------------------------------
 void vtkQuadCoverRemesh::SetTargetQuadCount(int count)
@@ -157,7 +167,7 @@ int vtkQuadCoverRemesh::RequestUpdateExtent(
   vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
   const int done = this->Superclass::RequestUpdateExtent(request, inputVector, outputVector);
-  this->EmptyPiece = vtkQuadCoverPieces::RequestWholeSurface(inputVector, outputVector);
+  this->EmptyPiece = vtkQuadCoverPieces::RequestWholeSurface(request, inputVector, outputVector);
   return done;
 }
 
@@ -176,7 +186,25 @@ int vtkQuadCoverRemesh::RequestData(
   // new input reaches them as a change of its data, a changed property re-runs its stage onward.
   this->Surface->ShallowCopy(input);
   this->Errors->Clear();
+  // VTK 9.2's executive leaves AbortExecute set after an aborted run: a stage stopped by an
+  // earlier abort of this filter runs again
+  for (int i = 0; i < StageCount; ++i)
+  {
+    this->Stage(i)->SetAbortExecute(0);
+  }
   this->Extractor->Update();
+  bool aborted = false;
+  for (int i = 0; i < StageCount; ++i)
+  {
+    aborted = aborted || this->Stage(i)->GetAbortExecute();
+  }
+  if (aborted)
+  {
+    // stopped on request: no result and no error (the stages after the stopped one found an
+    // empty input)
+    output->Initialize();
+    return 1;
+  }
   for (int w = 0; w < this->Errors->GetNumberOfWarnings(); ++w)
   {
     vtkWarningMacro(<< this->Errors->GetWarning(w));

@@ -17,9 +17,14 @@
  * A composite input (vtkMultiBlockDataSet, vtkPartitionedDataSetCollection) gives a composite
  * output of the same structure and names, each surface remeshed on its own (VTK's composite
  * pipeline runs the filter block by block; so do the stages).
- * Progress runs over the six stages; AbortExecute stops the running stage. In a distributed
+ * Progress runs over the six stages; AbortExecute stops the running stage and leaves the output
+ * empty, without an error. In a distributed
  * pipeline (pvbatch over MPI) a surface is remeshed whole on the rank of piece 0, never piece by
- * piece; the blocks of a composite input are remeshed each on the rank that holds it.
+ * piece; the blocks of a composite input are remeshed each on the rank that holds it, as whole
+ * surfaces (vtkQuadCoverPieces.h: blocks split over the ranks are not gathered).
+ *
+ * Memory: the six stages keep their outputs (and this filter a shallow copy of its input), so
+ * that a changed property re-runs only from its stage; about the command line's peak.
  * @sa vtkQuadCoverSurfaceRepair vtkQuadExtractor
  */
 #ifndef vtkQuadCoverRemesh_h
@@ -30,6 +35,7 @@
 #include "vtkQuadCoverFiltersModule.h" // for export macro
 
 class vtkAlgorithm;
+class vtkCallbackCommand;
 class vtkCurvatureFrames;
 class vtkFrameSmoother;
 class vtkMatchingBuilder;
@@ -117,6 +123,7 @@ private:
   vtkNew<vtkQuadCoverSolver> Solver;
   vtkNew<vtkQuadExtractor> Extractor;
   vtkNew<vtkQuadCoverErrorObserver> Errors;
+  vtkNew<vtkCallbackCommand> Progress;
   bool EmptyPiece = false;
 };
 

@@ -205,7 +205,7 @@ void CheckQuadCount(const vtkQuadCoverSurface& in, const quadcover::Parameteriza
     std::snprintf(text, sizeof text, "TargetQuadCount %.0f gives", o.targetQuadCount);
   const std::string asked = text;
   std::snprintf(text, sizeof text,
-    " up to %.3g quads, too many for this surface (about %.0f GB of memory); at most %.0f quads "
+    " about %.3g quads, too many for this surface (about %.0f GB of memory); at most %.0f quads "
     "are taken (2000000, or 50 for each of its %lld triangles)",
     quads, std::ceil(quads * 0.6e3 / 1e9), most, static_cast<long long>(in.F.rows()));
   throw std::invalid_argument(asked + text);

@@ -80,7 +80,8 @@ public:
   ///@}
 
   ///@{
-  /** About how many quads, in [1, 10^8] (default 3000); used when TargetEdgeLength is 0. */
+  /** About how many quads, in [1, 10^8] (default 3000); used when TargetEdgeLength is 0. More
+   * than MaximumQuadCount (2,000,000, or 50 a triangle) is refused with an error. */
   vtkSetClampMacro(TargetQuadCount, int, 1, 100000000);
   vtkGetMacro(TargetQuadCount, int);
   ///@}

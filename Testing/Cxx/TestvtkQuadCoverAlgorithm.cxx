@@ -11,7 +11,6 @@
 #include "vtkQuadCoverSolver.h"
 #include "vtkQuadCoverSurfaceRepair.h"
 #include "vtkQuadExtractor.h"
-#include "vtkVersionMacros.h"
 
 #include "Surfaces.h"
 
@@ -126,15 +125,13 @@ TEST(vtkQuadCoverAlgorithm, AbortStopsAStageWithAnEmptyOutputAndNoError)
     filter->Update();
     EXPECT_EQ(chain.errors->GetError(), "");
     EXPECT_GE(recorder->AbortRequests, 1);
-    // stopped where it was: no report of its own near the end (VTK 9.2's executive reports 1
-    // after every run, aborted or not)
+    // stopped where it was: no report of its own near the end (the executive of ParaView 5.11's
+    // VTK reports 1 after every run, aborted or not; the stages' own last report is below 1)
     std::vector<double> own = recorder->Values;
-#ifdef VTK_VERSION_CHECK
-#if VTK_VERSION_NUMBER >= VTK_VERSION_CHECK(9, 2, 0)
-    ASSERT_EQ(own.back(), 1.0);
-    own.pop_back();
-#endif
-#endif
+    if (!own.empty() && own.back() == 1.0)
+    {
+      own.pop_back();
+    }
     ASSERT_FALSE(own.empty());
     EXPECT_LT(own.back(), 0.99);
     EXPECT_EQ(vtkPolyData::SafeDownCast(filter->GetOutputDataObject(0))->GetNumberOfPoints(), 0);

@@ -4,6 +4,7 @@
 #include "vtkCurvatureFrames.h"
 #include "vtkFieldData.h"
 #include "vtkFrameSmoother.h"
+#include "vtkInformation.h"
 #include "vtkMatchingBuilder.h"
 #include "vtkNew.h"
 #include "vtkPointData.h"
@@ -16,6 +17,7 @@
 #include "vtkQuadCoverSurfaceRepair.h"
 #include "vtkQuadExtractor.h"
 #include "vtkSphereSource.h"
+#include "vtkStreamingDemandDrivenPipeline.h"
 
 #include "Surfaces.h"
 
@@ -169,7 +171,7 @@ TEST(vtkQuadCoverRemesh, StagesErrorsAndWarningsAreItsOwn)
   remesh->SetTargetQuadCount(100000000);
   remesh->Update();
   EXPECT_EQ(remesh->GetOutput()->GetNumberOfCells(), 0);
-  EXPECT_EQ(errors->GetError().rfind("Cannot parameterize: TargetQuadCount 100000000 gives up to "
+  EXPECT_EQ(errors->GetError().rfind("Cannot parameterize: TargetQuadCount 100000000 gives about "
                                      "1e+08 quads, too many for this surface (about 61 GB",
               0),
     0u)
@@ -179,7 +181,7 @@ TEST(vtkQuadCoverRemesh, StagesErrorsAndWarningsAreItsOwn)
   remesh->SetTargetEdgeLength(1e-6);
   remesh->Update();
   EXPECT_EQ(
-    errors->GetError().rfind("Cannot parameterize: TargetEdgeLength 1e-06 gives up to ", 0), 0u)
+    errors->GetError().rfind("Cannot parameterize: TargetEdgeLength 1e-06 gives about ", 0), 0u)
     << errors->GetError();
   remesh->SetTargetEdgeLength(0.0);
 
@@ -259,4 +261,95 @@ TEST(vtkQuadCoverRemesh, ASurfaceInPiecesIsRemeshedWholeOnPieceZero)
   // upstream of an empty piece only the piece was read, and nothing computed from it
   EXPECT_EQ(solver->GetOutput()->GetNumberOfCells(), 0);
   EXPECT_LT(sphere->GetOutput()->GetNumberOfCells(), 40 * 38 * 2 / 2 + 100);
+}
+
+namespace
+{
+class AbortAt : public vtkCommand
+{
+public:
+  static AbortAt* New() { return new AbortAt; }
+  void Execute(vtkObject* caller, unsigned long, void* callData) override
+  {
+    if (*static_cast<double*>(callData) >= 0.4)
+    {
+      static_cast<vtkAlgorithm*>(caller)->AbortExecuteOn();
+      ++this->Requests;
+    }
+  }
+  int Requests = 0;
+};
+}
+
+TEST(vtkQuadCoverRemesh, AbortLeavesNoResultNoErrorAndTheNextRunWhole)
+{
+  vtkNew<vtkQuadCoverRemesh> remesh;
+  remesh->SetInputData(Dumbbell());
+  remesh->SetTargetQuadCount(300);
+  vtkNew<AbortAt> abort;
+  const unsigned long tag = remesh->AddObserver(vtkCommand::ProgressEvent, abort);
+  vtkNew<vtkQuadCoverErrorObserver> errors;
+  errors->Attach(remesh);
+  remesh->Update();
+  EXPECT_GE(abort->Requests, 1);
+  EXPECT_EQ(errors->GetError(), "");
+  EXPECT_EQ(remesh->GetOutput()->GetNumberOfCells(), 0);
+
+  // the next request runs in full, whatever the executive did with the stages' abort flags
+  remesh->RemoveObserver(tag);
+  remesh->AbortExecuteOff();
+  remesh->Modified();
+  remesh->Update();
+  EXPECT_EQ(errors->GetError(), "");
+  EXPECT_GT(remesh->GetOutput()->GetNumberOfPolys(), 150);
+}
+
+TEST(vtkQuadCoverRemesh, AStageOutlivesItsRemesh)
+{
+  vtkSmartPointer<vtkQuadCoverRemesh> remesh = vtkSmartPointer<vtkQuadCoverRemesh>::New();
+  remesh->SetInputData(Dumbbell());
+  remesh->SetTargetQuadCount(300);
+  remesh->Update();
+  vtkSmartPointer<vtkQuadCoverSolver> solver = remesh->GetSolver();
+  remesh = nullptr; // the stage must no longer report to it
+  solver->SetTargetQuadCount(400);
+  solver->Update();
+  EXPECT_GT(solver->GetOutput()->GetNumberOfCells(), 0);
+}
+
+TEST(vtkQuadCoverRemesh, TheBranchPointPortInPieces)
+{
+  // the matching builder asked for its port 1 in pieces decides by port 1's request
+  vtkNew<vtkSphereSource> sphere;
+  sphere->SetThetaResolution(40);
+  sphere->SetPhiResolution(40);
+  vtkNew<vtkQuadCoverSurfaceRepair> repair;
+  repair->SetInputConnection(sphere->GetOutputPort());
+  vtkNew<vtkCurvatureFrames> curvature;
+  curvature->SetInputConnection(repair->GetOutputPort());
+  vtkNew<vtkFrameSmoother> smoother;
+  smoother->SetInputConnection(curvature->GetOutputPort());
+  vtkNew<vtkMatchingBuilder> matching;
+  matching->SetInputConnection(smoother->GetOutputPort());
+  vtkNew<vtkQuadCoverErrorObserver> errors;
+  errors->Attach(matching);
+  matching->Update(1);
+  const vtkIdType whole =
+    vtkPolyData::SafeDownCast(matching->GetOutputDataObject(1))->GetNumberOfPoints();
+  ASSERT_EQ(whole, 8);            // a sphere: eight +1/4 points
+  matching->UpdatePiece(1, 2, 0); // port 0's last request: piece 1, which must not decide port 1
+  for (int piece : { 1, 0 })
+  {
+    SCOPED_TRACE(piece);
+    vtkStreamingDemandDrivenPipeline* exec =
+      vtkStreamingDemandDrivenPipeline::SafeDownCast(matching->GetExecutive());
+    vtkInformation* port1 = exec->GetOutputInformation(1);
+    port1->Set(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER(), piece);
+    port1->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES(), 2);
+    port1->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_GHOST_LEVELS(), 0);
+    exec->Update(1);
+    EXPECT_EQ(errors->GetError(), "");
+    EXPECT_EQ(vtkPolyData::SafeDownCast(matching->GetOutputDataObject(1))->GetNumberOfPoints(),
+      piece == 0 ? whole : 0);
+  }
 }

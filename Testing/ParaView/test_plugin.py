@@ -106,17 +106,20 @@ def the_blocks():
 
 
 def settable(cls):
-    """The properties a filter class adds to vtkPolyDataAlgorithm: bounded values (a MinValue
-    getter) and switches (On/Off)."""
+    """The number and switch properties a filter class adds to vtkPolyDataAlgorithm: a setter
+    with a getter of the same name that returns a number or a bool."""
     base = set(dir(vtkPolyDataAlgorithm))
+    fresh = cls()
     names = set()
     for m in dir(cls):
-        if m in base:
+        if not m.startswith("Set") or m in base or not hasattr(cls, "Get" + m[3:]):
             continue
-        if m.startswith("Get") and m.endswith("MinValue"):
-            names.add(m[3:-len("MinValue")])
-        elif m.endswith("On") and hasattr(cls, m[:-2] + "Off") and hasattr(cls, "Set" + m[:-2]):
-            names.add(m[:-2])
+        try:
+            value = getattr(fresh, "Get" + m[3:])()
+        except TypeError:  # a getter that takes arguments
+            continue
+        if isinstance(value, (bool, int, float)):
+            names.add(m[3:])
     return names
 
 
