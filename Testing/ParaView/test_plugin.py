@@ -13,14 +13,7 @@ from paraview.simple import GroupDatasets, LoadPlugin, Sphere, Triangulate, Upda
 from vtkmodules.vtkCommonExecutionModel import vtkPolyDataAlgorithm
 
 import quadcover
-
-failures = []
-
-
-def check(condition, text):
-    if not condition:
-        failures.append(text)
-        print("FAIL:", text)
+from meshchecks import check, check_quads, finish
 
 
 LoadPlugin(sys.argv[1], remote=False, ns=globals())
@@ -36,26 +29,6 @@ PROXIES = [
     ("QuadCoverQuadExtractor", quadcover.vtkQuadExtractor),
     ("QuadCoverRemesh", quadcover.vtkQuadCoverRemesh),
 ]
-
-
-def euler_characteristic(mesh):
-    edges = set()
-    for c in range(mesh.GetNumberOfCells()):
-        ids = mesh.GetCell(c).GetPointIds()
-        n = ids.GetNumberOfIds()
-        for k in range(n):
-            a, b = ids.GetId(k), ids.GetId((k + 1) % n)
-            edges.add((min(a, b), max(a, b)))
-    return mesh.GetNumberOfPoints() - len(edges) + mesh.GetNumberOfCells()
-
-
-def check_quads(mesh, what):
-    sizes = {mesh.GetCell(c).GetNumberOfPoints() for c in range(mesh.GetNumberOfCells())}
-    check(mesh.GetNumberOfCells() > 100, "%s: %d cells" % (what, mesh.GetNumberOfCells()))
-    if mesh.GetNumberOfCells() == 0:
-        return
-    check(sizes == {4}, "%s: cells of %s points, not only quads" % (what, sorted(sizes)))
-    check(euler_characteristic(mesh) == 2, "%s: chi %d, not 2" % (what, euler_characteristic(mesh)))
 
 
 def the_chain():
@@ -192,6 +165,4 @@ def the_properties():
 the_chain()
 the_blocks()
 the_properties()
-if failures:
-    sys.exit("%d failures" % len(failures))
-print("plugin: all checks passed")
+finish("plugin")
