@@ -1,5 +1,6 @@
 // vtkQuadCoverRemesh: the six stages in one filter give what the six filters chained give; its
 // properties reach the stages; errors, warnings, progress and re-execution behave as a filter's.
+#include "vtkAlgorithmOutput.h"
 #include "vtkCommand.h"
 #include "vtkCurvatureFrames.h"
 #include "vtkFieldData.h"
@@ -18,6 +19,7 @@
 #include "vtkQuadExtractor.h"
 #include "vtkSphereSource.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
+#include "vtkTrivialProducer.h"
 
 #include "Surfaces.h"
 
@@ -44,40 +46,52 @@ public:
   }
   std::vector<double> Values;
 };
-}
 
-TEST(vtkQuadCoverRemesh, GivesTheChainsQuads)
+/// The six stages chained, the repair on `upstream`.
+struct Stages
 {
-  vtkSmartPointer<vtkPolyData> surface = Dumbbell();
   vtkNew<vtkQuadCoverSurfaceRepair> repair;
   vtkNew<vtkCurvatureFrames> curvature;
   vtkNew<vtkFrameSmoother> smoother;
   vtkNew<vtkMatchingBuilder> matching;
   vtkNew<vtkQuadCoverSolver> solver;
   vtkNew<vtkQuadExtractor> extractor;
-  repair->SetInputData(surface);
-  curvature->SetInputConnection(repair->GetOutputPort());
-  smoother->SetInputConnection(curvature->GetOutputPort());
-  matching->SetInputConnection(smoother->GetOutputPort());
-  solver->SetInputConnection(matching->GetOutputPort());
-  solver->SetTargetQuadCount(800);
-  extractor->SetInputConnection(solver->GetOutputPort());
-  ASSERT_EQ(vtkQuadCoverErrorObserver::Run(extractor), "");
+
+  explicit Stages(vtkAlgorithmOutput* upstream)
+  {
+    repair->SetInputConnection(upstream);
+    curvature->SetInputConnection(repair->GetOutputPort());
+    smoother->SetInputConnection(curvature->GetOutputPort());
+    matching->SetInputConnection(smoother->GetOutputPort());
+    solver->SetInputConnection(matching->GetOutputPort());
+    extractor->SetInputConnection(solver->GetOutputPort());
+  }
+};
+}
+
+TEST(vtkQuadCoverRemesh, GivesTheChainsQuads)
+{
+  vtkSmartPointer<vtkPolyData> surface = Dumbbell();
+  vtkNew<vtkTrivialProducer> producer;
+  producer->SetOutput(surface);
+  Stages chain(producer->GetOutputPort());
+  chain.solver->SetTargetQuadCount(800);
+  ASSERT_EQ(vtkQuadCoverErrorObserver::Run(chain.extractor), "");
 
   vtkNew<vtkQuadCoverRemesh> remesh;
   remesh->SetInputData(surface);
   remesh->SetTargetQuadCount(800);
   ASSERT_EQ(vtkQuadCoverErrorObserver::Run(remesh), "");
-  vtkPolyData* chain = extractor->GetOutput();
+  vtkPolyData* six = chain.extractor->GetOutput();
   vtkPolyData* one = remesh->GetOutput();
   ASSERT_GT(one->GetNumberOfPolys(), 400);
-  ASSERT_EQ(one->GetNumberOfPolys(), chain->GetNumberOfPolys());
-  ASSERT_EQ(one->GetNumberOfPoints(), chain->GetNumberOfPoints());
+  ASSERT_EQ(one->GetNumberOfPolys(), six->GetNumberOfPolys());
+  ASSERT_EQ(one->GetNumberOfPoints(), six->GetNumberOfPoints());
   for (vtkIdType p = 0; p < one->GetNumberOfPoints(); ++p)
   {
     double a[3], b[3];
     one->GetPoint(p, a);
-    chain->GetPoint(p, b);
+    six->GetPoint(p, b);
     ASSERT_EQ(a[0], b[0]);
     ASSERT_EQ(a[1], b[1]);
     ASSERT_EQ(a[2], b[2]);
@@ -241,25 +255,15 @@ TEST(vtkQuadCoverRemesh, ASurfaceInPiecesIsRemeshedWholeOnPieceZero)
 
   // the stages do the same: the chain's last stage asked for piece 0 of 2 gives the whole
   // surface's quads, for piece 1 nothing
-  vtkNew<vtkQuadCoverSurfaceRepair> repair;
-  repair->SetInputConnection(sphere->GetOutputPort());
-  vtkNew<vtkCurvatureFrames> curvature;
-  curvature->SetInputConnection(repair->GetOutputPort());
-  vtkNew<vtkFrameSmoother> smoother;
-  smoother->SetInputConnection(curvature->GetOutputPort());
-  vtkNew<vtkMatchingBuilder> matching;
-  matching->SetInputConnection(smoother->GetOutputPort());
-  vtkNew<vtkQuadCoverSolver> solver;
-  solver->SetInputConnection(matching->GetOutputPort());
-  solver->SetTargetQuadCount(300);
-  vtkNew<vtkQuadExtractor> extractor;
-  extractor->SetInputConnection(solver->GetOutputPort());
+  Stages stages(sphere->GetOutputPort());
+  stages.solver->SetTargetQuadCount(300);
+  vtkQuadExtractor* extractor = stages.extractor;
   extractor->UpdatePiece(0, 2, 1);
   EXPECT_EQ(extractor->GetOutput()->GetNumberOfPolys(), whole);
   extractor->UpdatePiece(1, 2, 1);
   EXPECT_EQ(extractor->GetOutput()->GetNumberOfCells(), 0);
   // upstream of an empty piece only the piece was read, and nothing computed from it
-  EXPECT_EQ(solver->GetOutput()->GetNumberOfCells(), 0);
+  EXPECT_EQ(stages.solver->GetOutput()->GetNumberOfCells(), 0);
   EXPECT_LT(sphere->GetOutput()->GetNumberOfCells(), 40 * 38 * 2 / 2 + 100);
 }
 
@@ -323,14 +327,8 @@ TEST(vtkQuadCoverRemesh, TheBranchPointPortInPieces)
   vtkNew<vtkSphereSource> sphere;
   sphere->SetThetaResolution(40);
   sphere->SetPhiResolution(40);
-  vtkNew<vtkQuadCoverSurfaceRepair> repair;
-  repair->SetInputConnection(sphere->GetOutputPort());
-  vtkNew<vtkCurvatureFrames> curvature;
-  curvature->SetInputConnection(repair->GetOutputPort());
-  vtkNew<vtkFrameSmoother> smoother;
-  smoother->SetInputConnection(curvature->GetOutputPort());
-  vtkNew<vtkMatchingBuilder> matching;
-  matching->SetInputConnection(smoother->GetOutputPort());
+  Stages stages(sphere->GetOutputPort());
+  vtkMatchingBuilder* matching = stages.matching;
   vtkNew<vtkQuadCoverErrorObserver> errors;
   errors->Attach(matching);
   matching->Update(1);
