@@ -172,10 +172,10 @@ std::string Pipeline::CheckQuadCount() const
   }
   char asked[96];
   if (length > 0.0)
-    std::snprintf(asked, sizeof asked, "--target-edge-length %g gives up to %.3g quads, which is",
+    std::snprintf(asked, sizeof asked, "--target-edge-length %g gives about %.3g quads, which is",
       length, quads);
   else
-    std::snprintf(asked, sizeof asked, "--target-quad-count %d gives up to %.3g quads, which is",
+    std::snprintf(asked, sizeof asked, "--target-quad-count %d gives about %.3g quads, which is",
       this->Solver->GetTargetQuadCount(), quads);
   char text[320];
   std::snprintf(text, sizeof text,

@@ -58,12 +58,12 @@ class Limits(unittest.TestCase):
     def test_far_too_many_quads_are_refused_at_once(self):
         # about 60 GB: refused before the curvature stage, not after a minute of allocating
         self.assert_refused(["--target-quad-count", "1e8"], 1,
-                            "--target-quad-count 100000000 gives up to 1e+08 quads, which is too "
+                            "--target-quad-count 100000000 gives about 1e+08 quads, which is too "
                             "many for this surface")
         self.assert_refused(["--target-edge-length", "1e-5"], 1, "quads, which is too many")
         # each component's minimum counts too: 1,950,000 + 100,000 on the one sphere
         self.assert_refused(["--target-quad-count", "1950000", "--minimum-component-quad-count",
-                             "100000"], 1, "gives up to 2.05e+06 quads, which is too many")
+                             "100000"], 1, "gives about 2.05e+06 quads, which is too many")
         # the stages before the solver do not make quads
         code, lines, _ = run([self.sphere, "-o", self.out, "--stage", "smooth",
                               "--target-quad-count", "1e8"])
