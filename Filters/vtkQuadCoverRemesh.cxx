@@ -183,8 +183,14 @@ int vtkQuadCoverRemesh::RequestData(
     return 1;
   }
   // The stages' input stays connected (connecting it would make this filter look modified); a
-  // new input reaches them as a change of its data, a changed property re-runs its stage onward.
-  this->Surface->ShallowCopy(input);
+  // new or changed input reaches them as a change of its data, and only then, so that a changed
+  // property re-runs only its stage onward.
+  if (input != this->LastInput || input->GetMTime() != this->LastInputTime)
+  {
+    this->Surface->ShallowCopy(input);
+    this->LastInput = input;
+    this->LastInputTime = input->GetMTime();
+  }
   this->Errors->Clear();
   // VTK 9.2's executive leaves AbortExecute set after an aborted run: a stage stopped by an
   // earlier abort of this filter runs again

@@ -125,6 +125,9 @@ private:
   vtkNew<vtkQuadCoverErrorObserver> Errors;
   vtkNew<vtkCallbackCommand> Progress;
   bool EmptyPiece = false;
+  /// The input Surface was last copied from (compared, never dereferenced) and its MTime then.
+  const void* LastInput = nullptr;
+  vtkMTimeType LastInputTime = 0;
 };
 
 #endif

@@ -152,11 +152,19 @@ TEST(vtkQuadCoverRemesh, RunsAgainOnlyWhenItOrAStageChanged)
   EXPECT_EQ(remesh->GetOutput()->GetMTime(), first) << "ran again with nothing changed";
   const vtkIdType quads = remesh->GetOutput()->GetNumberOfPolys();
 
-  // a stage's own property: the chain runs again from there
+  // a stage's own property: the chain runs again from there, not from the start
+  const vtkMTimeType smoothed = remesh->GetFrameSmoother()->GetOutput()->GetMTime();
   remesh->GetSolver()->SetTargetQuadCount(1200);
   remesh->Update();
   EXPECT_GT(remesh->GetOutput()->GetMTime(), first);
   EXPECT_GT(remesh->GetOutput()->GetNumberOfPolys(), 2 * quads);
+  EXPECT_EQ(remesh->GetFrameSmoother()->GetOutput()->GetMTime(), smoothed)
+    << "the smoothing ran again for a change of the solver";
+
+  // a changed input runs it all
+  vtkPolyData::SafeDownCast(remesh->GetInputDataObject(0, 0))->Modified();
+  remesh->Update();
+  EXPECT_GT(remesh->GetFrameSmoother()->GetOutput()->GetMTime(), smoothed);
 }
 
 TEST(vtkQuadCoverRemesh, StagesErrorsAndWarningsAreItsOwn)
