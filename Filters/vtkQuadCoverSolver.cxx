@@ -16,6 +16,7 @@
 #include "vtkPolyData.h"
 #include "vtkUnsignedCharArray.h"
 
+#include "FrameField.h"
 #include "Parameterization.h"
 
 #include <algorithm>
@@ -182,15 +183,9 @@ namespace
 void CheckQuadCount(const vtkQuadCoverSurface& in, const quadcover::ParameterizationOptions& o,
   double worldEdgeLength)
 {
-  double area = 0.0;
-  for (Eigen::Index f = 0; f < in.F.rows(); ++f)
-  {
-    const Eigen::Vector3d a = in.V.row(in.F(f, 0)), b = in.V.row(in.F(f, 1)),
-                          c = in.V.row(in.F(f, 2));
-    area += 0.5 * (b - a).cross(c - a).norm();
-  }
-  const double share = o.targetEdgeLength > 0.0 ? area / (o.targetEdgeLength * o.targetEdgeLength)
-                                                : static_cast<double>(o.targetQuadCount);
+  const double share = o.targetEdgeLength > 0.0
+    ? quadcover::surfaceArea(in.V, in.F) / (o.targetEdgeLength * o.targetEdgeLength)
+    : static_cast<double>(o.targetQuadCount);
   // each component's minimum comes on top of its share, at most
   const double quads = share + o.minimumComponentQuadCount * in.topo.numComponents();
   const double most = vtkQuadCoverSolver::MaximumQuadCount(in.F.rows());
