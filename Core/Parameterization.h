@@ -116,6 +116,11 @@ struct ParameterizationOptions
   /// uneven, each where it lowers the variance of the modelled log scale, summed over the grid's
   /// cells, by at least this (conePairsForEvenScale, ConePairOptions::minimumGain); 0: none.
   double conePairGain = 13.0;
+  /// Before the map, triangles with an edge longer than this many grid edges (targetEdgeLength,
+  /// or the edge of targetQuadCount quads) are split, longest edge first (refineLongEdges, which
+  /// vtkQuadCoverSolver runs): a linear map cannot bend inside a triangle larger than a few grid
+  /// cells (a CAD export's slivers across a flat face folded the map around its holes); 0: none.
+  double maximumTriangleEdge = 3.0;
 };
 
 /**

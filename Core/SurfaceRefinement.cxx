@@ -1,10 +1,12 @@
-// SurfaceRefinement.cxx: refineCoarseComponents.
+// SurfaceRefinement.cxx: refineCoarseComponents and refineLongEdges.
 #include "SurfaceRefinement.h"
 
 #include "MeshTopology.h"
 
 #include <algorithm>
+#include <cmath>
 #include <map>
+#include <set>
 #include <utility>
 
 namespace quadcover
@@ -117,6 +119,235 @@ Refinement refineCoarseComponents(Eigen::MatrixX3d& V, Eigen::MatrixX3i& F, int 
   }
   r.parent = std::move(allParent);
   return r;
+}
+
+}
+
+namespace quadcover
+{
+namespace
+{
+/// A triangle being refined: its corners, its parent and, per edge k, the parent's edge it lies
+/// along (-1 inside).
+struct Piece
+{
+  Eigen::Vector3i c;
+  int parent;
+  Eigen::Vector3i along;
+};
+
+/// The rounds of refineLongEdges over the triangles, their points and the shared midpoints.
+class LongEdgeSplitter
+{
+public:
+  LongEdgeSplitter(const Eigen::MatrixX3d& V, double maximumEdgeLength)
+    : V_(V)
+    , maximum2_(maximumEdgeLength * maximumEdgeLength)
+  {}
+
+  /// Splits the marked edges of every piece (one round); false when no edge was too long or
+  /// the round would make more than `most` pieces (then nothing is split).
+  bool round(std::vector<Piece>& pieces, std::vector<std::array<int, 2>>& midpoints, double most)
+  {
+    std::set<std::pair<int, int>> marked;
+    for (const Piece& p : pieces)
+    {
+      for (int k = 0; k < 3; ++k)
+      {
+        if (length2(p.c[k], p.c[(k + 1) % 3]) > maximum2_)
+        {
+          marked.insert(key(p.c[k], p.c[(k + 1) % 3]));
+        }
+      }
+    }
+    if (marked.empty())
+    {
+      return false;
+    }
+    closeUnderLongest(pieces, marked);
+    // each split of an edge adds a piece on each of its sides
+    double after = static_cast<double>(pieces.size());
+    for (const Piece& p : pieces)
+    {
+      for (int k = 0; k < 3; ++k)
+      {
+        after += static_cast<double>(marked.count(key(p.c[k], p.c[(k + 1) % 3])));
+      }
+    }
+    if (after > most)
+    {
+      return false;
+    }
+    std::vector<Piece> next;
+    next.reserve(2 * pieces.size());
+    for (const Piece& p : pieces)
+    {
+      split(p, marked, midpoints, next);
+    }
+    pieces.swap(next);
+    return true;
+  }
+
+  const std::vector<Eigen::Vector3d>& added() const { return added_; }
+
+private:
+  static std::pair<int, int> key(int a, int b) { return { std::min(a, b), std::max(a, b) }; }
+
+  Eigen::Vector3d point(int i) const
+  {
+    return i < V_.rows() ? Eigen::Vector3d(V_.row(i).transpose()) : added_[i - V_.rows()];
+  }
+
+  double length2(int a, int b) const { return (point(a) - point(b)).squaredNorm(); }
+
+  /// The longest edge of p (the lowest k on a tie).
+  int longest(const Piece& p) const
+  {
+    int best = 0;
+    for (int k = 1; k < 3; ++k)
+    {
+      if (length2(p.c[k], p.c[(k + 1) % 3]) > length2(p.c[best], p.c[(best + 1) % 3]))
+      {
+        best = k;
+      }
+    }
+    return best;
+  }
+
+  /// Marks the longest edge of every piece with a marked edge, until none is added: each split
+  /// piece is then bisected at its longest edge first.
+  void closeUnderLongest(const std::vector<Piece>& pieces, std::set<std::pair<int, int>>& marked)
+  {
+    for (bool grew = true; grew;)
+    {
+      grew = false;
+      for (const Piece& p : pieces)
+      {
+        const bool any = marked.count(key(p.c[0], p.c[1])) || marked.count(key(p.c[1], p.c[2])) ||
+          marked.count(key(p.c[2], p.c[0]));
+        const int k = longest(p);
+        if (any && marked.insert(key(p.c[k], p.c[(k + 1) % 3])).second)
+        {
+          grew = true;
+        }
+      }
+    }
+  }
+
+  int midpoint(int a, int b, std::vector<std::array<int, 2>>& midpoints)
+  {
+    const std::pair<int, int> edge = key(a, b);
+    const int next = static_cast<int>(V_.rows() + added_.size());
+    const auto [it, isNew] = middle_.emplace(edge, next);
+    if (isNew)
+    {
+      added_.push_back(0.5 * (point(edge.first) + point(edge.second)));
+      midpoints.push_back({ edge.first, edge.second });
+    }
+    return it->second;
+  }
+
+  /// p bisected at its edge k into two pieces of the same orientation.
+  std::array<Piece, 2> bisect(const Piece& p, int k, std::vector<std::array<int, 2>>& midpoints)
+  {
+    const int a = p.c[k], b = p.c[(k + 1) % 3], o = p.c[(k + 2) % 3];
+    const int m = midpoint(a, b, midpoints);
+    const int ab = p.along[k], bo = p.along[(k + 1) % 3], oa = p.along[(k + 2) % 3];
+    return { Piece{ Eigen::Vector3i(a, m, o), p.parent, Eigen::Vector3i(ab, -1, oa) },
+      Piece{ Eigen::Vector3i(m, b, o), p.parent, Eigen::Vector3i(ab, bo, -1) } };
+  }
+
+  /// p split at its marked edges (the longest first, then the others within its halves).
+  void split(const Piece& p, const std::set<std::pair<int, int>>& marked,
+    std::vector<std::array<int, 2>>& midpoints, std::vector<Piece>& out)
+  {
+    const int k = longest(p);
+    if (!marked.count(key(p.c[k], p.c[(k + 1) % 3])))
+    {
+      out.push_back(p);
+      return;
+    }
+    const std::array<Piece, 2> halves = this->bisect(p, k, midpoints);
+    // the first half holds p's edge k + 2 as its edge 2, the second p's edge k + 1 as its edge 1
+    const int edgeOf[2] = { 2, 1 };
+    for (int h = 0; h < 2; ++h)
+    {
+      const Piece& half = halves[h];
+      const int e = edgeOf[h];
+      if (marked.count(key(half.c[e], half.c[(e + 1) % 3])))
+      {
+        const std::array<Piece, 2> quarters = this->bisect(half, e, midpoints);
+        out.push_back(quarters[0]);
+        out.push_back(quarters[1]);
+      }
+      else
+      {
+        out.push_back(half);
+      }
+    }
+  }
+
+  const Eigen::MatrixX3d& V_;
+  const double maximum2_;
+  std::vector<Eigen::Vector3d> added_;
+  std::map<std::pair<int, int>, int> middle_;
+};
+}
+
+EdgeRefinement refineLongEdges(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F,
+  double maximumEdgeLength, int maximumTriangles)
+{
+  EdgeRefinement r;
+  std::vector<Piece> pieces;
+  pieces.reserve(static_cast<std::size_t>(F.rows()));
+  for (int f = 0; f < static_cast<int>(F.rows()); ++f)
+  {
+    pieces.push_back({ F.row(f).transpose(), f, Eigen::Vector3i(0, 1, 2) });
+  }
+  LongEdgeSplitter splitter(V, maximumEdgeLength);
+  if (maximumEdgeLength > 0 && std::isfinite(maximumEdgeLength))
+  {
+    while (splitter.round(pieces, r.midpoints, maximumTriangles))
+    {}
+  }
+  const Eigen::Index nV = V.rows();
+  r.V.resize(nV + static_cast<Eigen::Index>(splitter.added().size()), 3);
+  r.V.topRows(nV) = V;
+  for (std::size_t i = 0; i < splitter.added().size(); ++i)
+  {
+    r.V.row(nV + static_cast<Eigen::Index>(i)) = splitter.added()[i].transpose();
+  }
+  r.F.resize(static_cast<Eigen::Index>(pieces.size()), 3);
+  r.parentEdge.resize(static_cast<Eigen::Index>(pieces.size()), 3);
+  r.parent.resize(pieces.size());
+  std::vector<char> split(static_cast<std::size_t>(F.rows()), 0);
+  for (std::size_t t = 0; t < pieces.size(); ++t)
+  {
+    r.F.row(static_cast<Eigen::Index>(t)) = pieces[t].c.transpose();
+    r.parentEdge.row(static_cast<Eigen::Index>(t)) = pieces[t].along.transpose();
+    r.parent[t] = pieces[t].parent;
+    if (pieces[t].along != Eigen::Vector3i(0, 1, 2) ||
+      pieces[t].c != F.row(pieces[t].parent).transpose())
+    {
+      split[static_cast<std::size_t>(pieces[t].parent)] = 1;
+    }
+  }
+  r.refinedTriangles = static_cast<int>(std::count(split.begin(), split.end(), 1));
+  return r;
+}
+
+Eigen::MatrixX3i refinedMatching(const EdgeRefinement& r, const Eigen::MatrixX3i& matching)
+{
+  Eigen::MatrixX3i out(r.F.rows(), 3);
+  for (Eigen::Index t = 0; t < r.F.rows(); ++t)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      const int e = r.parentEdge(t, k);
+      out(t, k) = e >= 0 ? matching(r.parent[static_cast<std::size_t>(t)], e) : 0;
+    }
+  }
+  return out;
 }
 
 }

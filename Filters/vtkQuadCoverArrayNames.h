@@ -131,6 +131,9 @@ constexpr const char* SeamEdgeCount = "SeamEdgeCount";
 constexpr const char* AlignedBoundaryEdges = "AlignedBoundaryEdges";
 /// field, 1 x int: sharp edges put on integer grid lines (FeatureLines).
 constexpr const char* AlignedFeatureEdges = "AlignedFeatureEdges";
+/// field, 1 x int: triangles of the solver's input that it split because an edge was longer than
+/// MaximumTriangleEdge grid edges (its output is then the refined surface).
+constexpr const char* GridRefinedTriangles = "GridRefinedTriangles";
 /// field, 1 x int: pairs of opposite singularities closer than MinimumSingularitySeparation grid
 /// edges that the solver cancelled (their branch points are gone from its map).
 constexpr const char* CancelledSingularityPairs = "CancelledSingularityPairs";

@@ -7,11 +7,13 @@
 
 #include "vtkAlgorithm.h"
 #include "vtkCellArray.h"
+#include "vtkCellData.h"
 #include "vtkDataArray.h"
 #include "vtkDoubleArray.h"
 #include "vtkFieldData.h"
 #include "vtkIdList.h"
 #include "vtkNew.h"
+#include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkSmartPointer.h"
@@ -22,8 +24,10 @@
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 
+#include <array>
 #include <cmath>
 #include <initializer_list>
+#include <map>
 #include <memory>
 #include <stdexcept>
 #include <string>
@@ -85,6 +89,58 @@ inline vtkSmartPointer<vtkPolyData> ToPolyData(const Eigen::MatrixX3d& V, const 
   pd->SetPoints(points);
   pd->SetPolys(polys);
   return pd;
+}
+
+/**
+ * The attributes of `given` carried onto `refined`, a refinement of it by midpoints
+ * (quadcover::refineCoarseComponents, refineLongEdges): point data copied for given's points
+ * (refined's first ones) and interpolated at each added point from its weights on them (a
+ * midpoint of midpoints weighs the original points), cell data copied from each triangle's
+ * parent.
+ */
+inline void CarryRefinedAttributes(vtkPolyData* given,
+  const std::vector<std::array<int, 2>>& midpoints, const std::vector<int>& parent,
+  vtkPolyData* refined)
+{
+  const vtkIdType nv = given->GetNumberOfPoints();
+  std::vector<std::map<vtkIdType, double>> weights(midpoints.size());
+  auto weightsOf = [&](int p) {
+    return p < nv ? std::map<vtkIdType, double>{ { p, 1.0 } } : weights[p - nv];
+  };
+  vtkNew<vtkPointData> pointData;
+  pointData->InterpolateAllocate(given->GetPointData(), nv + vtkIdType(midpoints.size()));
+  for (vtkIdType p = 0; p < nv; ++p)
+  {
+    pointData->CopyData(given->GetPointData(), p, p);
+  }
+  vtkNew<vtkIdList> ids;
+  std::vector<double> w;
+  for (std::size_t i = 0; i < midpoints.size(); ++i)
+  {
+    for (const int end : midpoints[i])
+    {
+      for (const auto& [p, x] : weightsOf(end))
+      {
+        weights[i][p] += 0.5 * x;
+      }
+    }
+    ids->Reset();
+    w.clear();
+    for (const auto& [p, x] : weights[i])
+    {
+      ids->InsertNextId(p);
+      w.push_back(x);
+    }
+    pointData->InterpolatePoint(given->GetPointData(), nv + vtkIdType(i), ids, w.data());
+  }
+  vtkNew<vtkCellData> cellData;
+  cellData->CopyAllocate(given->GetCellData(), vtkIdType(parent.size()));
+  for (std::size_t t = 0; t < parent.size(); ++t)
+  {
+    cellData->CopyData(given->GetCellData(), parent[t], vtkIdType(t));
+  }
+  refined->GetPointData()->ShallowCopy(pointData);
+  refined->GetCellData()->ShallowCopy(cellData);
 }
 
 /// A new array of type ArrayT (vtkDoubleArray unless given) named `name` with the rows of M as

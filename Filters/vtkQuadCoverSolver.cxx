@@ -18,6 +18,7 @@
 
 #include "FrameField.h"
 #include "Parameterization.h"
+#include "SurfaceRefinement.h"
 
 #include <algorithm>
 #include <cmath>
@@ -165,6 +166,7 @@ vtkQuadCoverSolver::vtkQuadCoverSolver()
   this->MaximumRegrids = defaults.maximumRegrids;
   this->MaximumRegridQuadCount = defaults.maximumRegridQuadCount;
   this->MinimumSingularitySeparation = defaults.minimumSingularitySeparation;
+  this->MaximumTriangleEdge = defaults.maximumTriangleEdge;
   this->ConePairGain = defaults.conePairGain;
   this->NumberOfThreads = defaults.numberOfThreads;
   this->SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_CELLS, names::FrameU);
@@ -205,6 +207,62 @@ void CheckQuadCount(const vtkQuadCoverSurface& in, const quadcover::Parameteriza
     quads, std::ceil(quads * 0.6e3 / 1e9), most, static_cast<long long>(in.F.rows()));
   throw std::invalid_argument(asked + text);
 }
+
+/**
+ * `in` with the edges longer than o.maximumTriangleEdge grid edges split (refineLongEdges; the
+ * grid edge of o's target on the whole surface), at most F + 16 quads triangles (500,000): the
+ * new points after the input's with their point data interpolated, the cell data copied from the
+ * triangle split, `U` carried and the `matching` array (and the cell array it came from)
+ * rewritten. Returns the input triangles split (0: all untouched).
+ */
+int RefineLongEdges(vtkQuadCoverSurface& in, const quadcover::ParameterizationOptions& o,
+  vtkDataArray* matchingArray, Eigen::MatrixX3d& U, Eigen::MatrixX3i& matching)
+{
+  const double area = quadcover::surfaceArea(in.V, in.F);
+  const double h =
+    o.targetEdgeLength > 0.0 ? o.targetEdgeLength : std::sqrt(area / o.targetQuadCount);
+  if (!(o.maximumTriangleEdge > 0.0) || !(h > 0.0))
+  {
+    return 0;
+  }
+  const double most = std::min(5e5, static_cast<double>(in.F.rows()) + 16.0 * area / (h * h));
+  const quadcover::EdgeRefinement r = quadcover::refineLongEdges(
+    in.V, in.F, o.maximumTriangleEdge * h, static_cast<int>(std::max(0.0, most)));
+  if (r.refinedTriangles == 0)
+  {
+    return 0;
+  }
+  vtkSmartPointer<vtkPolyData> made = vtkQuadCoverEigen::ToPolyData(in.InWorldUnits(r.V), r.F);
+  vtkQuadCoverEigen::CarryRefinedAttributes(in.polyData, r.midpoints, r.parent, made);
+  made->GetFieldData()->ShallowCopy(in.polyData->GetFieldData());
+  Eigen::MatrixX3d carried(r.F.rows(), 3);
+  for (Eigen::Index t = 0; t < r.F.rows(); ++t)
+  {
+    carried.row(t) = U.row(r.parent[static_cast<std::size_t>(t)]);
+  }
+  U = carried;
+  matching = quadcover::refinedMatching(r, matching);
+  vtkSmartPointer<vtkDataArray> rewritten = vtk::TakeSmartPointer(matchingArray->NewInstance());
+  rewritten->SetName(matchingArray->GetName());
+  rewritten->SetNumberOfComponents(3);
+  rewritten->SetNumberOfTuples(r.F.rows());
+  for (Eigen::Index t = 0; t < r.F.rows(); ++t)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      rewritten->SetComponent(t, k, matching(t, k));
+    }
+  }
+  if (matchingArray->GetName())
+  {
+    made->GetCellData()->AddArray(rewritten);
+  }
+  in.polyData = made;
+  in.V = r.V;
+  in.F = r.F;
+  in.topo = quadcover::buildTopology(in.F, static_cast<int>(in.V.rows()));
+  return r.refinedTriangles;
+}
 }
 
 //------------------------------------------------------------------------------
@@ -214,21 +272,20 @@ void vtkQuadCoverSolver::Execute(vtkQuadCoverSurface& in, vtkInformationVector* 
     "run the earlier stages first, or name your own with SetInputArrayToProcess(0, ...)");
   vtkDataArray* m = this->RequireCellArray(1, in.polyData, 3, names::Matching,
     "run vtkMatchingBuilder first, or name your own with SetInputArrayToProcess(1, ...)");
-  const Eigen::MatrixX3d U = vtkQuadCoverEigen::FromArray3(u);
+  Eigen::MatrixX3d U = vtkQuadCoverEigen::FromArray3(u);
   if (!U.allFinite())
   {
     throw std::invalid_argument(std::string(names::FrameU) + " has non-finite values");
   }
-  const Eigen::MatrixX3i matching = ReadMatching(m);
+  Eigen::MatrixX3i matching = ReadMatching(m);
   this->UpdateProgress(0.1);
 
-  const quadcover::FrameGeometry geometry = quadcover::computeFrameGeometry(in.V, in.F, in.topo);
   vtkQuadCoverEigen::RequireNumbers({ { "TargetEdgeLength", this->TargetEdgeLength },
     { "BoundaryTolerance", this->BoundaryTolerance }, { "FeatureAngle", this->FeatureAngle },
     { "CurvatureEdgeLength", this->CurvatureEdgeLength },
     { "MaximumRegridQuadCount", this->MaximumRegridQuadCount },
     { "MinimumSingularitySeparation", this->MinimumSingularitySeparation },
-    { "ConePairGain", this->ConePairGain } });
+    { "MaximumTriangleEdge", this->MaximumTriangleEdge }, { "ConePairGain", this->ConePairGain } });
   quadcover::ParameterizationOptions options;
   options.targetEdgeLength = in.InCoreUnits(this->TargetEdgeLength); // for the scaled surface
   options.targetQuadCount = this->TargetQuadCount;
@@ -246,9 +303,12 @@ void vtkQuadCoverSolver::Execute(vtkQuadCoverSurface& in, vtkInformationVector* 
   options.maximumRegrids = this->MaximumRegrids;
   options.maximumRegridQuadCount = this->MaximumRegridQuadCount;
   options.minimumSingularitySeparation = this->MinimumSingularitySeparation;
+  options.maximumTriangleEdge = this->MaximumTriangleEdge;
   options.conePairGain = this->ConePairGain;
   options.numberOfThreads = this->NumberOfThreads;
   CheckQuadCount(in, options, this->TargetEdgeLength);
+  const int refined = RefineLongEdges(in, options, m, U, matching);
+  const quadcover::FrameGeometry geometry = quadcover::computeFrameGeometry(in.V, in.F, in.topo);
   const quadcover::Parameterization map = quadcover::computeParameterization(in.V, in.F, in.topo,
     geometry, U, matching, options, vtkQuadCoverEigen::CoreProgress(this, 0.15, 0.95));
   if (map.wrongWindings > 0)
@@ -280,6 +340,8 @@ void vtkQuadCoverSolver::Execute(vtkQuadCoverSurface& in, vtkInformationVector* 
   output->GetCellData()->AddArray(
     vtkQuadCoverEigen::ToArray<vtkUnsignedCharArray>(map.seam, names::Seam));
   AddFigures(output->GetFieldData(), map, in);
+  vtkQuadCoverEigen::AddField<vtkIntArray>(
+    output->GetFieldData(), names::GridRefinedTriangles, { double(refined) });
   this->SolveSeconds = map.solveSeconds;
 }
 
@@ -326,6 +388,7 @@ void vtkQuadCoverSolver::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "CurvatureEdgeLength: " << this->CurvatureEdgeLength << "\n";
   os << indent << "MaximumRegrids: " << this->MaximumRegrids << "\n";
   os << indent << "MaximumRegridQuadCount: " << this->MaximumRegridQuadCount << "\n";
+  os << indent << "MaximumTriangleEdge: " << this->MaximumTriangleEdge << "\n";
   os << indent << "MinimumSingularitySeparation: " << this->MinimumSingularitySeparation
      << "\n";
   os << indent << "ConePairGain: " << this->ConePairGain << "\n";

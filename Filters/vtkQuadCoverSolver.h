@@ -204,6 +204,17 @@ public:
   ///@}
 
   ///@{
+  /** Before the map, triangles with an edge longer than this many grid edges are split, the
+   * longest edge first, in [0, 1000] (default 3; 0: none are): a linear map cannot bend inside a
+   * triangle larger than a few grid cells, and folds there (slivers of a CAD export, a coarse
+   * scan). The output is then the refined surface (the input's points first, the midpoints
+   * after, point data interpolated, cell data copied from the triangle split, Matching carried),
+   * counted in GridRefinedTriangles. */
+  vtkSetClampMacro(MaximumTriangleEdge, double, 0.0, 1000.0);
+  vtkGetMacro(MaximumTriangleEdge, double);
+  ///@}
+
+  ///@{
   /** Pairs of opposite quarter cones (+1/4 and -1/4) are added where the field's singularities
    * leave the quads uneven in size, each where it lowers the variance of the log scale of the
    * flat metric with cones at the singularities (the quads' log size follows about half of
@@ -265,6 +276,7 @@ protected:
   int MaximumRegrids;
   double MaximumRegridQuadCount;
   double MinimumSingularitySeparation;
+  double MaximumTriangleEdge;
   double ConePairGain;
   int NumberOfThreads;
   bool SplitSeams = false;

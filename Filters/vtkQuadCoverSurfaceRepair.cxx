@@ -175,7 +175,6 @@ void RefineCoarseComponents(vtkPolyData* surface, int minimum, Counts& counts)
 {
   Eigen::MatrixX3d V = vtkQuadCoverEigen::Points(surface);
   Eigen::MatrixX3i F = vtkQuadCoverEigen::Triangles(surface);
-  const vtkIdType nv = surface->GetNumberOfPoints();
   const quadcover::Refinement r = quadcover::refineCoarseComponents(V, F, minimum);
   counts.refinedTriangles = r.refinedTriangles;
   if (r.refinedTriangles == 0)
@@ -183,48 +182,11 @@ void RefineCoarseComponents(vtkPolyData* surface, int minimum, Counts& counts)
     return;
   }
   vtkSmartPointer<vtkPolyData> made = vtkQuadCoverEigen::ToPolyData(V, F);
-  // each midpoint's weights over the input's points (at most a triangle's three corners)
-  std::vector<std::map<vtkIdType, double>> weights(r.midpoints.size());
-  auto weightsOf = [&](int p) {
-    return p < nv ? std::map<vtkIdType, double>{ { p, 1.0 } } : weights[p - nv];
-  };
-  vtkNew<vtkPointData> pointData;
-  pointData->InterpolateAllocate(surface->GetPointData(), V.rows());
-  for (vtkIdType p = 0; p < nv; ++p)
-  {
-    pointData->CopyData(surface->GetPointData(), p, p);
-  }
-  vtkNew<vtkIdList> ids;
-  std::vector<double> w;
-  for (std::size_t i = 0; i < r.midpoints.size(); ++i)
-  {
-    for (const int end : r.midpoints[i])
-    {
-      for (const auto& [p, x] : weightsOf(end))
-      {
-        weights[i][p] += 0.5 * x;
-      }
-    }
-    ids->Reset();
-    w.clear();
-    for (const auto& [p, x] : weights[i])
-    {
-      ids->InsertNextId(p);
-      w.push_back(x);
-    }
-    pointData->InterpolatePoint(
-      surface->GetPointData(), nv + static_cast<vtkIdType>(i), ids, w.data());
-  }
-  vtkNew<vtkCellData> cellData;
-  cellData->CopyAllocate(surface->GetCellData(), F.rows());
-  for (vtkIdType t = 0; t < F.rows(); ++t)
-  {
-    cellData->CopyData(surface->GetCellData(), r.parent[t], t);
-  }
+  vtkQuadCoverEigen::CarryRefinedAttributes(surface, r.midpoints, r.parent, made);
   surface->SetPoints(made->GetPoints());
   surface->SetPolys(made->GetPolys());
-  surface->GetPointData()->ShallowCopy(pointData);
-  surface->GetCellData()->ShallowCopy(cellData);
+  surface->GetPointData()->ShallowCopy(made->GetPointData());
+  surface->GetCellData()->ShallowCopy(made->GetCellData());
 }
 }
 

@@ -357,6 +357,8 @@ std::vector<Option> StageOptions(Pipeline& p)
     QC_NUMBER("param", solver, MinimumSingularitySeparation,
       "opposite singularities closer than this many grid edges cancel, like ones at a third of it "
       "move apart, 0: keep all"),
+    QC_NUMBER("param", solver, MaximumTriangleEdge,
+      "triangles with a longer edge (in grid edges) are split before the map, 0: none"),
     QC_NUMBER("param", solver, ConePairGain,
       "a cone pair is added where it lowers the modelled log scale's variance, summed over the "
       "quads, by this, 0: none"),

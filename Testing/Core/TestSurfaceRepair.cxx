@@ -1,4 +1,5 @@
 // Tests of makeManifold: non-manifold edges cut apart into sheets, fans split, orientation.
+#include "Matchings.h"
 #include "MeshTopology.h"
 #include "SurfaceRefinement.h"
 #include "SurfaceRepair.h"
@@ -373,5 +374,167 @@ TEST(RefineCoarseComponents, LeavesASurfaceWithEnoughTrianglesAsItIs)
     EXPECT_TRUE(r.midpoints.empty());
     EXPECT_EQ(s.V, before.V);
     EXPECT_EQ(s.F, before.F);
+  }
+}
+
+namespace
+{
+/// A flat regular n-gon of radius 1 as a fan from its first corner: n - 2 triangles, most of them
+/// long slivers (a CAD export's flat face).
+Surface slivers(int n)
+{
+  Surface s;
+  s.V.resize(n, 3);
+  for (int i = 0; i < n; ++i)
+  {
+    s.V.row(i) << std::cos(2 * M_PI * i / n), std::sin(2 * M_PI * i / n), 0.0;
+  }
+  s.F.resize(n - 2, 3);
+  for (int i = 0; i < n - 2; ++i)
+  {
+    s.F.row(i) << 0, i + 1, i + 2;
+  }
+  return s;
+}
+
+double smallestAngle(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F)
+{
+  double smallest = M_PI;
+  for (Eigen::Index f = 0; f < F.rows(); ++f)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      const Eigen::Vector3d a = V.row(F(f, (k + 1) % 3)) - V.row(F(f, k));
+      const Eigen::Vector3d b = V.row(F(f, (k + 2) % 3)) - V.row(F(f, k));
+      smallest = std::min(smallest, std::atan2(a.cross(b).norm(), a.dot(b)));
+    }
+  }
+  return smallest;
+}
+
+double longestEdge(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F)
+{
+  double longest = 0.0;
+  for (Eigen::Index f = 0; f < F.rows(); ++f)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      longest = std::max(longest, (V.row(F(f, k)) - V.row(F(f, (k + 1) % 3))).norm());
+    }
+  }
+  return longest;
+}
+}
+
+TEST(RefineLongEdges, SplitsSliversIntoShorterBetterShapedTrianglesKeepingTheSurface)
+{
+  Surface s = slivers(40);
+  appendBox(s, 3.0, 0.0, 0.0);
+  const MeshTopology topoBefore = buildTopology(s.F, static_cast<int>(s.V.rows()));
+  const double before = smallestAngle(s.V, s.F);
+  const EdgeRefinement r = refineLongEdges(s.V, s.F, 0.3, 1000000);
+  EXPECT_EQ(r.refinedTriangles, static_cast<int>(s.F.rows())) << "every triangle has a long edge";
+  EXPECT_LE(longestEdge(r.V, r.F), 0.3);
+  // longest-edge bisection: angles stay bounded (Rivara: at least half the smallest given one)
+  EXPECT_GE(smallestAngle(r.V, r.F), 0.5 * before - 1e-12);
+  EXPECT_EQ(r.V.topRows(s.V.rows()), s.V) << "the points stay where they were";
+  ASSERT_EQ(static_cast<Eigen::Index>(r.midpoints.size()), r.V.rows() - s.V.rows());
+  for (std::size_t i = 0; i < r.midpoints.size(); ++i)
+  {
+    const Eigen::Index p = s.V.rows() + static_cast<Eigen::Index>(i);
+    EXPECT_EQ(r.V.row(p), 0.5 * (r.V.row(r.midpoints[i][0]) + r.V.row(r.midpoints[i][1])));
+  }
+  // each input triangle's parts cover it exactly, facing the same way, and each part's edge
+  // said to lie along its parent's edge e does
+  ASSERT_EQ(static_cast<Eigen::Index>(r.parent.size()), r.F.rows());
+  std::vector<Eigen::Vector3d> area(s.F.rows(), Eigen::Vector3d::Zero());
+  for (Eigen::Index t = 0; t < r.F.rows(); ++t)
+  {
+    const int p = r.parent[t];
+    const Eigen::Vector3d a = r.V.row(r.F(t, 0)), b = r.V.row(r.F(t, 1)), c = r.V.row(r.F(t, 2));
+    area[p] += 0.5 * (b - a).cross(c - a);
+    for (int k = 0; k < 3; ++k)
+    {
+      const int e = r.parentEdge(t, k);
+      if (e < 0)
+        continue;
+      const Eigen::Vector3d p0 = s.V.row(s.F(p, e)), p1 = s.V.row(s.F(p, (e + 1) % 3));
+      const Eigen::Vector3d q0 = r.V.row(r.F(t, k)), q1 = r.V.row(r.F(t, (k + 1) % 3));
+      EXPECT_LT((q0 - p0).cross(p1 - p0).norm(), 1e-12) << "part " << t << " edge " << k;
+      EXPECT_LT((q1 - p0).cross(p1 - p0).norm(), 1e-12) << "part " << t << " edge " << k;
+      EXPECT_GT((q1 - q0).dot(p1 - p0), 0.0) << "the same direction";
+    }
+  }
+  for (Eigen::Index t = 0; t < s.F.rows(); ++t)
+  {
+    const Eigen::Vector3d a = s.V.row(s.F(t, 0)), b = s.V.row(s.F(t, 1)), c = s.V.row(s.F(t, 2));
+    EXPECT_LT((area[t] - 0.5 * (b - a).cross(c - a)).norm(), 1e-12) << "triangle " << t;
+  }
+  const MeshTopology topo = buildTopology(r.F, static_cast<int>(r.V.rows()));
+  EXPECT_TRUE(topo.isManifold()) << "conforming: no T-junctions";
+  EXPECT_TRUE(topo.isOriented());
+  EXPECT_EQ(topo.numComponents(), 2);
+  EXPECT_EQ(topo.eulerCharacteristic(), topoBefore.eulerCharacteristic());
+  EXPECT_EQ(topo.boundaryLoops.size(), topoBefore.boundaryLoops.size());
+}
+
+TEST(RefineLongEdges, LeavesShortEdgesAndStopsBeforeTheTriangleLimit)
+{
+  const Surface s = testSurface("sphere");
+  const double longest = longestEdge(s.V, s.F);
+  for (const double most : { 0.0, -1.0, longest, 2 * longest })
+  {
+    const EdgeRefinement r = refineLongEdges(s.V, s.F, most, 1000000);
+    EXPECT_EQ(r.refinedTriangles, 0) << most;
+    EXPECT_EQ(r.V, s.V);
+    EXPECT_EQ(r.F, s.F);
+    for (Eigen::Index t = 0; t < r.parentEdge.rows(); ++t)
+    {
+      ASSERT_EQ(r.parentEdge.row(t), Eigen::RowVector3i(0, 1, 2));
+    }
+  }
+  const int limit = 3 * static_cast<int>(s.F.rows());
+  const EdgeRefinement r = refineLongEdges(s.V, s.F, 1e-6 * longest, limit);
+  EXPECT_LE(r.F.rows(), limit) << "a round that could pass the limit is not started";
+  EXPECT_EQ(r.F.rows(), s.F.rows()) << "every round may quadruple: none fits under 3 times";
+}
+
+TEST(RefineLongEdges, CarriedMatchingsKeepEverySingularityAndAddNone)
+{
+  const Surface s = testSurface("sphere");
+  const MeshTopology topo = buildTopology(s.F, static_cast<int>(s.V.rows()));
+  const FrameGeometry geometry = computeFrameGeometry(s.V, s.F, topo);
+  // a field with singularities: the direction of z projected onto each triangle (and x where
+  // that vanishes)
+  Eigen::MatrixX3d frameU(s.F.rows(), 3);
+  for (Eigen::Index f = 0; f < s.F.rows(); ++f)
+  {
+    const Eigen::Vector3d n = geometry.bases.normal.row(f);
+    Eigen::Vector3d d = Eigen::Vector3d::UnitZ() - n.dot(Eigen::Vector3d::UnitZ()) * n;
+    if (d.norm() < 1e-3)
+      d = Eigen::Vector3d::UnitX() - n.dot(Eigen::Vector3d::UnitX()) * n;
+    frameU.row(f) = d.normalized();
+  }
+  const FrameTopology given = computeMatchings(s.F, topo, geometry, frameU);
+  ASSERT_GT(given.singularities, 0);
+  const EdgeRefinement r = refineLongEdges(s.V, s.F, 0.5 * longestEdge(s.V, s.F), 1000000);
+  ASSERT_GT(r.refinedTriangles, 0);
+  Eigen::MatrixX3d carried(r.F.rows(), 3);
+  for (Eigen::Index t = 0; t < r.F.rows(); ++t)
+  {
+    carried.row(t) = frameU.row(r.parent[t]);
+  }
+  const MeshTopology refinedTopo = buildTopology(r.F, static_cast<int>(r.V.rows()));
+  const Eigen::MatrixX3i matching = refinedMatching(r, given.matching);
+  EXPECT_EQ(checkMatching(refinedTopo, matching), "");
+  const FrameTopology refined = evaluateMatchings(
+    r.F, refinedTopo, computeFrameGeometry(r.V, r.F, refinedTopo), carried, matching);
+  EXPECT_EQ(refined.singularities, given.singularities);
+  for (Eigen::Index v = 0; v < r.V.rows(); ++v)
+  {
+    const int shift = v < s.V.rows() ? given.layerShift[v] : 0;
+    EXPECT_EQ(refined.layerShift[v], shift) << "point " << v;
+    const double index = v < s.V.rows() ? given.index[v] : 0.0;
+    EXPECT_NEAR(refined.index[v], index, 1e-9) << "point " << v;
   }
 }

@@ -6,6 +6,7 @@
 #include "vtkCellData.h"
 #include "vtkCurvatureFrames.h"
 #include "vtkDataArray.h"
+#include "vtkDoubleArray.h"
 #include "vtkFieldData.h"
 #include "vtkFrameSmoother.h"
 #include "vtkIntArray.h"
@@ -19,6 +20,7 @@
 #include "vtkQuadCoverSolver.h"
 
 #include "GridMapChecks.h"
+#include "Matchings.h"
 #include "MeshTopology.h"
 #include "Surfaces.h"
 
@@ -229,6 +231,100 @@ TEST(vtkQuadCoverSolver, SplitSeamsCutsTheSurfaceOpenWithTextureCoordinates)
   EXPECT_EQ(checks::seamViolations(Fs, topo, uv, 0.0), 0);
   EXPECT_EQ(topo.numComponents(), 1);
   EXPECT_EQ(topo.components[0].eulerCharacteristic, 1) << "a disk";
+}
+
+/// A closed coin: a regular n-gon of radius 1 and height h, each cap a fan of slivers from its
+/// first corner, the side split into n quads of two triangles each.
+Surface fanCoin(int n, double h)
+{
+  Surface s;
+  s.V.resize(2 * n, 3);
+  for (int i = 0; i < n; ++i)
+  {
+    const double a = 2 * M_PI * i / n;
+    s.V.row(i) << std::cos(a), std::sin(a), 0.0;
+    s.V.row(n + i) << std::cos(a), std::sin(a), h;
+  }
+  std::vector<Eigen::RowVector3i> faces;
+  for (int i = 1; i + 1 < n; ++i)
+  {
+    faces.emplace_back(0, i + 1, i);         // bottom, facing down
+    faces.emplace_back(n, n + i, n + i + 1); // top, facing up
+  }
+  for (int i = 0; i < n; ++i)
+  {
+    const int j = (i + 1) % n;
+    faces.emplace_back(i, j, n + j);
+    faces.emplace_back(i, n + j, n + i);
+  }
+  s.F.resize(static_cast<Eigen::Index>(faces.size()), 3);
+  for (std::size_t f = 0; f < faces.size(); ++f)
+  {
+    s.F.row(static_cast<Eigen::Index>(f)) = faces[f];
+  }
+  return s;
+}
+
+TEST(vtkQuadCoverSolver, LongEdgesAreSplitBeforeTheMapCarryingTheArrays)
+{
+  const Surface coin = fanCoin(48, 0.2);
+  vtkSmartPointer<vtkPolyData> surface = vtkQuadCoverEigen::ToPolyData(coin.V, coin.F);
+  vtkNew<vtkDoubleArray> height; // a linear function: interpolated exactly at midpoints
+  height->SetName("Height");
+  for (vtkIdType p = 0; p < surface->GetNumberOfPoints(); ++p)
+  {
+    height->InsertNextValue(coin.V(p, 2));
+  }
+  surface->GetPointData()->AddArray(height);
+  Chain chain(surface);
+  chain.solver->SetTargetQuadCount(2000);
+  chain.solver->SetMaximumTriangleEdge(0.0);
+  const vtkIdType cells = chain.Run()->GetNumberOfPolys();
+  ASSERT_EQ(chain.errors->GetError(), "");
+  EXPECT_EQ(cells, coin.F.rows()) << "0: the surface as it came";
+  EXPECT_EQ(Field(chain.solver->GetOutput(), names::GridRefinedTriangles), 0.0);
+
+  chain.solver->SetMaximumTriangleEdge(3.0);
+  vtkPolyData* out = chain.Run();
+  ASSERT_EQ(chain.errors->GetError(), "");
+  EXPECT_EQ(Field(out, names::GridRefinedTriangles), static_cast<double>(coin.F.rows()))
+    << "every triangle has an edge longer than 3 grid edges";
+  ASSERT_GT(out->GetNumberOfPolys(), coin.F.rows());
+  const Eigen::MatrixX3d V = vtkQuadCoverEigen::Points(out);
+  const double h = std::sqrt(surfaceArea(coin.V, coin.F) / 2000.0);
+  const Eigen::MatrixX3i F = vtkQuadCoverEigen::Triangles(out);
+  for (Eigen::Index c = 0; c < F.rows(); ++c)
+  {
+    const Eigen::RowVector3i t = F.row(c);
+    for (int k = 0; k < 3; ++k)
+    {
+      ASSERT_LE((V.row(t[k]) - V.row(t[(k + 1) % 3])).norm(), 3.0 * h) << "triangle " << c;
+    }
+  }
+  EXPECT_EQ(V.topRows(coin.V.rows()), coin.V) << "the input's points first, as they were";
+  vtkDataArray* carried = out->GetPointData()->GetArray("Height");
+  ASSERT_NE(carried, nullptr);
+  for (vtkIdType p = 0; p < out->GetNumberOfPoints(); ++p)
+  {
+    ASSERT_NEAR(carried->GetTuple1(p), V(p, 2), 1e-12) << "point " << p;
+  }
+  const MeshTopology topo = buildTopology(F, static_cast<int>(V.rows()));
+  EXPECT_TRUE(topo.isManifold());
+  EXPECT_EQ(topo.eulerCharacteristic(), 2);
+  vtkDataArray* m = out->GetCellData()->GetArray(names::Matching);
+  ASSERT_NE(m, nullptr);
+  ASSERT_EQ(m->GetNumberOfTuples(), out->GetNumberOfPolys()) << "Matching rewritten";
+  Eigen::MatrixX3i matching(F.rows(), 3);
+  for (Eigen::Index f = 0; f < F.rows(); ++f)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      matching(f, k) = static_cast<int>(m->GetComponent(f, k));
+    }
+  }
+  EXPECT_EQ(checkMatching(topo, matching), "");
+  ASSERT_EQ(out->GetCellData()->GetArray(names::FrameU)->GetNumberOfTuples(), F.rows());
+  EXPECT_EQ(checks::seamViolations(F, topo, CornerUV(out), 1e-6), 0);
 }
 
 // ---- the whole chain on every surface ----

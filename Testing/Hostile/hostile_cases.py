@@ -196,6 +196,29 @@ def sliver_strip(folder):
     return _write(folder, "slivers.obj", _obj_text((points, faces)))
 
 
+def sliver_washer(folder):
+    # a flat washer (radii 0.3 and 1, thickness 0.1) as a CAD export meshes it: each face one
+    # band of triangles from rim to rim, 13 grid edges long at 3,000 quads (refined before the map)
+    n = 48
+    points, faces = [], []
+    for z in (0.0, 0.1):
+        for r in (1.0, 0.3):
+            points += [(r * math.cos(2 * math.pi * i / n), r * math.sin(2 * math.pi * i / n), z)
+                       for i in range(n)]
+    ring = [k * n for k in range(4)]  # bottom outer, bottom inner, top outer, top inner
+
+    def band(a, b, flip):
+        for i in range(n):
+            j = (i + 1) % n
+            for t in ((a + i, a + j, b + j), (a + i, b + j, b + i)):
+                faces.append(t[::-1] if flip else t)
+    band(ring[0], ring[1], True)   # bottom, facing down
+    band(ring[2], ring[3], False)  # top, facing up
+    band(ring[0], ring[2], False)  # outer wall, facing out
+    band(ring[1], ring[3], True)   # inner wall, facing the hole
+    return _write(folder, "washer.obj", _obj_text((points, faces)))
+
+
 def duplicate_triangles(folder):
     points, faces = SPHERE
     return _write(folder, "duplicates.obj", _obj_text((points, faces + faces)))
@@ -351,6 +374,7 @@ CASES = {
     "lines_only": (lines_only, Refused("no polygons")),
     "polygon_100": (polygon_100, Quads(1, 1)),
     "sliver_strip": (sliver_strip, Quads(1, 1)),
+    "sliver_washer": (sliver_washer, Quads(1, 0)),
     "duplicate_triangles": (duplicate_triangles, Quads(1, 2)),
     "degenerate_next_to_sphere": (degenerate_next_to_sphere, Quads(1, 2)),
     "stray_collinear_triangle": (stray_collinear_triangle, Quads(1, 2)),
