@@ -121,10 +121,6 @@ Refinement refineCoarseComponents(Eigen::MatrixX3d& V, Eigen::MatrixX3i& F, int 
   return r;
 }
 
-}
-
-namespace quadcover
-{
 namespace
 {
 /// A triangle being refined: its corners, its parent and, per edge k, the parent's edge it lies
@@ -141,7 +137,7 @@ class LongEdgeSplitter
 {
 public:
   LongEdgeSplitter(const Eigen::MatrixX3d& V, double maximumEdgeLength)
-    : V_(V)
+    : points_{ V, {} }
     , maximum2_(maximumEdgeLength * maximumEdgeLength)
   {}
 
@@ -188,17 +184,12 @@ public:
     return true;
   }
 
-  const std::vector<Eigen::Vector3d>& added() const { return added_; }
+  const std::vector<Eigen::Vector3d>& added() const { return points_.added; }
 
 private:
   static std::pair<int, int> key(int a, int b) { return { std::min(a, b), std::max(a, b) }; }
 
-  Eigen::Vector3d point(int i) const
-  {
-    return i < V_.rows() ? Eigen::Vector3d(V_.row(i).transpose()) : added_[i - V_.rows()];
-  }
-
-  double length2(int a, int b) const { return (point(a) - point(b)).squaredNorm(); }
+  double length2(int a, int b) const { return (points_[a] - points_[b]).squaredNorm(); }
 
   /// The longest edge of p (the lowest k on a tie).
   int longest(const Piece& p) const
@@ -237,11 +228,11 @@ private:
   int midpoint(int a, int b, std::vector<std::array<int, 2>>& midpoints)
   {
     const std::pair<int, int> edge = key(a, b);
-    const int next = static_cast<int>(V_.rows() + added_.size());
+    const int next = static_cast<int>(points_.V.rows() + points_.added.size());
     const auto [it, isNew] = middle_.emplace(edge, next);
     if (isNew)
     {
-      added_.push_back(0.5 * (point(edge.first) + point(edge.second)));
+      points_.added.push_back(0.5 * (points_[edge.first] + points_[edge.second]));
       midpoints.push_back({ edge.first, edge.second });
     }
     return it->second;
@@ -287,9 +278,8 @@ private:
     }
   }
 
-  const Eigen::MatrixX3d& V_;
+  Points points_;
   const double maximum2_;
-  std::vector<Eigen::Vector3d> added_;
   std::map<std::pair<int, int>, int> middle_;
 };
 }
@@ -320,19 +310,16 @@ EdgeRefinement refineLongEdges(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i
   r.F.resize(static_cast<Eigen::Index>(pieces.size()), 3);
   r.parentEdge.resize(static_cast<Eigen::Index>(pieces.size()), 3);
   r.parent.resize(pieces.size());
-  std::vector<char> split(static_cast<std::size_t>(F.rows()), 0);
+  std::vector<int> parts(static_cast<std::size_t>(F.rows()), 0);
   for (std::size_t t = 0; t < pieces.size(); ++t)
   {
     r.F.row(static_cast<Eigen::Index>(t)) = pieces[t].c.transpose();
     r.parentEdge.row(static_cast<Eigen::Index>(t)) = pieces[t].along.transpose();
     r.parent[t] = pieces[t].parent;
-    if (pieces[t].along != Eigen::Vector3i(0, 1, 2) ||
-      pieces[t].c != F.row(pieces[t].parent).transpose())
-    {
-      split[static_cast<std::size_t>(pieces[t].parent)] = 1;
-    }
+    ++parts[static_cast<std::size_t>(pieces[t].parent)];
   }
-  r.refinedTriangles = static_cast<int>(std::count(split.begin(), split.end(), 1));
+  r.refinedTriangles =
+    static_cast<int>(std::count_if(parts.begin(), parts.end(), [](int n) { return n > 1; }));
   return r;
 }
 

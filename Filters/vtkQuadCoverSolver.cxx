@@ -181,13 +181,19 @@ double vtkQuadCoverSolver::MaximumQuadCount(vtkIdType triangles)
 
 namespace
 {
+/// The quads `o` ask of the whole surface (before each component's minimum).
+double TargetShare(const vtkQuadCoverSurface& in, const quadcover::ParameterizationOptions& o)
+{
+  return o.targetEdgeLength > 0.0
+    ? quadcover::surfaceArea(in.V, in.F) / (o.targetEdgeLength * o.targetEdgeLength)
+    : static_cast<double>(o.targetQuadCount);
+}
+
 /// Throws when `options` ask more quads of the surface than MaximumQuadCount allows.
 void CheckQuadCount(const vtkQuadCoverSurface& in, const quadcover::ParameterizationOptions& o,
   double worldEdgeLength)
 {
-  const double share = o.targetEdgeLength > 0.0
-    ? quadcover::surfaceArea(in.V, in.F) / (o.targetEdgeLength * o.targetEdgeLength)
-    : static_cast<double>(o.targetQuadCount);
+  const double share = TargetShare(in, o);
   // each component's minimum comes on top of its share, at most
   const double quads = share + o.minimumComponentQuadCount * in.topo.numComponents();
   const double most = vtkQuadCoverSolver::MaximumQuadCount(in.F.rows());
@@ -218,14 +224,18 @@ void CheckQuadCount(const vtkQuadCoverSurface& in, const quadcover::Parameteriza
 int RefineLongEdges(vtkQuadCoverSurface& in, const quadcover::ParameterizationOptions& o,
   vtkDataArray* matchingArray, Eigen::MatrixX3d& U, Eigen::MatrixX3i& matching)
 {
-  const double area = quadcover::surfaceArea(in.V, in.F);
-  const double h =
-    o.targetEdgeLength > 0.0 ? o.targetEdgeLength : std::sqrt(area / o.targetQuadCount);
-  if (!(o.maximumTriangleEdge > 0.0) || !(h > 0.0))
+  if (!(o.maximumTriangleEdge > 0.0))
   {
     return 0;
   }
-  const double most = std::min(5e5, static_cast<double>(in.F.rows()) + 16.0 * area / (h * h));
+  const double h = o.targetEdgeLength > 0.0
+    ? o.targetEdgeLength
+    : quadcover::edgeLengthForQuadCount(in.V, in.F, o.targetQuadCount);
+  if (!(h > 0.0))
+  {
+    return 0;
+  }
+  const double most = std::min(5e5, static_cast<double>(in.F.rows()) + 16.0 * TargetShare(in, o));
   const quadcover::EdgeRefinement r = quadcover::refineLongEdges(
     in.V, in.F, o.maximumTriangleEdge * h, static_cast<int>(std::max(0.0, most)));
   if (r.refinedTriangles == 0)
