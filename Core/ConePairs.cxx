@@ -2,6 +2,7 @@
 #include "ConePairs.h"
 
 #include "BranchPointSearch.h"
+#include "Parallel.h"
 #include "SparseSolver.h"
 #include "SurfaceDisks.h"
 
@@ -187,20 +188,20 @@ Eigen::SparseMatrix<double> cotangentLaplacian(
 class ScaleModel
 {
 public:
-  ScaleModel(
-    const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F, const MeshTopology& topo, double h)
+  /// The two factorizations run at once when threads (0: defaultThreadCount()) is above 1.
+  ScaleModel(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F, const MeshTopology& topo,
+    double h, int threads)
     : topo_(topo)
     , laplacian_(Factorization::Simplicial)
     , diffusion_(Factorization::Simplicial)
   {
     const Eigen::SparseMatrix<double> L = cotangentLaplacian(V, F, area_);
-    laplacian_.compute(L);
     Eigen::SparseMatrix<double> D = h * h * L;
     for (int v = 0; v < topo.numVertices; ++v)
     {
       D.coeffRef(v, v) += area_[v];
     }
-    diffusion_.compute(D);
+    runBoth([&]() { laplacian_.compute(L); }, [&]() { diffusion_.compute(D); }, threads);
     ok_ = laplacian_.info() == Eigen::Success && diffusion_.info() == Eigen::Success;
     for (int v = 0; v < topo.numVertices; ++v)
     {
@@ -381,7 +382,7 @@ ConePairs conePairsForEvenScale(const Eigen::MatrixX3d& V, const Eigen::MatrixX3
     return result;
   }
   const double h = edgeLength, separation = options.separation * edgeLength;
-  const ScaleModel model(V, F, topo, h);
+  const ScaleModel model(V, F, topo, h, options.numberOfThreads);
   if (!model.ok())
   {
     return result;

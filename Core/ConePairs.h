@@ -23,6 +23,8 @@ struct ConePairOptions
   int maximumPairs = 100;
   /// A new cone stays this many grid edges away from every other singularity and the boundary.
   double separation = 3.0;
+  /// Worker threads (0: defaultThreadCount()); the result does not depend on it.
+  int numberOfThreads = 0;
 };
 
 struct ConePairs

@@ -2,12 +2,14 @@
 // run from the input and from the globally optimal fields.
 #include "FrameSmoother.h"
 
+#include "Parallel.h"
 #include "SparseSolver.h"
 #include <Eigen/Geometry>
 
 #include <cmath>
 #include <complex>
 #include <limits>
+#include <optional>
 #include <stdexcept>
 
 namespace quadcover
@@ -625,17 +627,16 @@ Eigen::VectorXd weighByCoherence(Smoothing& s, double radius)
   return coherence;
 }
 
-/// Runs 2 and 3: descents from the global starts (Knoeppel et al. 2013); the first with the
-/// lowest end goes into alpha and R. Returns false when there is none.
-bool descendFromGlobalStarts(const Smoothing& s, Descent& descent, const Eigen::VectorXd& start,
-  Eigen::VectorXd& alpha, SmootherResult& R, const Progress& progress)
+/// Runs 2 and 3: descents from the global starts (Knoeppel et al. 2013, globalStarts); the
+/// first with the lowest end goes into alpha and R. Returns false when there is none.
+bool descendFromGlobalStarts(const Smoothing& s, Descent& descent,
+  const std::vector<Eigen::VectorXcd>& starts, const Eigen::VectorXd& start, Eigen::VectorXd& alpha,
+  SmootherResult& R, const Progress& progress)
 {
-  const std::vector<Eigen::VectorXcd> starts =
-    globalStarts(s, R.numConstrained, progress.part(0.0, 0.2));
   for (std::size_t i = 0; i < starts.size(); ++i)
   {
-    const double from = 0.2 + 0.8 * static_cast<double>(i) / static_cast<double>(starts.size());
-    const double to = 0.2 + 0.8 * static_cast<double>(i + 1) / static_cast<double>(starts.size());
+    const double from = static_cast<double>(i) / static_cast<double>(starts.size());
+    const double to = static_cast<double>(i + 1) / static_cast<double>(starts.size());
     std::vector<double> globalHistory;
     int globalIterations = 0;
     const Eigen::VectorXd candidate = descent.run(
@@ -667,8 +668,19 @@ SmootherResult smoothFrames(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F
   R.coherence = weighByCoherence(s, s.P.lambda < 1.0 ? options.coherenceRadius : 0.0);
   numberUnknowns(s, R);
   progress.report(0.01);
-  Descent descent(s, options, progress.part(0.01, 0.05));
+  // The global starts and the descent's factorization do not depend on each other: on two
+  // threads they run at once (the descent's reports nothing).
   const bool global = options.globalStart && s.P.lambda > 0.0 && s.n > 0;
+  std::vector<Eigen::VectorXcd> starts;
+  std::optional<Descent> descent;
+  runBoth(
+    [&]() {
+      if (global)
+      {
+        starts = globalStarts(s, R.numConstrained, progress.part(0.01, 0.15));
+      }
+    },
+    [&]() { descent.emplace(s, options, Progress()); }, options.numberOfThreads);
 
   // Run 1: from the input (held triangles turned onto their edges). It runs last, so that it
   // can be given up once it cannot reach the global starts' end; on a tie it wins, as before.
@@ -679,13 +691,13 @@ SmootherResult smoothFrames(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F
   }
   Eigen::VectorXd alpha;
   const bool anyGlobal =
-    global && descendFromGlobalStarts(s, descent, start, alpha, R, progress.part(0.05, 0.6));
+    descendFromGlobalStarts(s, *descent, starts, start, alpha, R, progress.part(0.15, 0.6));
   std::vector<double> history;
   int iterations = 0;
   const double bar =
     anyGlobal ? R.energyHistory.back() : std::numeric_limits<double>::infinity();
   Eigen::VectorXd fromInput =
-    descent.run(start, history, iterations, progress.part(anyGlobal ? 0.6 : 0.05, 1.0), bar);
+    descent->run(start, history, iterations, progress.part(anyGlobal ? 0.6 : 0.15, 1.0), bar);
   R.energyBefore = history.front();
   if (!anyGlobal || history.back() <= bar)
   {
@@ -695,7 +707,7 @@ SmootherResult smoothFrames(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F
     R.fromGlobalStart = false;
   }
 
-  R.rejectedSteps = descent.rejected();
+  R.rejectedSteps = descent->rejected();
   R.rotation = alpha;
   R.energyAfter = R.energyHistory.back();
   R.frameU = frameU;

@@ -45,6 +45,8 @@ struct SmootherOptions
   /// torus). Elsewhere the field is the smoothest one. 0 (or smoothingWeight 1): the weights as
   /// given.
   double coherenceRadius = 0.1;
+  /// Worker threads (0: defaultThreadCount()); the result does not depend on it.
+  int numberOfThreads = 0;
 };
 
 struct SmootherResult

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cstdlib>
+#include <exception>
 #include <thread>
 #include <vector>
 
@@ -23,6 +24,49 @@ inline int defaultThreadCount()
   }
   const unsigned hw = std::thread::hardware_concurrency();
   return hw == 0 ? 1 : static_cast<int>(hw);
+}
+
+/// Calls first() and second(), on two threads when numThreads (0: defaultThreadCount()) is
+/// above 1; both have returned when it returns. An exception in either is rethrown (the first's
+/// when both throw).
+template<typename First, typename Second>
+void runBoth(First&& first, Second&& second, int numThreads)
+{
+  if (numThreads <= 0)
+  {
+    numThreads = defaultThreadCount();
+  }
+  if (numThreads == 1)
+  {
+    first();
+    second();
+    return;
+  }
+  std::exception_ptr failed;
+  std::thread worker([&second, &failed]() {
+    try
+    {
+      second();
+    }
+    catch (...)
+    {
+      failed = std::current_exception();
+    }
+  });
+  try
+  {
+    first();
+  }
+  catch (...)
+  {
+    worker.join();
+    throw;
+  }
+  worker.join();
+  if (failed)
+  {
+    std::rethrow_exception(failed);
+  }
 }
 
 /// Calls body(begin, end, threadIndex) on contiguous blocks covering [0, n). Each index is

@@ -172,6 +172,7 @@ int addConePairsForEvenScale(const Inputs& in, const FrameTopology& given, doubl
 {
   ConePairOptions options;
   options.minimumGain = in.options.conePairGain;
+  options.numberOfThreads = in.options.numberOfThreads;
   const ConePairs chosen = conePairsForEvenScale(
     in.V, in.F, in.topo, in.geometry.defect, given.index, edgeLength, options);
   if (chosen.pairs.empty())

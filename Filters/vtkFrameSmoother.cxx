@@ -31,6 +31,7 @@ vtkFrameSmoother::vtkFrameSmoother()
   this->AlignToBoundary = defaults.alignToBoundary;
   this->GlobalStart = defaults.globalStart;
   this->CoherenceRadius = defaults.coherenceRadius;
+  this->NumberOfThreads = defaults.numberOfThreads;
   namespace names = vtkQuadCoverArrayNames;
   this->SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_CELLS, names::FrameU);
   this->SetInputArrayToProcess(1, 0, 0, vtkDataObject::FIELD_ASSOCIATION_CELLS, names::FrameV);
@@ -70,6 +71,7 @@ void vtkFrameSmoother::Execute(vtkQuadCoverSurface& in, vtkInformationVector* ou
   options.alignToBoundary = this->AlignToBoundary;
   options.globalStart = this->GlobalStart;
   options.coherenceRadius = this->CoherenceRadius;
+  options.numberOfThreads = this->NumberOfThreads;
   const quadcover::SmootherResult r = quadcover::smoothFrames(in.V, in.F, in.topo, geometry, U, Vf,
     weight, options, vtkQuadCoverEigen::CoreProgress(this, 0.2, 0.95));
 
@@ -107,4 +109,5 @@ void vtkFrameSmoother::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "AlignToBoundary: " << (this->AlignToBoundary ? "On" : "Off") << "\n";
   os << indent << "GlobalStart: " << (this->GlobalStart ? "On" : "Off") << "\n";
   os << indent << "CoherenceRadius: " << this->CoherenceRadius << "\n";
+  os << indent << "NumberOfThreads: " << this->NumberOfThreads << "\n";
 }

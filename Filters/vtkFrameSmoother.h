@@ -116,6 +116,15 @@ public:
   vtkBooleanMacro(GlobalStart, bool);
   ///@}
 
+  ///@{
+  /**
+   * Number of threads, 0 for all cores (default 0): the global starts and the descent's
+   * factorization run at once on two. The result does not depend on it.
+   */
+  vtkSetClampMacro(NumberOfThreads, int, 0, 1024);
+  vtkGetMacro(NumberOfThreads, int);
+  ///@}
+
 protected:
   vtkFrameSmoother();
   ~vtkFrameSmoother() override = default;
@@ -132,6 +141,7 @@ protected:
   bool AlignToBoundary;
   bool GlobalStart;
   double CoherenceRadius;
+  int NumberOfThreads;
 
 private:
   vtkFrameSmoother(const vtkFrameSmoother&) = delete;

@@ -96,6 +96,7 @@ double vtkQuadCoverRemesh::GetFeatureAngle()
 void vtkQuadCoverRemesh::SetNumberOfThreads(int count)
 {
   this->Curvature->SetNumberOfThreads(count);
+  this->Smoother->SetNumberOfThreads(count);
   this->Solver->SetNumberOfThreads(count);
 }
 int vtkQuadCoverRemesh::GetNumberOfThreads()

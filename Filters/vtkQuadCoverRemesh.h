@@ -8,9 +8,10 @@
  *
  * The properties are the command line's main options and set the stages that use them:
  * TargetQuadCount or TargetEdgeLength (the solver), FeatureLines (the solver), FeatureAngle (the
- * smoother and the solver), NumberOfThreads (the curvature estimate and the solver). Every other
- * option is reached through the stage itself, e.g. GetFrameSmoother()->SetSmoothingWeight(1);
- * a change there re-runs the chain (GetMTime includes the stages').
+ * smoother and the solver), NumberOfThreads (the curvature estimate, the smoother and the
+ * solver). Every other option is reached through the stage itself, e.g.
+ * GetFrameSmoother()->SetSmoothingWeight(1); a change there re-runs the chain (GetMTime includes
+ * the stages').
  *
  * Errors: the first stage's error, as that stage words it ("Cannot smooth frames: ..."), through
  * vtkErrorMacro; RequestData then returns 0. The stages' warnings become this filter's.
@@ -78,7 +79,10 @@ public:
   ///@}
 
   ///@{
-  /** Worker threads of the curvature estimate and the solver, 0 for all cores (default 0). */
+  /**
+   * Worker threads of the curvature estimate, the smoother and the solver, 0 for all cores
+   * (default 0).
+   */
   void SetNumberOfThreads(int count);
   int GetNumberOfThreads();
   ///@}

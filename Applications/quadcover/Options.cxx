@@ -301,8 +301,25 @@ std::vector<Option> StageOptions(Pipeline& p)
       "refine components with fewer triangles (the surface stays), 0: none"),
     QC_NUMBER("curvature", curvature, NeighborhoodRadius,
       "radius of the curvature neighbourhood, in median edge lengths"),
-    QC_NUMBER2("curvature", curvature, solver, NumberOfThreads,
-      "worker threads (curvature, maps of components, untangling), 0 for all cores"),
+    // three stages: written out
+    Ranged(Bind(
+             "curvature", "NumberOfThreads",
+             "worker threads (curvature, smoothing, maps of components, untangling), 0 for all "
+             "cores",
+             Option::Kind::Whole,
+             [curvature, smoother, solver]() {
+               const int n = curvature->GetNumberOfThreads();
+               return n == smoother->GetNumberOfThreads() && n == solver->GetNumberOfThreads()
+                 ? double(n)
+                 : std::numeric_limits<double>::quiet_NaN();
+             },
+             [curvature, smoother, solver](double x) {
+               QC_SET(curvature, NumberOfThreads, x);
+               QC_SET(smoother, NumberOfThreads, x);
+               QC_SET(solver, NumberOfThreads, x);
+             }),
+      double(curvature->GetNumberOfThreadsMinValue()),
+      double(curvature->GetNumberOfThreadsMaxValue())),
     QC_SWITCH("curvature", curvature, UseInputFrames,
       "use a FrameU cell array of the input as the guidance field"),
     QC_NUMBER(
