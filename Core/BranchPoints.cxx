@@ -86,6 +86,39 @@ void spreadLengths(const Steps& steps, const FrameGeometry& geometry, double lim
   }
 }
 
+/// Is a point with `sign` quarters other than a closer than `limit` to a along edge paths
+/// (a Dijkstra from a that stops at that length)? Edges are as long either way, so this is
+/// whether spreadLengths from those points reaches a below `limit`, up to the order the lengths
+/// are summed in.
+bool sameSignWithin(Optimizer& o, int a, double limit)
+{
+  PathSearch& S = o.search;
+  S.begin(a);
+  while (!S.queue.empty())
+  {
+    const auto [d, u] = S.queue.top();
+    S.queue.pop();
+    if (d > S.dist[u])
+    {
+      continue;
+    }
+    if (u != a && o.q[u] == o.q[a])
+    {
+      return true;
+    }
+    const std::vector<Step>& around = o.steps[u];
+    for (int i = 0; i < static_cast<int>(around.size()); ++i)
+    {
+      const double nd = d + o.geometry.edgeLength(around[i].g, around[i].kg);
+      if (nd < limit)
+      {
+        S.relax(u, i, around[i].to, nd);
+      }
+    }
+  }
+  return false;
+}
+
 /// Where one quarter of a's index can go: the end of the cheapest path (ties: fewer edges) over
 /// regular points to one at least `distance` edges and `length` long from a along the path and
 /// outside every neighbourhood `hops` and `near` mark; -1 when the search finds none. delta is
@@ -462,7 +495,13 @@ int moveCloseQuartersApart(const Eigen::MatrixX3i& F, const MeshTopology& topo,
     {
       continue;
     }
-    // the nearest other singularity of the same sign, within closerThan
+    // the nearest other singularity of the same sign, within closerThan; most quarters have
+    // none, which a search from the quarter itself tells at the cost of its neighbourhood (with
+    // a margin far above the rounding of the sums, so that the spread below decides the rest)
+    if (!sameSignWithin(o, a, closerThan * (1.0 + 1e-9)))
+    {
+      continue;
+    }
     others.clear();
     for (int v = 0; v < nv; ++v)
     {
