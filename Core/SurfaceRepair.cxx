@@ -1,4 +1,5 @@
-// SurfaceRepair.cxx: makeManifold, a triangle soup made a manifold, consistently oriented surface.
+// SurfaceRepair.cxx: points merged, and makeManifold: a triangle soup made a manifold, consistently
+// oriented surface.
 #include "SurfaceRepair.h"
 
 #include "UnionFind.h"
@@ -13,6 +14,7 @@
 #include <numeric>
 #include <stdexcept>
 #include <string>
+#include <unordered_map>
 
 namespace quadcover
 {
@@ -400,4 +402,96 @@ std::vector<char> redundantTriangles(const Eigen::MatrixX3d& V, const Eigen::Mat
   return remove;
 }
 
+MergedPoints mergeCoincidentPoints(
+  const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F, double tolerance)
+{
+  if (!(tolerance >= 0.0) || !std::isfinite(tolerance))
+  {
+    throw std::invalid_argument("mergeCoincidentPoints: the tolerance must be finite and >= 0");
+  }
+  const int nv = static_cast<int>(V.rows());
+  if (F.size() > 0 && (F.minCoeff() < 0 || F.maxCoeff() >= nv))
+  {
+    throw std::invalid_argument("mergeCoincidentPoints: a point index is out of range");
+  }
+  // cells far wider than the tolerance: a point is within it of at most its own cell's sides
+  // on a few axes, so most look in one cell. With tolerance 0, cells of a billionth of the
+  // points' extent (equal points share one).
+  double extent = 0.0;
+  if (nv > 0)
+  {
+    extent = (V.colwise().maxCoeff() - V.colwise().minCoeff()).maxCoeff();
+  }
+  const double width = tolerance > 0.0
+    ? 1024.0 * tolerance
+    : (extent > 0.0 && std::isfinite(extent) ? 1e-9 * extent : 1.0);
+  const double tolerance2 = tolerance * tolerance;
+  using Cell = std::array<std::int64_t, 3>;
+  const auto key = [](const Cell& c) {
+    std::uint64_t h = 1469598103934665603ULL;
+    for (const std::int64_t x : c)
+    {
+      h = (h ^ static_cast<std::uint64_t>(x)) * 1099511628211ULL;
+    }
+    return h;
+  };
+  // per key: the merged points in its cell (a collision of keys only adds candidates)
+  std::unordered_map<std::uint64_t, std::vector<int>> cells;
+  cells.reserve(static_cast<std::size_t>(nv));
+  MergedPoints out;
+  out.pointOf.assign(nv, -1);
+  const auto cellAt = [&](const Eigen::RowVector3d& x, Cell& c, std::array<int, 3>& side) {
+    for (int a = 0; a < 3; ++a)
+    {
+      const double t = std::floor(x[a] / width);
+      c[a] = static_cast<std::int64_t>(std::clamp(t, -4.0e18, 4.0e18));
+      const double within = x[a] - t * width;
+      // (twice the tolerance: x / width loses bits on coordinates far from the origin)
+      side[a] = within <= 2.0 * tolerance ? -1 : (width - within <= 2.0 * tolerance ? 1 : 0);
+    }
+  };
+  for (Eigen::Index f = 0; f < F.rows(); ++f)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      const int p = F(f, k);
+      if (out.pointOf[p] >= 0)
+      {
+        continue;
+      }
+      const Eigen::RowVector3d x = V.row(p);
+      Cell c;
+      std::array<int, 3> side;
+      cellAt(x, c, side);
+      int found = -1;
+      // the own cell, and the neighbours across the sides the point is near
+      for (int dx = std::min(0, side[0]); dx <= std::max(0, side[0]); ++dx)
+        for (int dy = std::min(0, side[1]); dy <= std::max(0, side[1]); ++dy)
+          for (int dz = std::min(0, side[2]); dz <= std::max(0, side[2]); ++dz)
+          {
+            const auto it = cells.find(key({ c[0] + dx, c[1] + dy, c[2] + dz }));
+            if (it == cells.end())
+            {
+              continue;
+            }
+            for (const int m : it->second)
+            {
+              if ((found < 0 || m < found) &&
+                (V.row(out.source[m]) - x).squaredNorm() <= tolerance2)
+              {
+                found = m;
+              }
+            }
+          }
+      if (found < 0)
+      {
+        found = static_cast<int>(out.source.size());
+        out.source.push_back(p);
+        cells[key(c)].push_back(found);
+      }
+      out.pointOf[p] = found;
+    }
+  }
+  return out;
+}
 }

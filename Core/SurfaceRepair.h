@@ -10,6 +10,29 @@
 namespace quadcover
 {
 
+/// Points merged by mergeCoincidentPoints.
+struct MergedPoints
+{
+  /// per input point its merged point, -1 where no triangle uses it
+  std::vector<int> pointOf;
+  /// per merged point the input point it was made from (its first in the triangles' order)
+  std::vector<int> source;
+};
+
+/**
+ * Merges the points the triangles use that lie within `tolerance` of each other: the triangles'
+ * corners are taken in order, and a point not met before becomes a new merged point unless one
+ * made before lies within `tolerance` (the first made among those). Points no triangle uses are
+ * left out. The merged points are numbered in the order the triangles first use them, as
+ * vtkCleanPolyData numbers them. tolerance 0 merges equal points only. Expected time linear in
+ * the number of corners (a hash of cells 1024 tolerances wide; a point within two tolerances of
+ * its cell's side also looks in the neighbour cell there).
+ * @throws std::invalid_argument for a negative or non-finite tolerance or a point index out of
+ *         range
+ */
+MergedPoints mergeCoincidentPoints(
+  const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F, double tolerance);
+
 /**
  * The triangles a repair removes before makeManifold: each repeat of a triangle (the same three
  * points, in either orientation, as an earlier one) and every triangle of a component (joined

@@ -12,7 +12,9 @@
 #include "vtkIntArray.h"
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
+#include "vtkPoints.h"
 #include "vtkPolyData.h"
+#include "vtkSmartPointer.h"
 #include "vtkTriangleFilter.h"
 
 #include "MeshTopology.h"
@@ -20,9 +22,10 @@
 #include "SurfaceRepair.h"
 
 #include <algorithm>
+#include <cmath>
 #include <map>
-#include <vector>
 #include <stdexcept>
+#include <vector>
 
 vtkStandardNewMacro(vtkQuadCoverSurfaceRepair);
 
@@ -116,6 +119,61 @@ vtkIdType RemoveRedundantTriangles(vtkPolyData* surface, const vtkQuadCoverSurfa
     surface->ShallowCopy(unused->GetOutput());
   }
   return removed;
+}
+
+/// `tri` (triangles only) with its points within 1e-12 of the used points' bounding box diagonal
+/// merged (round-off: parametric seams; quadcover::mergeCoincidentPoints), the points no
+/// triangle uses left out and the triangles left with a repeated point removed, as
+/// vtkCleanPolyData with that tolerance numbers and keeps them: point data from each merged
+/// point's first point, cell data from the triangles kept, field data passed.
+vtkSmartPointer<vtkPolyData> MergeCoincidentPoints(vtkPolyData* tri)
+{
+  const Eigen::MatrixX3d V = vtkQuadCoverEigen::Points(tri);
+  const Eigen::MatrixX3i F = vtkQuadCoverEigen::Triangles(tri);
+  Eigen::RowVector3d low = Eigen::RowVector3d::Zero(), high = Eigen::RowVector3d::Zero();
+  for (Eigen::Index f = 0; f < F.rows(); ++f)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      const Eigen::RowVector3d x = V.row(F(f, k));
+      low = f == 0 && k == 0 ? x : low.cwiseMin(x);
+      high = f == 0 && k == 0 ? x : high.cwiseMax(x);
+    }
+  }
+  const double diagonal = (high - low).norm();
+  const quadcover::MergedPoints merged =
+    quadcover::mergeCoincidentPoints(V, F, std::isfinite(diagonal) ? 1e-12 * diagonal : 0.0);
+  const vtkIdType n = static_cast<vtkIdType>(merged.source.size());
+  auto out = vtkSmartPointer<vtkPolyData>::New();
+  vtkNew<vtkPoints> points;
+  points->SetDataType(tri->GetPoints() ? tri->GetPoints()->GetDataType() : VTK_DOUBLE);
+  points->SetNumberOfPoints(n);
+  out->GetPointData()->CopyAllocate(tri->GetPointData(), n);
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    const Eigen::RowVector3d x = V.row(merged.source[i]); // (a row of V is not contiguous)
+    points->SetPoint(i, x.data());
+    out->GetPointData()->CopyData(tri->GetPointData(), merged.source[i], i);
+  }
+  out->SetPoints(points);
+  vtkNew<vtkCellArray> polys;
+  polys->AllocateExact(F.rows(), 3 * F.rows());
+  out->GetCellData()->CopyAllocate(tri->GetCellData(), F.rows());
+  vtkIdType kept = 0;
+  for (Eigen::Index f = 0; f < F.rows(); ++f)
+  {
+    const vtkIdType ids[3] = { merged.pointOf[F(f, 0)], merged.pointOf[F(f, 1)],
+      merged.pointOf[F(f, 2)] };
+    if (ids[0] != ids[1] && ids[1] != ids[2] && ids[2] != ids[0])
+    {
+      polys->InsertNextCell(3, ids);
+      out->GetCellData()->CopyData(tri->GetCellData(), f, kept++);
+    }
+  }
+  out->SetPolys(polys);
+  out->GetCellData()->Squeeze();
+  out->GetFieldData()->PassData(tri->GetFieldData());
+  return out;
 }
 
 /// Makes `surface` manifold and consistently oriented (quadcover::makeManifold, on the points
@@ -223,14 +281,7 @@ void vtkQuadCoverSurfaceRepair::Execute(vtkQuadCoverSurface& in, vtkInformationV
   this->UpdateProgress(0.25);
 
   // Merge coincident points (to round-off); triangles left with a repeated point are removed.
-  vtkNew<vtkCleanPolyData> clean;
-  clean->PointMergingOn();
-  clean->SetTolerance(1e-12); // of the bounding box diagonal: round-off (parametric seams)
-  clean->ConvertPolysToLinesOff();
-  clean->ConvertLinesToPointsOff();
-  clean->ConvertStripsToPolysOff();
-  Run(clean.Get(), tri);
-  vtkPolyData* cleaned = clean->GetOutput();
+  vtkSmartPointer<vtkPolyData> cleaned = MergeCoincidentPoints(tri);
   counts.mergedPoints = std::max<vtkIdType>(0, UsedPoints(tri) - cleaned->GetNumberOfPoints());
   counts.removedCells += tri->GetNumberOfPolys() - cleaned->GetNumberOfPolys();
   if (cleaned->GetNumberOfPolys() == 0)

@@ -10,7 +10,8 @@
  * - coincident points (to round-off: within 1e-12 of the bounding box's diagonal) are merged into
  *   one, as the seams of VTK's parametric sources and OBJ files that repeat a point per texture
  *   coordinate need (MergedPoints), unused points dropped, and triangles left with a repeated
- *   point removed (RemovedCells);
+ *   point removed (RemovedCells); numbered and kept as vtkCleanPolyData with that tolerance
+ *   would (quadcover::mergeCoincidentPoints);
  * - edges shared by three or more triangles are cut apart into manifold sheets (CutEdges):
  *   around such an edge the two triangles of a surface that passes through it (joined elsewhere
  *   through manifold edges, agreeing in orientation) stay joined, and each other triangle to its

@@ -1,4 +1,5 @@
-// Tests of makeManifold: non-manifold edges cut apart into sheets, fans split, orientation.
+// Tests of the repair: points merged, non-manifold edges cut apart into sheets, fans split,
+// orientation.
 #include "Matchings.h"
 #include "MeshTopology.h"
 #include "SurfaceRefinement.h"
@@ -319,6 +320,91 @@ TEST(RedundantTriangles, RepeatsAndComponentsWithoutAreaGo)
     }
   }
   EXPECT_EQ(removed, (std::vector<int>{ nf, nf + 1, nf + 2 }));
+}
+
+namespace
+{
+/// mergeCoincidentPoints' rule by brute force: corners in order, each new point merged into the
+/// first merged point within the tolerance.
+MergedPoints mergeByBruteForce(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F, double tol)
+{
+  MergedPoints m;
+  m.pointOf.assign(V.rows(), -1);
+  for (Eigen::Index c = 0; c < F.size(); ++c)
+  {
+    const int p = F(c / 3, c % 3);
+    if (m.pointOf[p] >= 0)
+    {
+      continue;
+    }
+    for (int q = 0; q < static_cast<int>(m.source.size()) && m.pointOf[p] < 0; ++q)
+    {
+      if ((V.row(m.source[q]) - V.row(p)).squaredNorm() <= tol * tol)
+      {
+        m.pointOf[p] = q;
+      }
+    }
+    if (m.pointOf[p] < 0)
+    {
+      m.pointOf[p] = static_cast<int>(m.source.size());
+      m.source.push_back(p);
+    }
+  }
+  return m;
+}
+}
+
+TEST(MergeCoincidentPoints, MergesWithinTheToleranceAsTheRuleSaysAcrossCellSides)
+{
+  // A sphere as a soup (each triangle its own three points), moved far from the origin, every
+  // copy but the first displaced by 0.3, 0.9, 1.1 or 3 tolerances, some along an axis through
+  // the side of a hash cell (1024 tolerances wide), plus points no triangle uses.
+  const Surface sphere = testSurface("sphere");
+  const double tol = 1e-9;
+  const int nf = static_cast<int>(sphere.F.rows());
+  Eigen::MatrixX3d V(3 * nf + 2, 3);
+  Eigen::MatrixX3i F(nf, 3);
+  std::vector<int> copies(sphere.V.rows(), 0);
+  const double steps[] = { 0.0, 0.3, 0.9, 1.1, 3.0 };
+  for (int f = 0; f < nf; ++f)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      const int p = sphere.F(f, k);
+      const int n = copies[p]++;
+      Eigen::RowVector3d x = sphere.V.row(p) + Eigen::RowVector3d(1e3, -2e3, 0.5);
+      // every 7th point on a cell side: its copies straddle it
+      if (p % 7 == 0)
+      {
+        x[0] = std::floor(x[0] / (1024 * tol)) * 1024 * tol;
+      }
+      x[n % 3] += steps[n % 5] * tol;
+      V.row(3 * f + k) = x;
+      F(f, k) = 3 * f + k;
+    }
+  }
+  V.row(3 * nf) << 0, 0, 0;
+  V.row(3 * nf + 1) = V.row(0);
+  const MergedPoints fast = mergeCoincidentPoints(V, F, tol);
+  const MergedPoints slow = mergeByBruteForce(V, F, tol);
+  EXPECT_EQ(fast.pointOf, slow.pointOf);
+  EXPECT_EQ(fast.source, slow.source);
+  EXPECT_EQ(fast.pointOf[3 * nf], -1);
+  EXPECT_EQ(fast.pointOf[3 * nf + 1], -1);
+  // merged: fewer than the corners, more than the sphere's points (copies 3 and 4 stay apart)
+  EXPECT_GT(static_cast<int>(fast.source.size()), sphere.V.rows());
+  EXPECT_LT(static_cast<int>(fast.source.size()), 3 * nf);
+  // tolerance 0: equal points only
+  Eigen::MatrixX3d W(4, 3);
+  W << 0, 0, 0, 1, 0, 0, 0, 0, 0, 1e-100, 0, 0;
+  Eigen::MatrixX3i G(2, 3);
+  G << 0, 1, 2, 3, 1, 0;
+  const MergedPoints exact = mergeCoincidentPoints(W, G, 0.0);
+  EXPECT_EQ(exact.pointOf, (std::vector<int>{ 0, 1, 0, 2 }));
+  EXPECT_EQ(exact.source, (std::vector<int>{ 0, 1, 3 }));
+  EXPECT_THROW(mergeCoincidentPoints(W, G, -1.0), std::invalid_argument);
+  G(1, 0) = 4;
+  EXPECT_THROW(mergeCoincidentPoints(W, G, 0.0), std::invalid_argument);
 }
 
 TEST(RefineCoarseComponents, SplitsOnlyTheCoarseComponentsKeepingTheSurface)
