@@ -86,10 +86,10 @@ void spreadLengths(const Steps& steps, const FrameGeometry& geometry, double lim
   }
 }
 
-/// Is a point with `sign` quarters other than a closer than `limit` to a along edge paths
-/// (a Dijkstra from a that stops at that length)? Edges are as long either way, so this is
-/// whether spreadLengths from those points reaches a below `limit`, up to the order the lengths
-/// are summed in.
+/// Is another point with a's quarters (o.q) closer than `limit` to a along edge paths (a
+/// Dijkstra from a that stops at that length)? Edges are as long either way, so this is whether
+/// spreadLengths from those points reaches a below `limit`, up to the order the lengths are
+/// summed in.
 bool sameSignWithin(Optimizer& o, int a, double limit)
 {
   PathSearch& S = o.search;
