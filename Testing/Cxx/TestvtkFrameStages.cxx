@@ -96,10 +96,13 @@ TEST(vtkFrameSmoother, DefaultsClampsAndPrintSelf)
   EXPECT_EQ(f->GetSmoothingWeight(), 1.0);
   f->SetFeatureAngle(-5.0);
   EXPECT_EQ(f->GetFeatureAngle(), 0.0);
+  EXPECT_EQ(f->GetNumberOfThreads(), 0);
+  f->SetNumberOfThreads(2000);
+  EXPECT_EQ(f->GetNumberOfThreads(), 1024);
   std::ostringstream os;
   f->Print(os);
-  for (const char* p :
-    { "SmoothingWeight: 1", "FeatureAngle: 0", "AlignToBoundary: On", "CoherenceRadius: 10" })
+  for (const char* p : { "SmoothingWeight: 1", "FeatureAngle: 0", "AlignToBoundary: On",
+         "CoherenceRadius: 10", "NumberOfThreads: 1024" })
   {
     EXPECT_NE(os.str().find(p), std::string::npos) << p;
   }

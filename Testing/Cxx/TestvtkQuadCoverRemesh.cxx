@@ -125,6 +125,7 @@ TEST(vtkQuadCoverRemesh, PropertiesSetTheStagesThatUseThem)
   EXPECT_EQ(remesh->GetFrameSmoother()->GetFeatureAngle(), 40.0);
   EXPECT_EQ(remesh->GetSolver()->GetFeatureAngle(), 40.0);
   EXPECT_EQ(remesh->GetCurvatureFrames()->GetNumberOfThreads(), 1);
+  EXPECT_EQ(remesh->GetFrameSmoother()->GetNumberOfThreads(), 1);
   EXPECT_EQ(remesh->GetSolver()->GetNumberOfThreads(), 1);
   // the stages' own clamps hold
   remesh->SetTargetQuadCount(0);
