@@ -13,34 +13,59 @@ namespace quadcover
 {
 namespace
 {
-/// The points: the input's, then the midpoints added so far.
-struct Points
+/// The points: the input's, then the midpoints added so far, each edge's once.
+class Points
 {
-  const Eigen::MatrixX3d& V;
-  std::vector<Eigen::Vector3d> added;
+public:
+  explicit Points(const Eigen::MatrixX3d& V)
+    : V_(V)
+  {}
 
   Eigen::Vector3d operator[](int i) const
   {
-    return i < V.rows() ? Eigen::Vector3d(V.row(i).transpose()) : added[i - V.rows()];
+    return i < V_.rows() ? Eigen::Vector3d(V_.row(i).transpose()) : added_[i - V_.rows()];
   }
+
+  /// The midpoint of the edge (a, b), added the first time it is asked for (and then listed in
+  /// `listed` as its two points, the lower first).
+  int midpoint(int a, int b, std::vector<std::array<int, 2>>& listed)
+  {
+    const std::pair<int, int> edge(std::min(a, b), std::max(a, b));
+    const int next = static_cast<int>(V_.rows() + added_.size());
+    const auto [it, isNew] = middle_.emplace(edge, next);
+    if (isNew)
+    {
+      added_.push_back(0.5 * ((*this)[edge.first] + (*this)[edge.second]));
+      listed.push_back({ edge.first, edge.second });
+    }
+    return it->second;
+  }
+
+  /// The input's points, then the midpoints.
+  Eigen::MatrixX3d all() const
+  {
+    const Eigen::Index nV = V_.rows();
+    Eigen::MatrixX3d out(nV + static_cast<Eigen::Index>(added_.size()), 3);
+    out.topRows(nV) = V_;
+    for (std::size_t i = 0; i < added_.size(); ++i)
+    {
+      out.row(nV + static_cast<Eigen::Index>(i)) = added_[i].transpose();
+    }
+    return out;
+  }
+
+private:
+  const Eigen::MatrixX3d& V_;
+  std::vector<Eigen::Vector3d> added_;
+  std::map<std::pair<int, int>, int> middle_;
 };
 
-/// One 1-to-4 split of the triangles: midpoints shared across edges.
+/// One 1-to-4 split of the triangles: midpoints shared across edges (an edge of one split is
+/// never an edge of an earlier one, so the points' midpoints serve every split).
 void splitOnce(Points& points, std::vector<Eigen::Vector3i>& triangles, std::vector<int>& parent,
   Refinement& r)
 {
-  std::map<std::pair<int, int>, int> midpoint;
-  auto middle = [&](int a, int b) {
-    const std::pair<int, int> key(std::min(a, b), std::max(a, b));
-    const int next = static_cast<int>(points.V.rows() + points.added.size());
-    const auto [it, added] = midpoint.emplace(key, next);
-    if (added)
-    {
-      points.added.push_back(0.5 * (points[key.first] + points[key.second]));
-      r.midpoints.push_back({ key.first, key.second });
-    }
-    return it->second;
-  };
+  auto middle = [&](int a, int b) { return points.midpoint(a, b, r.midpoints); };
   std::vector<Eigen::Vector3i> split;
   std::vector<int> splitParent;
   split.reserve(4 * triangles.size());
@@ -82,7 +107,7 @@ Refinement refineCoarseComponents(Eigen::MatrixX3d& V, Eigen::MatrixX3i& F, int 
   }
   std::vector<Eigen::Vector3i> all;
   std::vector<int> allParent;
-  Points points{ V, {} };
+  Points points(V);
   for (const std::vector<int>& faces : components)
   {
     std::vector<Eigen::Vector3i> triangles;
@@ -106,12 +131,7 @@ Refinement refineCoarseComponents(Eigen::MatrixX3d& V, Eigen::MatrixX3i& F, int 
   {
     return r; // F exactly as it was
   }
-  const Eigen::Index nV = V.rows();
-  V.conservativeResize(nV + static_cast<Eigen::Index>(points.added.size()), 3);
-  for (std::size_t i = 0; i < points.added.size(); ++i)
-  {
-    V.row(nV + static_cast<Eigen::Index>(i)) = points.added[i].transpose();
-  }
+  V = points.all();
   F.resize(static_cast<Eigen::Index>(all.size()), 3);
   for (std::size_t t = 0; t < all.size(); ++t)
   {
@@ -137,7 +157,7 @@ class LongEdgeSplitter
 {
 public:
   LongEdgeSplitter(const Eigen::MatrixX3d& V, double maximumEdgeLength)
-    : points_{ V, {} }
+    : points_(V)
     , maximum2_(maximumEdgeLength * maximumEdgeLength)
   {}
 
@@ -184,7 +204,7 @@ public:
     return true;
   }
 
-  const std::vector<Eigen::Vector3d>& added() const { return points_.added; }
+  const Points& points() const { return points_; }
 
 private:
   static std::pair<int, int> key(int a, int b) { return { std::min(a, b), std::max(a, b) }; }
@@ -225,24 +245,11 @@ private:
     }
   }
 
-  int midpoint(int a, int b, std::vector<std::array<int, 2>>& midpoints)
-  {
-    const std::pair<int, int> edge = key(a, b);
-    const int next = static_cast<int>(points_.V.rows() + points_.added.size());
-    const auto [it, isNew] = middle_.emplace(edge, next);
-    if (isNew)
-    {
-      points_.added.push_back(0.5 * (points_[edge.first] + points_[edge.second]));
-      midpoints.push_back({ edge.first, edge.second });
-    }
-    return it->second;
-  }
-
   /// p bisected at its edge k into two pieces of the same orientation.
   std::array<Piece, 2> bisect(const Piece& p, int k, std::vector<std::array<int, 2>>& midpoints)
   {
     const int a = p.c[k], b = p.c[(k + 1) % 3], o = p.c[(k + 2) % 3];
-    const int m = midpoint(a, b, midpoints);
+    const int m = points_.midpoint(a, b, midpoints);
     const int ab = p.along[k], bo = p.along[(k + 1) % 3], oa = p.along[(k + 2) % 3];
     return { Piece{ Eigen::Vector3i(a, m, o), p.parent, Eigen::Vector3i(ab, -1, oa) },
       Piece{ Eigen::Vector3i(m, b, o), p.parent, Eigen::Vector3i(ab, bo, -1) } };
@@ -280,7 +287,6 @@ private:
 
   Points points_;
   const double maximum2_;
-  std::map<std::pair<int, int>, int> middle_;
 };
 }
 
@@ -300,13 +306,7 @@ EdgeRefinement refineLongEdges(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i
     while (splitter.round(pieces, r.midpoints, maximumTriangles))
     {}
   }
-  const Eigen::Index nV = V.rows();
-  r.V.resize(nV + static_cast<Eigen::Index>(splitter.added().size()), 3);
-  r.V.topRows(nV) = V;
-  for (std::size_t i = 0; i < splitter.added().size(); ++i)
-  {
-    r.V.row(nV + static_cast<Eigen::Index>(i)) = splitter.added()[i].transpose();
-  }
+  r.V = splitter.points().all();
   r.F.resize(static_cast<Eigen::Index>(pieces.size()), 3);
   r.parentEdge.resize(static_cast<Eigen::Index>(pieces.size()), 3);
   r.parent.resize(pieces.size());
