@@ -54,23 +54,6 @@ void Run(vtkAlgorithm* filter, vtkPolyData* input)
   }
 }
 
-/// Points the polygons use.
-vtkIdType UsedPoints(vtkPolyData* pd)
-{
-  std::vector<char> referenced(pd->GetNumberOfPoints(), 0);
-  vtkIdType used = 0;
-  vtkNew<vtkIdList> ids;
-  for (pd->GetPolys()->InitTraversal(); pd->GetPolys()->GetNextCell(ids);)
-  {
-    for (vtkIdType k = 0; k < ids->GetNumberOfIds(); ++k)
-    {
-      used += referenced[ids->GetId(k)] ? 0 : 1;
-      referenced[ids->GetId(k)] = 1;
-    }
-  }
-  return used;
-}
-
 /// Removes the repeated triangles and the components of zero area (quadcover::
 /// redundantTriangles, on the points scaled as `in` says), with their cell data; returns how
 /// many.
@@ -125,8 +108,9 @@ vtkIdType RemoveRedundantTriangles(vtkPolyData* surface, const vtkQuadCoverSurfa
 /// merged (round-off: parametric seams; quadcover::mergeCoincidentPoints), the points no
 /// triangle uses left out and the triangles left with a repeated point removed, as
 /// vtkCleanPolyData with that tolerance numbers and keeps them: point data from each merged
-/// point's first point, cell data from the triangles kept, field data passed.
-vtkSmartPointer<vtkPolyData> MergeCoincidentPoints(vtkPolyData* tri)
+/// point's first point, cell data from the triangles kept, field data passed. `mergedPoints`:
+/// the points the triangles use less those kept.
+vtkSmartPointer<vtkPolyData> MergeCoincidentPoints(vtkPolyData* tri, vtkIdType& mergedPoints)
 {
   const Eigen::MatrixX3d V = vtkQuadCoverEigen::Points(tri);
   const Eigen::MatrixX3i F = vtkQuadCoverEigen::Triangles(tri);
@@ -144,6 +128,8 @@ vtkSmartPointer<vtkPolyData> MergeCoincidentPoints(vtkPolyData* tri)
   const quadcover::MergedPoints merged =
     quadcover::mergeCoincidentPoints(V, F, std::isfinite(diagonal) ? 1e-12 * diagonal : 0.0);
   const vtkIdType n = static_cast<vtkIdType>(merged.source.size());
+  mergedPoints =
+    std::count_if(merged.pointOf.begin(), merged.pointOf.end(), [](int p) { return p >= 0; }) - n;
   auto out = vtkSmartPointer<vtkPolyData>::New();
   vtkNew<vtkPoints> points;
   points->SetDataType(tri->GetPoints() ? tri->GetPoints()->GetDataType() : VTK_DOUBLE);
@@ -281,8 +267,7 @@ void vtkQuadCoverSurfaceRepair::Execute(vtkQuadCoverSurface& in, vtkInformationV
   this->UpdateProgress(0.25);
 
   // Merge coincident points (to round-off); triangles left with a repeated point are removed.
-  vtkSmartPointer<vtkPolyData> cleaned = MergeCoincidentPoints(tri);
-  counts.mergedPoints = std::max<vtkIdType>(0, UsedPoints(tri) - cleaned->GetNumberOfPoints());
+  vtkSmartPointer<vtkPolyData> cleaned = MergeCoincidentPoints(tri, counts.mergedPoints);
   counts.removedCells += tri->GetNumberOfPolys() - cleaned->GetNumberOfPolys();
   if (cleaned->GetNumberOfPolys() == 0)
   {
