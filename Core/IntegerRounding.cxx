@@ -463,7 +463,9 @@ void correctEdgeLength(
   double cells = 0.0;
   for (int f = 0; f < in.numFaces(); ++f)
   {
-    cells += 0.5 * twiceUVArea(uv, out.cornerSector, f);
+    // a finer grid's cells count as the cells of the uniform grid they replace
+    const double cell = sys.cellScale.size() > 0 ? sys.cellScale[f] : 1.0;
+    cells += 0.5 * twiceUVArea(uv, out.cornerSector, f) * cell * cell;
   }
   if (cells > 0 && std::isfinite(cells))
   {

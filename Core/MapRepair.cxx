@@ -52,7 +52,7 @@ public:
     , sqrtArea_(areaRoots(sys.faceArea))
     , given_(static_cast<long long>(in.options.untangleWork) * in.numFaces())
     , work_(given_)
-    , untangler_{ Dr_, sys.D, sqrtArea_, out.edgeLength, sys.numReal, &work_,
+    , untangler_{ Dr_, sys.D, sqrtArea_, out.edgeLength, sys.cellScale, sys.numReal, &work_,
       Untangler::DefaultTheta, in.options.numberOfThreads }
     , progress_(progress)
     , rankedByQuads_(rankedByQuads(in, sys, out.edgeLength))

@@ -6,6 +6,7 @@
 #include "ConePairs.h"
 #include "FrameField.h"
 #include "ParameterizationSteps.h"
+#include "ThinStrips.h"
 
 #include <Eigen/Geometry>
 
@@ -385,6 +386,9 @@ Parameterization computeParameterization(const Eigen::MatrixX3d& V, const Eigen:
   // ---- the seamless system: unknowns, constraints eliminated, the energy ----
   Eliminator elim = constrainUnknowns(in, field, out, progress.part(0.04, 0.07));
   SeamlessSystem sys = numberUnknowns(elim, out);
+  sys.cellScale =
+    thinStripGridScale(V, F, topo, out.edgeLength, options.maximumThinStripRefinement);
+  out.finerGridTriangles = static_cast<int>((sys.cellScale.array() < 1.0).count());
   progress.report(0.08);
   assembleEnergy(in, field, out, sys, progress.part(0.08, 0.22));
 

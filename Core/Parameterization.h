@@ -121,6 +121,12 @@ struct ParameterizationOptions
   /// vtkQuadCoverSolver runs): a linear map cannot bend inside a triangle larger than a few grid
   /// cells (a CAD export's slivers across a flat face folded the map around its holes); 0: none.
   double maximumTriangleEdge = 3.0;
+  /// Where a strip of the surface between two boundary lines that face each other is narrower
+  /// than a grid edge (the bars of a grille, the surface between two slots), the map's grid is
+  /// made finer around it, down to the strip's width but at most this many times finer
+  /// (thinStripGridScale): on a uniform grid both sides of the strip round onto one grid line,
+  /// which cuts it and joins the holes. 1: a uniform grid everywhere.
+  double maximumThinStripRefinement = 8.0;
 };
 
 /**
@@ -159,6 +165,8 @@ struct Parameterization
   int movedSingularities = 0;
   /// pairs of opposite quarter cones added for quads of even size (conePairGain)
   int addedConePairs = 0;
+  /// triangles where the grid is finer than edgeLength (maximumThinStripRefinement)
+  int finerGridTriangles = 0;
   int branchPoints = 0;         ///< inner points with a non-zero layer shift
   int branchPointsOnGrid = 0;   ///< of those, mapped to integer (u, v) within 1e-6
   int seamEdges = 0;            ///< cut edges

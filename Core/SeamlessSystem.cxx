@@ -258,16 +258,18 @@ public:
     {
       return;
     }
-    totalArea_ += 0.5 * twiceArea;
+    const double cell = sys_.cellScale.size() > 0 ? sys_.cellScale[f] : 1.0;
+    totalArea_ += 0.5 * twiceArea / (cell * cell);
     sys_.faceArea[f] = 0.5 * twiceArea;
     const double w = std::sqrt(0.5 * twiceArea);
+    const double target = scale_ / cell;
     const double angle = field_.theta[f] + out_.comb[f] * Pi / 2;
     const double c = std::cos(angle);
     const double s = std::sin(angle);
-    sys_.rhs[4 * f + 0] = w * scale_ * c;  // grad u . x = U'.x
-    sys_.rhs[4 * f + 1] = w * scale_ * s;  // grad u . y
-    sys_.rhs[4 * f + 2] = w * scale_ * -s; // grad v . x = V'.x
-    sys_.rhs[4 * f + 3] = w * scale_ * c;  // grad v . y
+    sys_.rhs[4 * f + 0] = w * target * c;  // grad u . x = U'.x
+    sys_.rhs[4 * f + 1] = w * target * s;  // grad u . y
+    sys_.rhs[4 * f + 2] = w * target * -s; // grad v . x = V'.x
+    sys_.rhs[4 * f + 3] = w * target * c;  // grad v . y
     for (int r = 0; r < 4; ++r)
     {
       row_[r].clear();

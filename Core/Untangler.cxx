@@ -202,7 +202,8 @@ public:
     {
       const double scale = untangler.sqrtArea[f];
       area_.push_back(scale * scale);
-      toUnitCell_.push_back(untangler.edgeLength / scale);
+      const double cell = untangler.cellScale.size() > 0 ? untangler.cellScale[f] : 1.0;
+      toUnitCell_.push_back(untangler.edgeLength * cell / scale);
       for (int i = 0; i < 4; ++i)
       {
         for (RowMajorMatrix::InnerIterator it(untangler.Dr, 4 * f + i); it; ++it)

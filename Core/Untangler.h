@@ -45,6 +45,8 @@ struct Untangler
   const Eigen::SparseMatrix<double>& Dc;                  // the same, by column
   const Eigen::VectorXd& sqrtArea;                        // per triangle, 0 if skipped
   double edgeLength;                                      // h: J relative to the unit cell
+  /// per triangle, its grid edge over h (SeamlessSystem::cellScale; empty: 1 everywhere)
+  const Eigen::VectorXd& cellScale;
   int numReal;
   /// Work left, in triangle energy evaluations, shared by every run of one repair: runs stop
   /// when it is spent (nullptr: no limit); a Newton step's Hessian and its factorization count

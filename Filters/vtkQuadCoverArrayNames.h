@@ -143,6 +143,9 @@ constexpr const char* MovedSingularities = "MovedSingularities";
 /// field, 1 x int: pairs of opposite quarter cones the solver added for quads of even size
 /// (ConePairGain).
 constexpr const char* AddedConePairs = "AddedConePairs";
+/// Field data of the solver's output: triangles where the map's grid is finer than EdgeLength,
+/// around strips of the surface narrower than a grid edge (MaximumThinStripRefinement).
+constexpr const char* FinerGridTriangles = "FinerGridTriangles";
 /// field, 1 x int, 2 tuples: branch points, and those mapped to a grid point.
 constexpr const char* BranchPointsOnGrid = "BranchPointsOnGrid";
 /// field, 1 x double: largest distance of a seam translation from Z^2 (grid units).

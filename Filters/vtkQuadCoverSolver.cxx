@@ -139,6 +139,7 @@ void AddFigures(
   AddField<vtkIntArray>(fd, names::CancelledSingularityPairs, { double(map.cancelledPairs) });
   AddField<vtkIntArray>(fd, names::MovedSingularities, { double(map.movedSingularities) });
   AddField<vtkIntArray>(fd, names::AddedConePairs, { double(map.addedConePairs) });
+  AddField<vtkIntArray>(fd, names::FinerGridTriangles, { double(map.finerGridTriangles) });
   AddField<vtkIntArray>(
     fd, names::BranchPointsOnGrid, { double(map.branchPoints), double(map.branchPointsOnGrid) });
   AddField<vtkDoubleArray>(fd, names::SeamTranslationError, { map.maxSeamError });
@@ -168,6 +169,7 @@ vtkQuadCoverSolver::vtkQuadCoverSolver()
   this->MinimumSingularitySeparation = defaults.minimumSingularitySeparation;
   this->MaximumTriangleEdge = defaults.maximumTriangleEdge;
   this->ConePairGain = defaults.conePairGain;
+  this->MaximumThinStripRefinement = defaults.maximumThinStripRefinement;
   this->NumberOfThreads = defaults.numberOfThreads;
   this->SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_CELLS, names::FrameU);
   this->SetInputArrayToProcess(1, 0, 0, vtkDataObject::FIELD_ASSOCIATION_CELLS, names::Matching);
@@ -295,7 +297,8 @@ void vtkQuadCoverSolver::Execute(vtkQuadCoverSurface& in, vtkInformationVector* 
     { "CurvatureEdgeLength", this->CurvatureEdgeLength },
     { "MaximumRegridQuadCount", this->MaximumRegridQuadCount },
     { "MinimumSingularitySeparation", this->MinimumSingularitySeparation },
-    { "MaximumTriangleEdge", this->MaximumTriangleEdge }, { "ConePairGain", this->ConePairGain } });
+    { "MaximumTriangleEdge", this->MaximumTriangleEdge }, { "ConePairGain", this->ConePairGain },
+    { "MaximumThinStripRefinement", this->MaximumThinStripRefinement } });
   quadcover::ParameterizationOptions options;
   options.targetEdgeLength = in.InCoreUnits(this->TargetEdgeLength); // for the scaled surface
   options.targetQuadCount = this->TargetQuadCount;
@@ -315,6 +318,7 @@ void vtkQuadCoverSolver::Execute(vtkQuadCoverSurface& in, vtkInformationVector* 
   options.minimumSingularitySeparation = this->MinimumSingularitySeparation;
   options.maximumTriangleEdge = this->MaximumTriangleEdge;
   options.conePairGain = this->ConePairGain;
+  options.maximumThinStripRefinement = this->MaximumThinStripRefinement;
   options.numberOfThreads = this->NumberOfThreads;
   CheckQuadCount(in, options, this->TargetEdgeLength);
   const int refined = RefineLongEdges(in, options, m, U, matching);
@@ -402,6 +406,7 @@ void vtkQuadCoverSolver::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "MinimumSingularitySeparation: " << this->MinimumSingularitySeparation
      << "\n";
   os << indent << "ConePairGain: " << this->ConePairGain << "\n";
+  os << indent << "MaximumThinStripRefinement: " << this->MaximumThinStripRefinement << "\n";
   os << indent << "NumberOfThreads: " << this->NumberOfThreads << "\n";
   os << indent << "SplitSeams: " << (this->SplitSeams ? "On" : "Off") << "\n";
 }

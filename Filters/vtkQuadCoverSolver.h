@@ -228,6 +228,16 @@ public:
   ///@}
 
   ///@{
+  /** Where a strip of the surface between two boundary lines that face each other is narrower
+   * than a grid edge (the bars of a grille, the surface between two slots), the map's grid is
+   * made finer around it, down to the strip's width but at most this many times finer, in
+   * [1, 64] (default 8; 1: a uniform grid): on a uniform grid both sides of such a strip round
+   * onto one grid line, which cuts it and joins the holes. Counted in FinerGridTriangles. */
+  vtkSetClampMacro(MaximumThinStripRefinement, double, 1.0, 64.0);
+  vtkGetMacro(MaximumThinStripRefinement, double);
+  ///@}
+
+  ///@{
   /** Number of threads for the untangling and for the maps of the components (each component
    * on its own), 0 for all cores (default 0). The result does not depend on it. */
   vtkSetClampMacro(NumberOfThreads, int, 0, 1024);
@@ -278,6 +288,7 @@ protected:
   double MinimumSingularitySeparation;
   double MaximumTriangleEdge;
   double ConePairGain;
+  double MaximumThinStripRefinement;
   int NumberOfThreads;
   bool SplitSeams = false;
 

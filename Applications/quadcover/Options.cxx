@@ -379,6 +379,9 @@ std::vector<Option> StageOptions(Pipeline& p)
     QC_NUMBER("param", solver, ConePairGain,
       "a cone pair is added where it lowers the modelled log scale's variance, summed over the "
       "quads, by this, 0: none"),
+    QC_NUMBER("param", solver, MaximumThinStripRefinement,
+      "around a strip between two boundary lines narrower than a grid edge the grid is finer, down "
+      "to the strip's width but at most this many times, 1: uniform"),
     QC_SWITCH("param", solver, SplitSeams,
       "write the surface cut open along the seams, with UV texture coordinates"),
     QC_SWITCH("quads", extractor, RepairInvertedQuads,

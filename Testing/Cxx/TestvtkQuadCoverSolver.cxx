@@ -101,8 +101,14 @@ TEST(vtkQuadCoverSolver, DefaultsClampsAndPrintSelf)
   EXPECT_EQ(s->GetRoundingMode(), vtkQuadCoverSolver::ROUNDING_SIMPLE);
   s->SetBoundaryTolerance(90.0);
   EXPECT_EQ(s->GetBoundaryTolerance(), 45.0);
+  EXPECT_EQ(s->GetMaximumThinStripRefinement(),
+    8.0); // ParameterizationOptions::maximumThinStripRefinement
+  s->SetMaximumThinStripRefinement(0.5);
+  EXPECT_EQ(s->GetMaximumThinStripRefinement(), 1.0);
+  s->SetMaximumThinStripRefinement(4.0);
   std::ostringstream os;
   s->Print(os);
+  EXPECT_NE(os.str().find("MaximumThinStripRefinement: 4"), std::string::npos);
   EXPECT_NE(os.str().find("RoundingMode: Simple"), std::string::npos);
   EXPECT_NE(os.str().find("PureQuads: On"), std::string::npos);
 }

@@ -1,0 +1,207 @@
+// ThinStrips.cxx: the local grid size that keeps strips narrower than a grid edge.
+#include "ThinStrips.h"
+
+#include <Eigen/Geometry>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <functional>
+#include <map>
+#include <queue>
+#include <utility>
+#include <vector>
+
+namespace quadcover
+{
+namespace
+{
+/// A boundary edge: its points, ends and inward direction (in its triangle's plane).
+struct BoundaryEdge
+{
+  int a, b;
+  Eigen::Vector3d p, q, inward;
+};
+
+std::vector<BoundaryEdge> boundaryEdges(
+  const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F, const MeshTopology& topo)
+{
+  std::vector<BoundaryEdge> edges;
+  for (int f = 0; f < topo.numFaces; ++f)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      if (topo.faceNeighbors(f, k) >= 0 || topo.edgeFaceCount[topo.faceEdges(f, k)] != 1)
+      {
+        continue;
+      }
+      const int a = F(f, k), b = F(f, (k + 1) % 3), c = F(f, (k + 2) % 3);
+      const Eigen::Vector3d p = V.row(a).transpose(), q = V.row(b).transpose();
+      const Eigen::Vector3d normal = (q - p).cross(V.row(c).transpose() - p);
+      const Eigen::Vector3d inward = normal.cross(q - p);
+      if (inward.norm() > 0)
+      {
+        edges.push_back({ a, b, p, q, inward.normalized() });
+      }
+    }
+  }
+  return edges;
+}
+
+/// The nearest points s on segment (p0, p1) and t on (q0, q1).
+std::pair<Eigen::Vector3d, Eigen::Vector3d> nearestPoints(const Eigen::Vector3d& p0,
+  const Eigen::Vector3d& p1, const Eigen::Vector3d& q0, const Eigen::Vector3d& q1)
+{
+  const Eigen::Vector3d d1 = p1 - p0, d2 = q1 - q0, r = p0 - q0;
+  const double a = d1.squaredNorm(), e = d2.squaredNorm(), f = d2.dot(r);
+  const double c = d1.dot(r), b = d1.dot(d2), denom = a * e - b * b;
+  double s = denom > 1e-12 * a * e ? std::clamp((b * f - c * e) / denom, 0.0, 1.0) : 0.0;
+  double t = e > 0 ? (b * s + f) / e : 0.0;
+  if (t < 0 || t > 1)
+  {
+    t = std::clamp(t, 0.0, 1.0);
+    s = a > 0 ? std::clamp((t * b - c) / a, 0.0, 1.0) : 0.0;
+  }
+  return { p0 + s * d1, q0 + t * d2 };
+}
+
+/// The width of the strip between two boundary edges that face each other, else -1.
+double stripWidth(const BoundaryEdge& x, const BoundaryEdge& y)
+{
+  if (x.a == y.a || x.a == y.b || x.b == y.a || x.b == y.b || x.inward.dot(y.inward) > -0.5)
+  {
+    return -1.0;
+  }
+  const auto [s, t] = nearestPoints(x.p, x.q, y.p, y.q);
+  const Eigen::Vector3d d = t - s;
+  const double width = d.norm();
+  const bool facing = d.dot(x.inward) > 0.5 * width && -d.dot(y.inward) > 0.5 * width;
+  return width > 0 && facing ? width : -1.0;
+}
+
+/// For each boundary edge, the later ones whose boxes come within `reach` of its own: a grid of
+/// cells `reach` wide over the boxes.
+std::vector<std::vector<int>> nearbyEdges(const std::vector<BoundaryEdge>& edges, double reach)
+{
+  using Cell = std::array<long long, 3>;
+  std::map<Cell, std::vector<int>> cells;
+  auto visit = [&](const BoundaryEdge& e, const std::function<void(const Cell&)>& each) {
+    Cell lo, hi;
+    for (int d = 0; d < 3; ++d)
+    {
+      lo[d] = static_cast<long long>(std::floor((std::min(e.p[d], e.q[d]) - reach) / reach));
+      hi[d] = static_cast<long long>(std::floor((std::max(e.p[d], e.q[d]) + reach) / reach));
+    }
+    for (long long i = lo[0]; i <= hi[0]; ++i)
+    {
+      for (long long j = lo[1]; j <= hi[1]; ++j)
+      {
+        for (long long k = lo[2]; k <= hi[2]; ++k)
+        {
+          each({ i, j, k });
+        }
+      }
+    }
+  };
+  for (std::size_t i = 0; i < edges.size(); ++i)
+  {
+    visit(edges[i], [&](const Cell& c) { cells[c].push_back(static_cast<int>(i)); });
+  }
+  std::vector<std::vector<int>> near(edges.size());
+  for (std::size_t i = 0; i < edges.size(); ++i)
+  {
+    visit(edges[i], [&](const Cell& c) {
+      for (const int j : cells[c])
+      {
+        if (j > static_cast<int>(i))
+        {
+          near[i].push_back(j);
+        }
+      }
+    });
+    std::sort(near[i].begin(), near[i].end());
+    near[i].erase(std::unique(near[i].begin(), near[i].end()), near[i].end());
+  }
+  return near;
+}
+
+/// size(v) = min(size(v), size(w) + gradation |v - w|) over the edges, from the smallest up.
+void spreadSizes(
+  const Eigen::MatrixX3d& V, const MeshTopology& topo, double gradation, std::vector<double>& size)
+{
+  using Entry = std::pair<double, int>;
+  std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> queue;
+  for (int v = 0; v < static_cast<int>(size.size()); ++v)
+  {
+    queue.push({ size[v], v });
+  }
+  std::vector<std::vector<int>> neighbours(size.size());
+  for (int e = 0; e < topo.numEdges(); ++e)
+  {
+    neighbours[topo.edges(e, 0)].push_back(topo.edges(e, 1));
+    neighbours[topo.edges(e, 1)].push_back(topo.edges(e, 0));
+  }
+  while (!queue.empty())
+  {
+    const auto [s, v] = queue.top();
+    queue.pop();
+    if (s > size[v])
+    {
+      continue;
+    }
+    for (const int w : neighbours[v])
+    {
+      const double through = s + gradation * (V.row(v) - V.row(w)).norm();
+      if (through < size[w])
+      {
+        size[w] = through;
+        queue.push({ through, w });
+      }
+    }
+  }
+}
+}
+
+Eigen::VectorXd thinStripGridScale(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F,
+  const MeshTopology& topo, double edgeLength, double maximumRefinement, double gradation)
+{
+  if (!(maximumRefinement > 1) || !(edgeLength > 0) || !std::isfinite(edgeLength))
+  {
+    return {};
+  }
+  const std::vector<BoundaryEdge> edges = boundaryEdges(V, F, topo);
+  const std::vector<std::vector<int>> near = nearbyEdges(edges, edgeLength);
+  const double smallest = edgeLength / maximumRefinement;
+  std::vector<double> size(static_cast<std::size_t>(topo.numVertices), edgeLength);
+  bool thin = false;
+  for (std::size_t i = 0; i < edges.size(); ++i)
+  {
+    for (const int j : near[i])
+    {
+      const double width = stripWidth(edges[i], edges[j]);
+      if (width < 0 || width >= edgeLength)
+      {
+        continue;
+      }
+      thin = true;
+      const double wanted = std::max(width, smallest);
+      for (const int v : { edges[i].a, edges[i].b, edges[j].a, edges[j].b })
+      {
+        size[v] = std::min(size[v], wanted);
+      }
+    }
+  }
+  if (!thin)
+  {
+    return {};
+  }
+  spreadSizes(V, topo, gradation, size);
+  Eigen::VectorXd scale(F.rows());
+  for (int f = 0; f < F.rows(); ++f)
+  {
+    scale[f] = (size[F(f, 0)] + size[F(f, 1)] + size[F(f, 2)]) / (3 * edgeLength);
+  }
+  return scale;
+}
+
+}

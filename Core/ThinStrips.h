@@ -1,0 +1,31 @@
+// ThinStrips.h: where a strip of the surface between two boundary lines is narrower than a grid
+// edge, and the finer grid the map needs there to keep it.
+#ifndef quadcover_ThinStrips_h
+#define quadcover_ThinStrips_h
+
+#include "MeshTopology.h"
+
+#include <Eigen/Core>
+
+namespace quadcover
+{
+
+/**
+ * The grid edge each triangle needs, over edgeLength, so that no strip of the surface between two
+ * boundary lines that face each other is narrower than a grid edge (the bars of a grille, the
+ * surface between two slots): a uniform grid rounds both sides of such a strip onto one grid line
+ * and cuts it, which joins two holes and changes the topology. Two boundary edges face each other
+ * when their inward directions (in their triangles' planes) are opposite within 60 degrees and
+ * each one's nearest point to the other lies within 60 degrees of its inward direction; the strip
+ * between them is as wide as the edges are apart. Their four points ask for that width (never
+ * less than edgeLength / maximumRefinement), and the size grows away from them along the edges
+ * of the surface by `gradation` times the distance walked, up to edgeLength.
+ * @return #F, the mean over each triangle's points, in [1 / maximumRefinement, 1]; empty when no
+ * strip narrower than edgeLength (or maximumRefinement <= 1): the grid stays uniform
+ */
+Eigen::VectorXd thinStripGridScale(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F,
+  const MeshTopology& topo, double edgeLength, double maximumRefinement, double gradation = 0.25);
+
+}
+
+#endif
