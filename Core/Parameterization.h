@@ -94,14 +94,15 @@ struct ParameterizationOptions
   /// quads would not keep the surface's topology (pieces, Euler characteristic, boundary loops),
   /// is rounded and repaired again with up to this many other grid sizes (2, 1/2, 4, 1/4, 8 and
   /// 16 times the quads, in turn, never fewer than minimumComponentQuadCount, 8 and 16 times only
-  /// up to maximumRegridQuadCount) until one has neither (defects but flat triangles: slivers the
-  /// map lays on a line, which no grid gives area), which replaces it, else the first better than
-  /// the first map (the topology first); 0 keeps the first. Maps without defects whose quads keep
-  /// the topology are never touched, nor maps of more than 10 maximumRegridQuadCount triangles
-  /// whose repair spent its whole untangleWork (time); the trials share one untangleWork. A map
-  /// that trials may follow is first repaired with one trial's share; when no trial does better
-  /// and that share was spent, its repair is done again from the start with the whole
-  /// untangleWork (the truck: 7-9 s -> 5-6.5 s, the same maps elsewhere).
+  /// up to maximumRegridQuadCount; a map whose quads keep the topology and, repaired, face the
+  /// right way only 2 and 1/2) until one has neither (defects but flat triangles: slivers the map
+  /// lays on a line, which no grid gives area), which replaces it, else the first better than the
+  /// first map (the topology first); 0 keeps the first. Maps without defects whose quads keep the
+  /// topology are never touched, nor maps of more than 10 maximumRegridQuadCount triangles whose
+  /// repair spent its whole untangleWork (time); the trials share one untangleWork. A map that
+  /// trials may follow is first repaired with one trial's share; when no trial does better and that
+  /// share was spent, its repair is done again from the start with the whole untangleWork (the
+  /// truck: 7-9 s -> 5-6.5 s, the same maps elsewhere).
   int maximumRegrids = 6;
   /// Only maps of at most this many quads are tried on other grids: a small component's grid is
   /// coarse against its singularities, and its trials are cheap.

@@ -270,12 +270,13 @@ int regridTrials(const Inputs& in, const SeamlessSystem& sys, double edgeLength)
 /// does) would not have the surface's topology: rounds the continuous minimizer `continuous` at
 /// other grid sizes (ParameterizationOptions::maximumRegrids of 2, 1/2, 4, 1/4, 8, 16 times the
 /// quads, never fewer than minimumComponentQuadCount, 8 and 16 only up to maximumRegridQuadCount
-/// quads), repairs each, and keeps the first with neither (defects but flat triangles, a sliver
-/// laid on a line, which no grid gives area), else the first better than the map it has (the
-/// topology first, then no defects): x, defects and out (its figures and edgeLength) follow it,
-/// and sys is left scaled for it. Not when the first repair spent its untangling budget on a
-/// surface of more than 10 maximumRegridQuadCount triangles, nor for maps of more than
-/// maximumRegridQuadCount quads. Counts the grids tried in out.regrids.
+/// quads; only 2 and 1/2 when its quads keep the topology and, repaired, face the right way),
+/// repairs each, and keeps the first with neither (defects but flat triangles, a sliver laid on a
+/// line, which no grid gives area), else the first better than the map it has (the topology first,
+/// then no defects): x, defects and out (its figures and edgeLength) follow it, and sys is left
+/// scaled for it. Not when the first repair spent its untangling budget on a surface of more than
+/// 10 maximumRegridQuadCount triangles, nor for maps of more than maximumRegridQuadCount quads.
+/// Counts the grids tried in out.regrids.
 /// @return whether another grid's map replaced the first
 bool regridDefectiveMap(const Inputs& in, const Field& field, SeamlessSystem& sys,
   const HessianFactor& factor, const Eigen::VectorXd& continuous, bool greedy, Eigen::VectorXd& x,

@@ -179,8 +179,10 @@ public:
   /** A map that keeps flipped triangles or points wound the wrong way after its repair, or
    * whose quads would lose the surface's topology, is rounded and repaired again on up to this
    * many other grids (2, 1/2, 4, 1/4, 8 and 16 times the quads, 8 and 16 only up to
-   * MaximumRegridQuadCount), in [0, 6] (default 6); the first with neither replaces it, else
-   * the first better than it (the topology first); 0: none. */
+   * MaximumRegridQuadCount; a map whose quads keep the topology
+   * and, repaired, face the right way only 2 and 1/2), in [0, 6] (default
+   * 6); the first with neither replaces it, else the first better than it (the topology first); 0:
+   * none. */
   vtkSetClampMacro(MaximumRegrids, int, 0, 6);
   vtkGetMacro(MaximumRegrids, int);
   ///@}
