@@ -308,6 +308,76 @@ void repairFirstThenRegrid(const Inputs& in, const Field& field, SeamlessSystem&
   progress.report(1.0);
 }
 
+/// Where the repaired map x keeps defects, the grid ParameterizationOptions::defectGridRefinement
+/// times finer around them (growing back by a quarter of the distance walked, as around thin
+/// strips): the continuous map solved again with the same factor (only the right-hand side
+/// changes), rounded and repaired; kept when it has fewer defects (flipped triangles and points
+/// wound the wrong way), and then counted in out.finerGridTriangles.
+void refineAroundDefects(const Inputs& in, const Field& field, SeamlessSystem& sys,
+  const HessianFactor& factor, bool greedy, Eigen::VectorXd& x, Defects& defects,
+  Parameterization& out, const Progress& progress)
+{
+  const double finer = in.options.defectGridRefinement;
+  if (defects.count() == 0 || !(finer > 1))
+  {
+    return;
+  }
+  const double h = out.edgeLength;
+  std::vector<double> size(static_cast<std::size_t>(in.numVertices()), h);
+  for (const int f : defects.flipped)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      size[in.F(f, k)] = h / finer;
+    }
+  }
+  for (const int p : defects.wrong)
+  {
+    size[p] = h / finer;
+  }
+  spreadGridSizes(in.V, in.topo, 0.25, size);
+  const int nF = in.numFaces();
+  const Eigen::VectorXd oldScale =
+    sys.cellScale.size() > 0 ? sys.cellScale : Eigen::VectorXd::Ones(nF);
+  Eigen::VectorXd newScale = oldScale;
+  const Eigen::VectorXd oldRhs = sys.rhs;
+  const double oldNorm = sys.energyNorm;
+  for (int f = 0; f < nF; ++f)
+  {
+    const double s = (size[in.F(f, 0)] + size[in.F(f, 1)] + size[in.F(f, 2)]) / (3 * h);
+    newScale[f] = std::min(oldScale[f], s);
+    sys.rhs.segment<4>(4 * f) *= oldScale[f] / newScale[f];
+    sys.energyNorm += 2.0 / (h * h) * sys.faceArea[f] *
+      (1.0 / (newScale[f] * newScale[f]) - 1.0 / (oldScale[f] * oldScale[f]));
+  }
+  const Eigen::VectorXd oldCell = sys.cellScale;
+  sys.cellScale = newScale;
+  Eigen::VectorXd xt =
+    factor.solver.solve(Eigen::VectorXd(sys.P.transpose() * (sys.D.transpose() * sys.rhs)));
+  Parameterization trial = out;
+  trial.untangleRegions = 0;
+  trial.untangleEvaluations = 0;
+  const Eigen::VectorXd integers =
+    roundIntegers(in, field, sys, xt, factor, greedy, trial, progress.part(0.0, 0.1));
+  solveWithIntegersFixed(sys, factor, integers, greedy, xt, trial);
+  Defects found;
+  found.flipped = flippedFaces(sys.uv(xt), trial.cornerSector);
+  found.wrong = wrongWindings(in, field, trial, sys.uv(xt));
+  repairMap(in, field, sys, xt, found, trial, progress.part(0.1, 1.0));
+  if (found.count() < defects.count())
+  {
+    trial.untangleEvaluations += out.untangleEvaluations;
+    trial.finerGridTriangles = static_cast<int>((newScale.array() < 1.0).count());
+    out = std::move(trial);
+    x = std::move(xt);
+    defects = std::move(found);
+    return;
+  }
+  sys.rhs = oldRhs;
+  sys.energyNorm = oldNorm;
+  sys.cellScale = oldCell;
+}
+
 /// out.branchPointsOnGrid: the branch points mapped to integer (u, v).
 void countBranchPointsOnGrid(const Field& field, Parameterization& out)
 {
@@ -422,7 +492,11 @@ Parameterization computeParameterization(const Eigen::MatrixX3d& V, const Eigen:
   // ---- flipped triangles untangled, fans wound the wrong way laid out again ----
   defects.wrong = wrongWindings(in, field, out, sys.uv(x));
   repairFirstThenRegrid(
-    in, field, sys, factor, continuous, greedy, round, x, defects, out, progress.part(0.6, 0.98));
+    in, field, sys, factor, continuous, greedy, round, x, defects, out, progress.part(0.6, 0.9));
+  if (round)
+  {
+    refineAroundDefects(in, field, sys, factor, greedy, x, defects, out, progress.part(0.9, 0.98));
+  }
   out.wrongWindings = static_cast<int>(defects.wrong.size());
   out.flipped = static_cast<int>(defects.flipped.size());
   out.energyFinal = sys.energy(x);

@@ -128,6 +128,12 @@ struct ParameterizationOptions
   /// (thinStripGridScale): on a uniform grid both sides of the strip round onto one grid line,
   /// which cuts it and joins the holes. 1: a uniform grid everywhere.
   double maximumThinStripRefinement = 8.0;
+  /// Where the repaired map keeps defects (flipped triangles, points wound the wrong way: a thin
+  /// ear or finger a grid cell around, cones packed closer than a cell), the grid is made this
+  /// many times finer around them, growing back over a few grid edges, and the map is rounded and
+  /// repaired again (the same factorization, a new right-hand side); the new map is kept when it
+  /// has fewer defects. 1: no second map.
+  double defectGridRefinement = 2.0;
 };
 
 /**
@@ -166,7 +172,8 @@ struct Parameterization
   int movedSingularities = 0;
   /// pairs of opposite quarter cones added for quads of even size (conePairGain)
   int addedConePairs = 0;
-  /// triangles where the grid is finer than edgeLength (maximumThinStripRefinement)
+  /// triangles where the grid is finer than edgeLength (maximumThinStripRefinement, or
+  /// defectGridRefinement where it was kept)
   int finerGridTriangles = 0;
   int branchPoints = 0;         ///< inner points with a non-zero layer shift
   int branchPointsOnGrid = 0;   ///< of those, mapped to integer (u, v) within 1e-6

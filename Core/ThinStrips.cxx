@@ -125,8 +125,9 @@ std::vector<std::vector<int>> nearbyEdges(const std::vector<BoundaryEdge>& edges
   return near;
 }
 
-/// size(v) = min(size(v), size(w) + gradation |v - w|) over the edges, from the smallest up.
-void spreadSizes(
+}
+
+void spreadGridSizes(
   const Eigen::MatrixX3d& V, const MeshTopology& topo, double gradation, std::vector<double>& size)
 {
   using Entry = std::pair<double, int>;
@@ -159,7 +160,6 @@ void spreadSizes(
       }
     }
   }
-}
 }
 
 Eigen::VectorXd thinStripGridScale(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F,
@@ -195,7 +195,7 @@ Eigen::VectorXd thinStripGridScale(const Eigen::MatrixX3d& V, const Eigen::Matri
   {
     return {};
   }
-  spreadSizes(V, topo, gradation, size);
+  spreadGridSizes(V, topo, gradation, size);
   Eigen::VectorXd scale(F.rows());
   for (int f = 0; f < F.rows(); ++f)
   {

@@ -170,6 +170,7 @@ vtkQuadCoverSolver::vtkQuadCoverSolver()
   this->MaximumTriangleEdge = defaults.maximumTriangleEdge;
   this->ConePairGain = defaults.conePairGain;
   this->MaximumThinStripRefinement = defaults.maximumThinStripRefinement;
+  this->DefectGridRefinement = defaults.defectGridRefinement;
   this->NumberOfThreads = defaults.numberOfThreads;
   this->SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_CELLS, names::FrameU);
   this->SetInputArrayToProcess(1, 0, 0, vtkDataObject::FIELD_ASSOCIATION_CELLS, names::Matching);
@@ -298,7 +299,8 @@ void vtkQuadCoverSolver::Execute(vtkQuadCoverSurface& in, vtkInformationVector* 
     { "MaximumRegridQuadCount", this->MaximumRegridQuadCount },
     { "MinimumSingularitySeparation", this->MinimumSingularitySeparation },
     { "MaximumTriangleEdge", this->MaximumTriangleEdge }, { "ConePairGain", this->ConePairGain },
-    { "MaximumThinStripRefinement", this->MaximumThinStripRefinement } });
+    { "MaximumThinStripRefinement", this->MaximumThinStripRefinement },
+    { "DefectGridRefinement", this->DefectGridRefinement } });
   quadcover::ParameterizationOptions options;
   options.targetEdgeLength = in.InCoreUnits(this->TargetEdgeLength); // for the scaled surface
   options.targetQuadCount = this->TargetQuadCount;
@@ -319,6 +321,7 @@ void vtkQuadCoverSolver::Execute(vtkQuadCoverSurface& in, vtkInformationVector* 
   options.maximumTriangleEdge = this->MaximumTriangleEdge;
   options.conePairGain = this->ConePairGain;
   options.maximumThinStripRefinement = this->MaximumThinStripRefinement;
+  options.defectGridRefinement = this->DefectGridRefinement;
   options.numberOfThreads = this->NumberOfThreads;
   CheckQuadCount(in, options, this->TargetEdgeLength);
   const int refined = RefineLongEdges(in, options, m, U, matching);
@@ -407,6 +410,7 @@ void vtkQuadCoverSolver::PrintSelf(ostream& os, vtkIndent indent)
      << "\n";
   os << indent << "ConePairGain: " << this->ConePairGain << "\n";
   os << indent << "MaximumThinStripRefinement: " << this->MaximumThinStripRefinement << "\n";
+  os << indent << "DefectGridRefinement: " << this->DefectGridRefinement << "\n";
   os << indent << "NumberOfThreads: " << this->NumberOfThreads << "\n";
   os << indent << "SplitSeams: " << (this->SplitSeams ? "On" : "Off") << "\n";
 }

@@ -240,6 +240,16 @@ public:
   ///@}
 
   ///@{
+  /** Where the repaired map keeps defects (flipped triangles, points wound the wrong way: a
+   * thin ear or finger a grid cell around, say), the grid is made this many times finer around
+   * them, growing back over a few grid edges, and the map is rounded and repaired again; the
+   * second map is kept when it has fewer defects, in [1, 8] (default 2; 1: no second map).
+   * Counted in FinerGridTriangles. */
+  vtkSetClampMacro(DefectGridRefinement, double, 1.0, 8.0);
+  vtkGetMacro(DefectGridRefinement, double);
+  ///@}
+
+  ///@{
   /** Number of threads for the untangling and for the maps of the components (each component
    * on its own), 0 for all cores (default 0). The result does not depend on it. */
   vtkSetClampMacro(NumberOfThreads, int, 0, 1024);
@@ -291,6 +301,7 @@ protected:
   double MaximumTriangleEdge;
   double ConePairGain;
   double MaximumThinStripRefinement;
+  double DefectGridRefinement;
   int NumberOfThreads;
   bool SplitSeams = false;
 

@@ -382,6 +382,9 @@ std::vector<Option> StageOptions(Pipeline& p)
     QC_NUMBER("param", solver, MaximumThinStripRefinement,
       "around a strip between two boundary lines narrower than a grid edge the grid is finer, down "
       "to the strip's width but at most this many times, 1: uniform"),
+    QC_NUMBER("param", solver, DefectGridRefinement,
+      "where the repaired map keeps defects the grid is this many times finer and the map made "
+      "again, kept with fewer defects, 1: not"),
     QC_SWITCH("param", solver, SplitSeams,
       "write the surface cut open along the seams, with UV texture coordinates"),
     QC_SWITCH("quads", extractor, RepairInvertedQuads,

@@ -913,6 +913,8 @@ TEST(Parameterization, AMapThatKeepsDefectsIsTriedOnOtherGrids)
   options.curvatureEdgeLength = 0.0;      // the small tori as coarse as their share says
   options.minimumComponentQuadCount = 12; // per handle: 24 on a torus, as this case was found
   options.maximumRegrids = 0;
+  options.defectGridRefinement = 1.0; // the other grids alone (a finer one around the defects
+                                      // also repairs these maps)
   const Parameterization first = components.map(options);
   options.maximumRegrids = ParameterizationOptions().maximumRegrids;
   const Parameterization regridded = components.map(options);

@@ -297,7 +297,9 @@ TEST_P(QuadsOn, ManifoldAllQuadMeshWithTheInputsTopology)
       {
         misplaced += byValence.count(k) ? 0 : count;
       }
-      EXPECT_LE(misplaced, windings) << "irregular vertices the map does not have";
+      // (a triangle the map keeps flipped can also move one)
+      EXPECT_LE(misplaced, windings + Field(map, names::FlippedTriangles, 2))
+        << "irregular vertices the map does not have";
       if (windings == 0)
       {
         EXPECT_EQ(Field(out, names::IrregularVertices), Field(map, names::BranchPointsOnGrid));
