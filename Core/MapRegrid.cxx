@@ -81,7 +81,8 @@ bool quadsKeepTopology(
 }
 
 /// Do the quads that map uv gives, after the quad stage's repairs (buildQuadMesh with its
-/// defaults), neither turn a corner inside out nor face against the surface?
+/// default options, whatever the quad stage is given), neither turn a corner inside out nor face
+/// against the surface?
 bool quadsFaceRight(
   const Inputs& in, const Eigen::MatrixX2d& uv, const std::vector<int>& cornerSector)
 {
@@ -148,7 +149,8 @@ bool regridDefectiveMap(const Inputs& in, const Field& field, SeamlessSystem& sy
   // the wrong way at its share of 6,500 quads, was clean only at 4 times the quads, whose edges
   // half as long as the body's took the whole teapot's edge RSD from 15.8% to 30.5% (a coarse
   // cone's quads, turned inside out at 500 quads, still try every grid)
-  const bool topologyKept = bestRank == 1 && quadsFaceRight(in, sys.uv(x), out.cornerSector);
+  const bool topologyKept =
+    in.options.pureQuads && bestRank == 1 && quadsFaceRight(in, sys.uv(x), out.cornerSector);
   for (int i = 0; i < tries && bestRank > 0; ++i)
   {
     const double q = QuadFactors[i];

@@ -323,22 +323,31 @@ void refineAroundDefects(const Inputs& in, const Field& field, SeamlessSystem& s
     return;
   }
   const double h = out.edgeLength;
+  const int nF = in.numFaces();
+  const Eigen::VectorXd oldScale =
+    sys.cellScale.size() > 0 ? sys.cellScale : Eigen::VectorXd::Ones(nF);
+  // each defect's points ask for their own grid (finer already around a thin strip) over finer
+  std::vector<double> local(static_cast<std::size_t>(in.numVertices()), 1.0);
+  for (int f = 0; f < nF; ++f)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      local[in.F(f, k)] = std::min(local[in.F(f, k)], oldScale[f]);
+    }
+  }
   std::vector<double> size(static_cast<std::size_t>(in.numVertices()), h);
   for (const int f : defects.flipped)
   {
     for (int k = 0; k < 3; ++k)
     {
-      size[in.F(f, k)] = h / finer;
+      size[in.F(f, k)] = h * local[in.F(f, k)] / finer;
     }
   }
   for (const int p : defects.wrong)
   {
-    size[p] = h / finer;
+    size[p] = h * local[p] / finer;
   }
   spreadGridSizes(in.V, in.topo, 0.25, size);
-  const int nF = in.numFaces();
-  const Eigen::VectorXd oldScale =
-    sys.cellScale.size() > 0 ? sys.cellScale : Eigen::VectorXd::Ones(nF);
   Eigen::VectorXd newScale = oldScale;
   const Eigen::VectorXd oldRhs = sys.rhs;
   const double oldNorm = sys.energyNorm;
@@ -357,16 +366,27 @@ void refineAroundDefects(const Inputs& in, const Field& field, SeamlessSystem& s
   Parameterization trial = out;
   trial.untangleRegions = 0;
   trial.untangleEvaluations = 0;
+  trial.untangleSeconds = 0.0;
+  trial.untangleBudgetSpent = false;
+  trial.separatedBranchPoints = 0;
+  trial.separatedBoundaryLines = 0;
   const Eigen::VectorXd integers =
     roundIntegers(in, field, sys, xt, factor, greedy, trial, progress.part(0.0, 0.1));
   solveWithIntegersFixed(sys, factor, integers, greedy, xt, trial);
   Defects found;
   found.flipped = flippedFaces(sys.uv(xt), trial.cornerSector);
+  trial.flippedRounded = static_cast<int>(found.flipped.size());
+  trial.energyRounded = sys.energy(xt);
   found.wrong = wrongWindings(in, field, trial, sys.uv(xt));
   repairMap(in, field, sys, xt, found, trial, progress.part(0.1, 1.0));
+  // the work and time of both maps count, whichever is kept
+  out.untangleEvaluations += trial.untangleEvaluations;
+  out.untangleSeconds += trial.untangleSeconds;
   if (found.count() < defects.count())
   {
-    trial.untangleEvaluations += out.untangleEvaluations;
+    trial.untangleEvaluations = out.untangleEvaluations;
+    trial.untangleSeconds = out.untangleSeconds;
+    trial.untangleRegions += out.untangleRegions;
     trial.finerGridTriangles = static_cast<int>((newScale.array() < 1.0).count());
     out = std::move(trial);
     x = std::move(xt);

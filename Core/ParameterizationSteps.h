@@ -117,12 +117,13 @@ struct SeamlessSystem
   /// 4 #F x #symbols: sqrt(A) (grad u . x, grad u . y, grad v . x, grad v . y) per triangle
   SparseMatrix D;
   SparseMatrix H;           ///< #columns x #columns: P^T D^T D P
-  Eigen::VectorXd rhs;      ///< 4 #F: sqrt(A) times the combed frame (U', V') / edgeLength
+  /// 4 #F: sqrt(A) times the combed frame (U', V') / (edgeLength cellScale)
+  Eigen::VectorXd rhs;
   Eigen::VectorXd faceArea; ///< #F: 0 for a degenerate triangle (left out of the energy)
   /// #F: the grid edge wanted in each triangle over the map's edge length (thinStripGridScale);
   /// empty: 1 everywhere
   Eigen::VectorXd cellScale;
-  double energyNorm = 0.0;  ///< 2 area / edgeLength^2: the energy's scale
+  double energyNorm = 0.0; ///< 2 sum A / cellScale^2 / edgeLength^2: the energy's scale
 
   int numColumns() const { return numReal + numInteger; }
 

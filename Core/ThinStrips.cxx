@@ -111,7 +111,8 @@ std::vector<std::vector<int>> nearbyEdges(const std::vector<BoundaryEdge>& edges
   for (std::size_t i = 0; i < edges.size(); ++i)
   {
     visit(edges[i], [&](const Cell& c) {
-      for (const int j : cells[c])
+      const auto it = cells.find(c);
+      for (const int j : it->second)
       {
         if (j > static_cast<int>(i))
         {
@@ -130,6 +131,7 @@ std::vector<std::vector<int>> nearbyEdges(const std::vector<BoundaryEdge>& edges
 void spreadGridSizes(
   const Eigen::MatrixX3d& V, const MeshTopology& topo, double gradation, std::vector<double>& size)
 {
+  gradation = std::max(0.0, gradation); // a negative one would never settle
   using Entry = std::pair<double, int>;
   std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> queue;
   for (int v = 0; v < static_cast<int>(size.size()); ++v)

@@ -7,6 +7,8 @@
 
 #include <Eigen/Core>
 
+#include <vector>
+
 namespace quadcover
 {
 
@@ -23,14 +25,13 @@ namespace quadcover
  * @return #F, the mean over each triangle's points, in [1 / maximumRefinement, 1]; empty when no
  * strip narrower than edgeLength (or maximumRefinement <= 1): the grid stays uniform
  */
+Eigen::VectorXd thinStripGridScale(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F,
+  const MeshTopology& topo, double edgeLength, double maximumRefinement, double gradation = 0.25);
+
 /// size(v) = min over the points w of size(w) + gradation times the shortest edge path from w to v
 /// (Dijkstra from the smallest sizes up).
 void spreadGridSizes(
   const Eigen::MatrixX3d& V, const MeshTopology& topo, double gradation, std::vector<double>& size);
-
-Eigen::VectorXd thinStripGridScale(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F,
-  const MeshTopology& topo, double edgeLength, double maximumRefinement, double gradation = 0.25);
-
 }
 
 #endif

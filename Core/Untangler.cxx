@@ -468,7 +468,7 @@ private:
   const Untangler& untangler_;
   const std::vector<int> columns_;
   std::vector<double> area_;        // per face of the energy: its area
-  std::vector<double> toUnitCell_;  // per face: edgeLength / sqrt(area), J relative to the cell
+  std::vector<double> toUnitCell_;  // per face: edgeLength cellScale / sqrt(area), J to the cell
   std::vector<int> rowBegin_;       // per row (4 per face): where its terms begin
   std::vector<double> coefficient_; // per term: D's coefficient
   std::vector<int> slot_;           // per term: the slot of its symbol

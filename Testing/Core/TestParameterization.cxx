@@ -942,6 +942,29 @@ TEST(Parameterization, AMapThatKeepsDefectsIsTriedOnOtherGrids)
   EXPECT_EQ(c.map.regrids, 0);
 }
 
+TEST(Parameterization, AFinerGridAroundTheDefectsRepairsTheMapsOfTheSmallTori)
+{
+  // the same small tori without other grids: a second map, on a grid twice as fine around the
+  // defects the first kept, keeps fewer, and stays seamless with its branch points on the grid
+  const SmoothestComponents components;
+  ParameterizationOptions options;
+  options.targetQuadCount = 6500;
+  options.curvatureEdgeLength = 0.0;
+  options.minimumComponentQuadCount = 12;
+  options.maximumRegrids = 0;
+  options.defectGridRefinement = 1.0;
+  const Parameterization first = components.map(options);
+  options.defectGridRefinement = 2.0;
+  const Parameterization second = components.map(options);
+  ASSERT_GT(first.flipped + first.wrongWindings, 0) << "the case this test is about";
+  EXPECT_EQ(first.finerGridTriangles, 0);
+  EXPECT_GT(second.finerGridTriangles, 0);
+  EXPECT_LT(second.flipped + second.wrongWindings, first.flipped + first.wrongWindings);
+  EXPECT_EQ(second.branchPointsOnGrid, second.branchPoints);
+  EXPECT_LT(second.maxSeamError, 1e-9) << "still seamless";
+  EXPECT_GE(second.untangleEvaluations, first.untangleEvaluations) << "both maps' work counted";
+}
+
 TEST(Parameterization, AComponentGetsItsMinimumOfQuadsForEachHandle)
 {
   // A sphere with a small torus beside it: by area the torus would get about 11 of 600 quads;

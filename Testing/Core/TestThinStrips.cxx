@@ -145,9 +145,8 @@ TEST(ThinStrips, TheGridIsAsFineAsTheStripIsWide)
 
 TEST(ThinStrips, ASlotIsNoStrip)
 {
-  // one slot a fifth of a grid edge wide, and a strip between the plate's edge and a slot as
-  // wide as three grid edges: the slot's sides face each other across the hole, not across the
-  // surface
+  // one slot a fifth of a grid edge wide (the plate's edge 8 grid edges from it across and 4
+  // along): the slot's sides face each other across the hole, not across the surface
   const int n = 80;
   const Surface s = makeSlottedPlate(n, { 40 }, 20, 60);
   const MeshTopology topo = buildTopology(s.F, static_cast<int>(s.V.rows()));
