@@ -1,5 +1,6 @@
 // IntegerRounding.cxx: the integer-grid map's solves: the continuous minimizer (and the edge
 // length corrected by its area), its integer unknowns rounded, the re-solve with them fixed.
+#include "NearbyPoints.h"
 #include "ParameterizationSteps.h"
 
 #include <Eigen/Cholesky>
@@ -258,59 +259,18 @@ private:
   }
 
   /// For each boundary line edge, the later ones (in order) whose middles may lie within
-  /// 2 h + their half lengths of its own, the test addLinePairs makes: a grid of cells of that
-  /// reach over the middles, so that a long boundary does not cost every pair of its edges.
+  /// 2 h + their half lengths of its own, the test addLinePairs makes (nearbyPoints).
   static std::vector<std::vector<int>> nearbyEdges(const std::vector<LineEdge>& edges, double h)
   {
     double longest = 0.0;
+    std::vector<Eigen::Vector3d> middles;
+    middles.reserve(edges.size());
     for (const LineEdge& e : edges)
     {
       longest = std::max(longest, e.length);
+      middles.push_back(e.middle);
     }
-    const double reach = 2 * h + longest;
-    const bool grid = reach > 0 && std::isfinite(reach); // else one cell: every pair
-    using Cell = std::array<long long, 3>;
-    auto cellOf = [&](const LineEdge& e) {
-      Cell c{ 0, 0, 0 };
-      for (int d = 0; grid && d < 3; ++d)
-      {
-        c[d] = static_cast<long long>(std::floor(e.middle[d] / reach));
-      }
-      return c;
-    };
-    std::vector<std::vector<int>> near(edges.size());
-    std::map<Cell, std::vector<int>> cells;
-    for (std::size_t i = 0; i < edges.size(); ++i)
-    {
-      cells[cellOf(edges[i])].push_back(static_cast<int>(i));
-    }
-    for (std::size_t i = 0; i < edges.size(); ++i)
-    {
-      const Cell c = cellOf(edges[i]);
-      for (long long dx = -1; dx <= 1; ++dx)
-      {
-        for (long long dy = -1; dy <= 1; ++dy)
-        {
-          for (long long dz = -1; dz <= 1; ++dz)
-          {
-            const auto it = cells.find({ c[0] + dx, c[1] + dy, c[2] + dz });
-            if (it == cells.end())
-            {
-              continue;
-            }
-            for (const int j : it->second)
-            {
-              if (j > static_cast<int>(i))
-              {
-                near[i].push_back(j);
-              }
-            }
-          }
-        }
-      }
-      std::sort(near[i].begin(), near[i].end()); // in order, as every pair was before
-    }
-    return near;
+    return nearbyPoints(middles, 2 * h + longest);
   }
 
   /// a - b (in symbols) in integer unknowns: index j for column numReal + j, so that a real
@@ -464,7 +424,7 @@ void correctEdgeLength(
   for (int f = 0; f < in.numFaces(); ++f)
   {
     // a finer grid's cells count as the cells of the uniform grid they replace
-    const double cell = sys.cellScale.size() > 0 ? sys.cellScale[f] : 1.0;
+    const double cell = sys.cell(f);
     cells += 0.5 * twiceUVArea(uv, out.cornerSector, f) * cell * cell;
   }
   if (cells > 0 && std::isfinite(cells))

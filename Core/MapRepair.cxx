@@ -226,7 +226,7 @@ private:
       direction += stretch * cornerAngle(in_, f, k);
       // place the face's other ring point (corner k + 2) in this face's chart
       const Eigen::Vector3d b = in_.V.row(in_.F(f, (k + 2) % 3)) - in_.V.row(in_.F(f, k));
-      const double cell = sys_.cellScale.size() > 0 ? sys_.cellScale[f] : 1.0;
+      const double cell = sys_.cell(f);
       const double radius = b.norm() / (out_.edgeLength * cell); // in the local grid's units
       const Eigen::Vector2d target(sys_.sectorValue(xs, cone, 0) + radius * std::cos(direction),
         sys_.sectorValue(xs, cone, 1) + radius * std::sin(direction));

@@ -126,6 +126,8 @@ struct SeamlessSystem
   double energyNorm = 0.0; ///< 2 sum A / cellScale^2 / edgeLength^2: the energy's scale
 
   int numColumns() const { return numReal + numInteger; }
+  /// cellScale of face f (1 when cellScale is empty)
+  double cell(int f) const { return cellScale.size() > 0 ? cellScale[f] : 1.0; }
 
   /// Coordinate c (0: u, 1: v) of a sector, from the symbols' values.
   double sectorValue(const Eigen::VectorXd& symbols, int sector, int c) const

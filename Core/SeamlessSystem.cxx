@@ -258,7 +258,7 @@ public:
     {
       return;
     }
-    const double cell = sys_.cellScale.size() > 0 ? sys_.cellScale[f] : 1.0;
+    const double cell = sys_.cell(f);
     totalArea_ += 0.5 * twiceArea / (cell * cell);
     sys_.faceArea[f] = 0.5 * twiceArea;
     const double w = std::sqrt(0.5 * twiceArea);

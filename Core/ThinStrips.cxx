@@ -1,13 +1,13 @@
 // ThinStrips.cxx: the local grid size that keeps strips narrower than a grid edge.
 #include "ThinStrips.h"
 
+#include "NearbyPoints.h"
+
 #include <Eigen/Geometry>
 
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <functional>
-#include <map>
 #include <queue>
 #include <utility>
 #include <vector>
@@ -79,51 +79,19 @@ double stripWidth(const BoundaryEdge& x, const BoundaryEdge& y)
   return width > 0 && facing ? width : -1.0;
 }
 
-/// For each boundary edge, the later ones whose boxes come within `reach` of its own: a grid of
-/// cells `reach` wide over the boxes.
+/// For each boundary edge, the later ones that may lie within `reach` of it: those whose middles
+/// lie within reach plus the longest edge of its own (nearbyPoints).
 std::vector<std::vector<int>> nearbyEdges(const std::vector<BoundaryEdge>& edges, double reach)
 {
-  using Cell = std::array<long long, 3>;
-  std::map<Cell, std::vector<int>> cells;
-  auto visit = [&](const BoundaryEdge& e, const std::function<void(const Cell&)>& each) {
-    Cell lo, hi;
-    for (int d = 0; d < 3; ++d)
-    {
-      lo[d] = static_cast<long long>(std::floor((std::min(e.p[d], e.q[d]) - reach) / reach));
-      hi[d] = static_cast<long long>(std::floor((std::max(e.p[d], e.q[d]) + reach) / reach));
-    }
-    for (long long i = lo[0]; i <= hi[0]; ++i)
-    {
-      for (long long j = lo[1]; j <= hi[1]; ++j)
-      {
-        for (long long k = lo[2]; k <= hi[2]; ++k)
-        {
-          each({ i, j, k });
-        }
-      }
-    }
-  };
-  for (std::size_t i = 0; i < edges.size(); ++i)
+  double longest = 0.0;
+  std::vector<Eigen::Vector3d> middles;
+  middles.reserve(edges.size());
+  for (const BoundaryEdge& e : edges)
   {
-    visit(edges[i], [&](const Cell& c) { cells[c].push_back(static_cast<int>(i)); });
+    longest = std::max(longest, (e.q - e.p).norm());
+    middles.push_back(0.5 * (e.p + e.q));
   }
-  std::vector<std::vector<int>> near(edges.size());
-  for (std::size_t i = 0; i < edges.size(); ++i)
-  {
-    visit(edges[i], [&](const Cell& c) {
-      const auto it = cells.find(c);
-      for (const int j : it->second)
-      {
-        if (j > static_cast<int>(i))
-        {
-          near[i].push_back(j);
-        }
-      }
-    });
-    std::sort(near[i].begin(), near[i].end());
-    near[i].erase(std::unique(near[i].begin(), near[i].end()), near[i].end());
-  }
-  return near;
+  return nearbyPoints(middles, reach + longest);
 }
 
 }
