@@ -95,7 +95,7 @@ Eigen::VectorXd fitFramesToMatchings(const Eigen::MatrixX3d& V, const Eigen::Mat
   }
   Eigen::SparseMatrix<double> H(n, n);
   H.setFromTriplets(t.begin(), t.end());
-  SpdSolver<double> solver;
+  SpdSolver<double> solver{ Factorization::Automatic };
   solver.compute(H);
   if (solver.info() != Eigen::Success)
   {

@@ -517,7 +517,7 @@ std::vector<Eigen::VectorXcd> globalStarts(
   }
   // One factorization serves both: the shift is far below the smallest nonzero eigenvalue's
   // scale, so the aligned solution barely feels it.
-  SpdSolver<Complex> solver;
+  SpdSolver<Complex> solver{ Factorization::Automatic };
   if (!G.factor(shift, solver))
   {
     return starts;
@@ -596,7 +596,7 @@ Eigen::VectorXd frameCoherence(const Smoothing& s, double radius)
   }
   Eigen::SparseMatrix<Complex> A(nf, nf);
   A.setFromTriplets(triplets.begin(), triplets.end());
-  SpdSolver<Complex> solver;
+  SpdSolver<Complex> solver{ Factorization::Automatic };
   solver.compute(A);
   if (solver.info() != Eigen::Success)
   {

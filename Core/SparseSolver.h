@@ -29,7 +29,12 @@ namespace quadcover
 enum class Factorization
 {
   Supernodal,
-  Simplicial
+  Simplicial,
+  /// Simplicial where the factor costs fewer than 100 flops per entry, else supernodal: a
+  /// triangle's three neighbours leave little fill on a mesh of 100k triangles (armadillo's
+  /// frame systems: 61 flops per entry, simplicial factored in 0.2 s against 0.35 s), and
+  /// more on finer ones (four times as many triangles: a tie).
+  Automatic
 };
 
 #ifdef QUADCOVER_HAVE_CHOLMOD
@@ -49,8 +54,10 @@ public:
   explicit CholmodLLT(Factorization storage = Factorization::Supernodal)
   {
     this->m_cholmod.final_asis = 1;
-    this->m_cholmod.supernodal =
-      storage == Factorization::Supernodal ? CHOLMOD_SUPERNODAL : CHOLMOD_SIMPLICIAL;
+    this->m_cholmod.supernodal = storage == Factorization::Supernodal ? CHOLMOD_SUPERNODAL
+      : storage == Factorization::Simplicial                          ? CHOLMOD_SIMPLICIAL
+                                                                      : CHOLMOD_AUTO;
+    this->m_cholmod.supernodal_switch = 100.0;
   }
 
   CholmodLLT& compute(const MatrixType& matrix)
@@ -80,7 +87,17 @@ public:
     std::vector<int> member(n, 0), perm(n);
     std::fill(member.end() - last, member.end(), 1);
     cholmod_common& c = this->m_cholmod;
-    if (!cholmod_camd(&A, nullptr, 0, member.data(), perm.data(), &c))
+    // rows denser than 5 sqrt(n) ordered last without elimination (CAMD's default is 10): the
+    // integers of long seams reach a few thousand entries in the map's system and took CAMD
+    // 0.25 s at 86k unknowns, 0.07 s at 5 (Benchmarks/README.md)
+    const int current = c.current; // cholmod_camd reads the current method's controls
+    const double dense = c.method[0].prune_dense;
+    c.current = 0;
+    c.method[0].prune_dense = 5.0;
+    const int ordered = cholmod_camd(&A, nullptr, 0, member.data(), perm.data(), &c);
+    c.method[0].prune_dense = dense;
+    c.current = current;
+    if (!ordered)
     {
       this->analyzePattern(matrix);
       return;
