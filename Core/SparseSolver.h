@@ -182,6 +182,28 @@ public:
     Base::factorize(matrix);
   }
 
+  /// solve(b) that several threads may call at once on one factor: CHOLMOD's workspace and
+  /// counters are then a cholmod_common of the call's own, not the solver's.
+  Eigen::Matrix<typename MatrixType::Scalar, Eigen::Dynamic, 1> solveConcurrently(
+    const Eigen::Matrix<typename MatrixType::Scalar, Eigen::Dynamic, 1>& b) const
+  {
+    using Vector = Eigen::Matrix<typename MatrixType::Scalar, Eigen::Dynamic, 1>;
+    const OneBlasThread one;
+    cholmod_common c;
+    cholmod_start(&c);
+    Vector rhs = b;
+    cholmod_dense B = Eigen::viewAsCholmod(rhs);
+    cholmod_dense* X = cholmod_solve(CHOLMOD_A, this->m_cholmodFactor, &B, &c);
+    Vector x;
+    if (X)
+    {
+      x = Eigen::Map<const Vector>(static_cast<const typename MatrixType::Scalar*>(X->x), b.size());
+      cholmod_free_dense(&X, &c);
+    }
+    cholmod_finish(&c);
+    return x;
+  }
+
   template<typename Rhs, typename Dest>
   void _solve_impl(const Eigen::MatrixBase<Rhs>& b, Eigen::MatrixBase<Dest>& dest) const
   {
@@ -212,6 +234,12 @@ public:
     this->analyzePattern(matrix);
   }
   bool inverseOfLast(int, Eigen::MatrixXd&) const { return false; }
+  /// solve(b); Eigen's solves keep no state in the solver.
+  Eigen::Matrix<Scalar, Eigen::Dynamic, 1> solveConcurrently(
+    const Eigen::Matrix<Scalar, Eigen::Dynamic, 1>& b) const
+  {
+    return this->solve(b);
+  }
 };
 #endif
 }
