@@ -213,11 +213,12 @@ public:
   double totalArea() const { return totalArea_; }
   const Eigen::VectorXd& area() const { return area_; }
 
-  /// u~ of the given charges (curvature, each point's sum zero per component).
-  Eigen::VectorXd response(const Eigen::VectorXd& charges) const
+  /// u~ of the given charges (curvature, each point's sum zero per component); of each column
+  /// of them, solved at once (one pass over each factor for all).
+  Eigen::MatrixXd response(const Eigen::MatrixXd& charges) const
   {
-    const Eigen::VectorXd u = laplacian_.solve(charges);
-    return diffusion_.solve(Eigen::VectorXd(area_.cwiseProduct(u)));
+    const Eigen::MatrixXd u = laplacian_.solve(charges);
+    return diffusion_.solve(Eigen::MatrixXd(area_.asDiagonal() * u));
   }
 
   /// u less each component's area-weighted mean.
@@ -392,7 +393,7 @@ ConePairs conePairsForEvenScale(const Eigen::MatrixX3d& V, const Eigen::MatrixX3
   {
     charges[v] = model.area()[v] > 0 ? 2.0 * Pi * index[v] - defect[v] : 0.0;
   }
-  Eigen::VectorXd u = model.response(charges);
+  Eigen::VectorXd u = model.response(charges).col(0);
   // points no new cone may take: near a singularity or the boundary, or where the ring is not a
   // disk
   const EdgeDistances distances(V, topo);
@@ -420,12 +421,17 @@ ConePairs conePairsForEvenScale(const Eigen::MatrixX3d& V, const Eigen::MatrixX3
     // the best few by the first order, measured; the best taken, and each other one that still
     // gains enough with those taken before it and is not near them
     std::vector<std::pair<Dipole, Eigen::VectorXd>> measured;
-    for (std::size_t i = 0; i < dipoles.size() && i < MeasuredDipoles; ++i)
+    const int m = static_cast<int>(std::min(dipoles.size(), MeasuredDipoles));
+    Eigen::MatrixXd charge = Eigen::MatrixXd::Zero(n, m);
+    for (int i = 0; i < m; ++i)
     {
-      Eigen::VectorXd charge = Eigen::VectorXd::Zero(n);
-      charge[dipoles[i].plus] = Pi / 2;
-      charge[dipoles[i].minus] = -Pi / 2;
-      Eigen::VectorXd response = model.response(charge);
+      charge(dipoles[i].plus, i) = Pi / 2;
+      charge(dipoles[i].minus, i) = -Pi / 2;
+    }
+    const Eigen::MatrixXd responses = m > 0 ? model.response(charge) : Eigen::MatrixXd();
+    for (int i = 0; i < m; ++i)
+    {
+      Eigen::VectorXd response = responses.col(i);
       const double gain = variance - model.variance(u + response);
       measured.push_back({ { dipoles[i].plus, dipoles[i].minus, gain }, std::move(response) });
     }
