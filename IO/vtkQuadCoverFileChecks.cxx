@@ -8,7 +8,6 @@
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
-#include <sstream>
 
 namespace vtkQuadCoverFileChecks
 {
@@ -55,16 +54,25 @@ struct ObjFaces
 std::string CheckObjFace(const std::string& line, long long number, bool cut, ObjFaces& faces)
 {
   // Tokens "i", "i/t", "i//n" or "i/t/n"; negative i counts back from the last vertex.
-  std::istringstream tokens(line.substr(2));
-  std::string token;
+  // Read in place, without a string stream per line.
+  const char* p = line.c_str() + 2;
   int count = 0;
-  while (tokens >> token)
+  for (;;)
   {
+    while (std::isspace(static_cast<unsigned char>(*p)))
+    {
+      ++p;
+    }
     char* end = nullptr;
-    const long long i = std::strtoll(token.c_str(), &end, 10);
-    if (end == token.c_str())
+    const long long i = std::strtoll(p, &end, 10);
+    if (end == p)
     {
       break;
+    }
+    p = end;
+    while (*p != '\0' && !std::isspace(static_cast<unsigned char>(*p)))
+    {
+      ++p; // the rest of the token: "/t/n"
     }
     if (i == 0 || (i < 0 && -i > faces.vertices))
     {
