@@ -3,8 +3,9 @@
 
 Compares the components of QUADS with those of INPUT (the repaired input surface, as
 `quadcover IN -o REF.vtp --stage repair` writes it): per component the Euler characteristic and
-the number of boundary loops, as multisets. Uses ../shared/tools/quadeval.py (the independent
-ruler) for the faces against the input's normal, non-manifold and misoriented edges.
+the number of boundary loops, as multisets, and counts the points of QUADS where faces touch in
+separate fans (pinched points). Uses ../shared/tools/quadeval.py (the independent ruler) for the
+faces against the input's normal, non-manifold and misoriented edges.
 """
 import json
 import os
@@ -86,6 +87,34 @@ def components(F):
     return sorted((c[0] - c[1] + c[2], loops[r]) for r, c in comp.items())
 
 
+def pinched_points(F):
+    """Points whose faces fall into several fans (joined only through the point: two pieces, or
+    two boundary loops, touching there); a manifold mesh has none. quadeval.py checks the edges
+    only."""
+    around = defaultdict(list)
+    for i, f in enumerate(F):
+        for k, v in enumerate(f):
+            around[v].append((i, f[(k + 1) % len(f)], f[k - 1]))
+    pinched = 0
+    for v, corners in around.items():
+        fan = {i: i for i, _, _ in corners}
+
+        def root(a):
+            while fan[a] != a:
+                fan[a] = fan[fan[a]]
+                a = fan[a]
+            return a
+
+        first = {}
+        for i, after, before in corners:
+            for w in (after, before):
+                if w != v:
+                    j = first.setdefault(w, i)
+                    fan[root(i)] = root(j)
+        pinched += len({root(i) for i, _, _ in corners}) > 1
+    return pinched
+
+
 def main():
     out, ref = sys.argv[1], sys.argv[2]
     quads, surface = faces(read(out)), faces(read(ref))
@@ -96,14 +125,15 @@ def main():
     res = {
         "non_quads": q["non_quads"], "faces": q["faces"],
         "nonmanifold_edges": q["nonmanifold_edges"], "misoriented_edges": q["misoriented_edges"],
+        "pinched_points": pinched_points(quads),
         "against_normal": q["faces_against_ref_normal"], "hausdorff_pct": q["hausdorff_pct_diag"],
         "components": [len(qc), len(sc)], "chi": [sum(c[0] for c in qc), sum(c[0] for c in sc)],
         "loops": [sum(c[1] for c in qc), sum(c[1] for c in sc)],
         "irregular": q["irregular_interior"], "rsd_edge": q["rsd_edge_pct"],
     }
     res["valid"] = (q["faces"] > 0 and q["non_quads"] == 0 and q["nonmanifold_edges"] == 0
-                    and q["misoriented_edges"] == 0 and q["faces_against_ref_normal"] == 0
-                    and qc == sc)
+                    and q["misoriented_edges"] == 0 and res["pinched_points"] == 0
+                    and q["faces_against_ref_normal"] == 0 and qc == sc)
     print(json.dumps(res))
 
 

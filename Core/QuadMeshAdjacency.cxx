@@ -1,10 +1,13 @@
-// QuadMeshAdjacency.cxx: vertexQuads, quadMeshBoundary, onSurfaceBoundary, verticesNear.
+// QuadMeshAdjacency.cxx: vertexQuads, quadMeshBoundary, onSurfaceBoundary, verticesNear,
+// splitPinchedVertices.
 #include "QuadMeshAdjacency.h"
 
 #include "SurfaceLocator.h"
+#include "UnionFind.h"
 
 #include <algorithm>
 #include <map>
+#include <numeric>
 #include <utility>
 
 namespace quadcover
@@ -116,4 +119,76 @@ std::vector<char> verticesNear(const QuadMesh& mesh, const std::vector<int>& qua
   return near;
 }
 
+int splitPinchedVertices(QuadMesh& mesh)
+{
+  const VertexQuads around = vertexQuads(mesh);
+  const int nV = static_cast<int>(mesh.V.rows());
+  std::vector<int> source; // the vertex each copy copies
+  for (int v = 0; v < nV; ++v)
+  {
+    // its quads (a degenerate one lists v twice), joined where they share an edge at v
+    std::vector<int> quads(
+      around.quads.begin() + around.offsets[v], around.quads.begin() + around.offsets[v + 1]);
+    quads.erase(std::unique(quads.begin(), quads.end()), quads.end());
+    if (quads.size() < 2)
+    {
+      continue;
+    }
+    std::vector<int> fan(quads.size());
+    std::iota(fan.begin(), fan.end(), 0);
+    std::map<int, int> across; // the other end of an edge at v -> the first of its quads met
+    for (int i = 0; i < static_cast<int>(quads.size()); ++i)
+    {
+      for (int k = 0; k < 4; ++k)
+      {
+        if (mesh.Q(quads[i], k) != v)
+        {
+          continue;
+        }
+        for (const int w : { mesh.Q(quads[i], (k + 1) % 4), mesh.Q(quads[i], (k + 3) % 4) })
+        {
+          const auto [at, first] = across.emplace(w, i);
+          if (w != v && !first)
+          {
+            unite(fan, i, at->second);
+          }
+        }
+      }
+    }
+    // the fan of the lowest quad keeps v; each other fan gets a copy
+    std::map<int, int> copyOf; // a fan's root -> its vertex
+    copyOf[findRoot(fan, 0)] = v;
+    for (int i = 0; i < static_cast<int>(quads.size()); ++i)
+    {
+      const auto [at, added] =
+        copyOf.emplace(findRoot(fan, i), nV + static_cast<int>(source.size()));
+      if (added)
+      {
+        source.push_back(v);
+      }
+      for (int k = 0; k < 4; ++k)
+      {
+        if (mesh.Q(quads[i], k) == v)
+        {
+          mesh.Q(quads[i], k) = at->second;
+        }
+      }
+    }
+  }
+  const int copies = static_cast<int>(source.size());
+  mesh.V.conservativeResize(nV + copies, 3);
+  for (int c = 0; c < copies; ++c)
+  {
+    mesh.V.row(nV + c) = mesh.V.row(source[c]);
+    if (mesh.vertexTriangle.size() == static_cast<std::size_t>(nV) + c)
+    {
+      mesh.vertexTriangle.push_back(mesh.vertexTriangle[source[c]]);
+    }
+    if (mesh.vertexPoint.size() == static_cast<std::size_t>(nV) + c)
+    {
+      mesh.vertexPoint.push_back(mesh.vertexPoint[source[c]]);
+    }
+  }
+  return copies;
+}
 }

@@ -35,6 +35,14 @@ bool onSurfaceBoundary(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F,
 /// #V, 1 for the vertices of the listed quads and of the quads within `rings` quad rings of them.
 std::vector<char> verticesNear(const QuadMesh& mesh, const std::vector<int>& quads, int rings);
 
+/**
+ * Gives every vertex whose quads fall into several fans (joined through the vertex alone: two
+ * pieces of the mesh, or two of its boundary loops, touching at a point) one copy per fan, so
+ * that the mesh is manifold at its vertices as at its edges. The fan of the vertex's lowest quad
+ * keeps it; the copies are appended (V, vertexTriangle and vertexPoint copied). Returns the
+ * copies added.
+ */
+int splitPinchedVertices(QuadMesh& mesh);
 }
 
 #endif

@@ -2,6 +2,7 @@
 
 #include "Parallel.h"
 #include "QuadFacing.h"
+#include "QuadMeshAdjacency.h"
 #include "QuadRelaxation.h"
 #include "ScaledJacobian.h"
 #include "SurfaceLocator.h"
@@ -85,6 +86,7 @@ QuadMeshResult buildQuadMesh(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& 
     unfoldLastInverted(V, F, topo, surface, r.mesh);
   }
   r.turnedQuads = static_cast<int>(turnedQuads(surface, r.mesh).size());
+  r.splitVertices = splitPinchedVertices(r.mesh);
   r.quality = measureQuads(r.mesh.V, r.mesh.Q);
   for (Eigen::Index i = 0; i < r.quality.scaledJacobian.size(); ++i)
   {

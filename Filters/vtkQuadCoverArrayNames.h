@@ -191,6 +191,10 @@ constexpr const char* FilledHoles = "FilledHoles";
 /// (or the nearly closest ones, where there are ties), as extracted, and in the output (after
 /// RepairInvertedQuads).
 constexpr const char* TurnedQuads = "TurnedQuads";
+/// field, 1 x int: copies of a quad vertex added where separate fans of quads touched at it (two
+/// pieces of the mesh, or two of its boundary loops), so that the output is manifold at its
+/// vertices; 0 on a valid remesh.
+constexpr const char* SplitQuadVertices = "SplitQuadVertices";
 }
 
 #endif

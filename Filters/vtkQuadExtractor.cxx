@@ -112,6 +112,7 @@ void AddFigures(vtkFieldData* fd, const quadcover::QuadMeshResult& r)
     { double(r.patch.holesFilled), double(r.patch.holesLeft), double(r.patch.quadsAdded) });
   AddField<vtkIntArray>(
     fd, names::TurnedQuads, { double(r.turnedExtracted), double(r.turnedQuads) });
+  AddField<vtkIntArray>(fd, names::SplitQuadVertices, { double(r.splitVertices) });
 }
 
 /// Field data HausdorffDistance: two-sided, surface to quads, quads to surface, in % of the

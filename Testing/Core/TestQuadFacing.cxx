@@ -200,3 +200,44 @@ TEST(QuadFacing, SlidesABoundaryVertexBackAlongTheBoundary)
     }
   }
 }
+
+TEST(QuadMeshAdjacency, SplitsPinchedVerticesIntoTheirFans)
+{
+  // two quads joined through an edge, a third touching them only at point 2; a fourth quad
+  // touching the third only at point 7, alone in a piece of its own otherwise
+  QuadMesh q;
+  q.V = Eigen::MatrixX3d::Random(12, 3);
+  q.Q.resize(4, 4);
+  q.Q << 0, 1, 2, 3, 1, 4, 5, 2, 2, 6, 7, 8, 7, 9, 10, 11;
+  for (int v = 0; v < 12; ++v)
+  {
+    q.vertexTriangle.push_back(100 + v);
+    q.vertexPoint.push_back(v % 2 == 0 ? v : -1);
+  }
+  const QuadMesh before = q;
+  EXPECT_EQ(splitPinchedVertices(q), 2);
+  ASSERT_EQ(q.V.rows(), 14);
+  // the fan of the lowest quad keeps the point; the other fans get the copies, in order
+  EXPECT_EQ(q.Q.row(0), before.Q.row(0));
+  EXPECT_EQ(q.Q.row(1), before.Q.row(1));
+  EXPECT_EQ(q.Q(2, 0), 12);
+  EXPECT_EQ(q.Q(3, 0), 13);
+  EXPECT_EQ(q.Q(2, 2), 7);
+  EXPECT_TRUE(q.V.row(12).isApprox(before.V.row(2)));
+  EXPECT_TRUE(q.V.row(13).isApprox(before.V.row(7)));
+  EXPECT_EQ(q.vertexTriangle[12], 102);
+  EXPECT_EQ(q.vertexPoint[13], -1);
+  // no vertex is shared by two fans any more: splitting again adds nothing
+  EXPECT_EQ(splitPinchedVertices(q), 0);
+  // a closed mesh (the cube's six faces) is manifold everywhere: nothing to split
+  QuadMesh cube;
+  cube.V = Eigen::MatrixX3d::Random(8, 3);
+  cube.Q.resize(6, 4);
+  cube.Q << 0, 3, 2, 1, 4, 5, 6, 7, 0, 1, 5, 4, 1, 2, 6, 5, 2, 3, 7, 6, 3, 0, 4, 7;
+  cube.vertexTriangle.assign(8, 0);
+  cube.vertexPoint.assign(8, -1);
+  const Eigen::MatrixX4i faces = cube.Q;
+  EXPECT_EQ(splitPinchedVertices(cube), 0);
+  EXPECT_EQ(cube.Q, faces);
+  EXPECT_EQ(cube.V.rows(), 8);
+}
