@@ -5,6 +5,7 @@
 #include <Eigen/Cholesky>
 #include <gtest/gtest.h>
 
+#include <thread>
 #include <vector>
 
 using namespace quadcover;
@@ -65,13 +66,34 @@ TEST(SparseSolver, SolvesMatchDenseInBothStorages)
     b[i] = std::sin(0.37 * static_cast<double>(i)) + 0.1;
   }
   const Eigen::VectorXd expected = dense.llt().solve(b);
-  for (const Factorization storage : { Factorization::Supernodal, Factorization::Simplicial })
+  for (const Factorization storage :
+    { Factorization::Supernodal, Factorization::Simplicial, Factorization::Automatic })
   {
     SpdSolver<double> solver(storage);
     solver.compute(A);
     ASSERT_EQ(solver.info(), Eigen::Success);
     const Eigen::VectorXd x = solver.solve(b);
     EXPECT_LT((x - expected).cwiseAbs().maxCoeff(), 1e-10 * expected.cwiseAbs().maxCoeff());
+    // the same bits from solves on several threads at once, each with its own workspace
+    std::vector<Eigen::VectorXd> concurrent(4);
+    std::vector<std::thread> threads;
+    for (auto& y : concurrent)
+    {
+      threads.emplace_back([&solver, &b, &y]() {
+        for (int repeat = 0; repeat < 50; ++repeat)
+        {
+          y = solver.solveConcurrently(b);
+        }
+      });
+    }
+    for (auto& thread : threads)
+    {
+      thread.join();
+    }
+    for (const auto& y : concurrent)
+    {
+      EXPECT_EQ(y, x);
+    }
   }
 }
 
