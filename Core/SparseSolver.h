@@ -14,7 +14,7 @@
 #include <vector>
 
 #ifdef QUADCOVER_HAVE_CHOLMOD
-#include "BlasThreads.h"
+#include "CholmodThreads.h"
 
 #include <Eigen/CholmodSupport>
 #include <cholmod_camd.h>
@@ -40,10 +40,11 @@ enum class Factorization
 #ifdef QUADCOVER_HAVE_CHOLMOD
 /**
  * Eigen's CholmodSupernodalLLT (or, with Factorization::Simplicial, CHOLMOD's simplicial
- * factor, which calls no BLAS) with the BLAS on one thread wherever CHOLMOD calls it (the
- * numeric factorization and the solves; the analysis uses no BLAS), so that the result does not
- * depend on the BLAS thread count (BlasThreads.h). compute() and solve() are used as Eigen's;
- * the solves run when the solve() expression is assigned, which calls _solve_impl below.
+ * factor, which calls no BLAS) with the BLAS on one thread and CHOLMOD's OpenMP loops on the
+ * free cores wherever CHOLMOD runs (CholmodThreads.h), so that the result does not depend on
+ * the BLAS thread count and CHOLMOD's threads do not outnumber the cores. compute() and solve()
+ * are used as Eigen's; the solves run when the solve() expression is assigned, which calls
+ * _solve_impl below.
  */
 template<typename MatrixType>
 class CholmodLLT : public Eigen::CholmodBase<MatrixType, Eigen::Lower, CholmodLLT<MatrixType>>
@@ -67,6 +68,12 @@ public:
     return *this;
   }
 
+  void analyzePattern(const MatrixType& matrix)
+  {
+    const CholmodThreads threads;
+    Base::analyzePattern(matrix);
+  }
+
   /// analyzePattern, with the last `last` unknowns ordered after all others (CAMD, the
   /// constrained minimum degree), so that inverseOfLast can read their block of the inverse off
   /// the factor. Plain analyzePattern when last <= 0 or CAMD or the analysis fails.
@@ -86,6 +93,7 @@ public:
     cholmod_sparse A = Eigen::viewAsCholmod(matrix.template selfadjointView<Eigen::Lower>());
     std::vector<int> member(n, 0), perm(n);
     std::fill(member.end() - last, member.end(), 1);
+    const CholmodThreads threads;
     cholmod_common& c = this->m_cholmod;
     // rows denser than 5 sqrt(n) ordered last without elimination (CAMD's default is 10): the
     // integers of long seams reach a few thousand entries in the map's system and took CAMD
@@ -178,7 +186,7 @@ public:
 
   void factorize(const MatrixType& matrix)
   {
-    const OneBlasThread one;
+    const CholmodThreads threads;
     Base::factorize(matrix);
   }
 
@@ -188,7 +196,7 @@ public:
     const Eigen::Matrix<typename MatrixType::Scalar, Eigen::Dynamic, 1>& b) const
   {
     using Vector = Eigen::Matrix<typename MatrixType::Scalar, Eigen::Dynamic, 1>;
-    const OneBlasThread one;
+    const CholmodThreads threads;
     cholmod_common c;
     cholmod_start(&c);
     Vector rhs = b;
@@ -207,14 +215,14 @@ public:
   template<typename Rhs, typename Dest>
   void _solve_impl(const Eigen::MatrixBase<Rhs>& b, Eigen::MatrixBase<Dest>& dest) const
   {
-    const OneBlasThread one;
+    const CholmodThreads threads;
     Base::_solve_impl(b, dest);
   }
 
   template<typename Rhs, typename Dest>
   void _solve_impl(const Eigen::SparseMatrixBase<Rhs>& b, Eigen::SparseMatrixBase<Dest>& dest) const
   {
-    const OneBlasThread one;
+    const CholmodThreads threads;
     Base::_solve_impl(b, dest);
   }
 };

@@ -134,3 +134,32 @@ TEST(SparseSolver, InverseOfTheLastUnknownsComesOffTheFactor)
   EXPECT_FALSE(simplicial.inverseOfLast(last, untouched));
   EXPECT_EQ(untouched.rows(), 1);
 }
+
+#ifdef QUADCOVER_HAVE_CHOLMOD
+TEST(SparseSolver, CholmodCallsRunOnOneBlasThreadAndTheFreeCores)
+{
+  const auto& control = detail::CholmodThreadControl::instance();
+  if (!CholmodThreads::controlsOpenMP() || !CholmodThreads::controlsBlas())
+  {
+    GTEST_SKIP() << "CHOLMOD is loaded without OpenMP or without OpenBLAS";
+  }
+  const int dynamic = control.getDynamic(), blas = control.get();
+  {
+    const CholmodThreads outer;
+    EXPECT_EQ(control.getDynamic(), 1);
+    EXPECT_EQ(control.get(), 1);
+    {
+      const CholmodThreads inner; // nested: the outer one's settings stay
+      EXPECT_EQ(control.getDynamic(), 1);
+    }
+    EXPECT_EQ(control.getDynamic(), 1);
+    EXPECT_EQ(control.get(), 1);
+  }
+  // both back as they were, and the dynamic adjustment was the calling thread's only
+  EXPECT_EQ(control.getDynamic(), dynamic);
+  EXPECT_EQ(control.get(), blas);
+  int other = -1;
+  std::thread([&]() { other = control.getDynamic(); }).join();
+  EXPECT_EQ(other, dynamic);
+}
+#endif
