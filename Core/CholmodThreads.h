@@ -1,5 +1,6 @@
 // CholmodThreads.h: the threads CHOLMOD's calls run on, for as long as a CholmodThreads lives:
-// the BLAS under CHOLMOD on one thread, and CHOLMOD's own OpenMP loops on the cores that are free.
+// the BLAS under CHOLMOD on one thread, and CHOLMOD's own OpenMP loops on the cores the load
+// leaves.
 //
 // BLAS. CHOLMOD's supernodal factorization factors each supernode's diagonal block with LAPACK's
 // potrf and updates the rest with the BLAS (syrk, gemm, trsm); its solves call trsv/gemv or
@@ -11,12 +12,14 @@
 // version then has to sum in a fixed order across threads. On two cores the second thread saved
 // nothing measurable (Documentation/Development.md).
 //
-// OpenMP. Debian's CHOLMOD (SuiteSparse 5.12) opens a parallel loop of a fixed 4 threads
-// (CHOLMOD_OMP_NUM_THREADS, whatever OMP_NUM_THREADS says) for each supernode with more than 128
-// rows to clear or scatter; on 2 cores its threads waited on each other at every supernode, and
-// armadillo's map took 0.6 s to factor instead of 0.25 s (Benchmarks/README.md). With OpenMP's
-// dynamic adjustment on in the calling thread, a loop gets only the cores that are free. Each loop
-// sets independent rows, so the result does not depend on how many threads it gets.
+// OpenMP. Debian's CHOLMOD (SuiteSparse 5.12) asks for a parallel loop of a fixed 4 threads
+// (CHOLMOD_OMP_NUM_THREADS, a num_threads clause that OMP_NUM_THREADS does not lower) for each
+// supernode with more than 128 rows to clear or scatter; on 2 cores its threads waited on each
+// other at every supernode, and armadillo's map took 0.6 s to factor instead of 0.25 s
+// (Benchmarks/README.md). With OpenMP's dynamic adjustment on in the calling thread, the runtime
+// may give a loop fewer threads (libgomp: the cores less the load average, at most
+// OMP_NUM_THREADS). Each loop sets independent rows, so the result does not depend on how many
+// threads it gets.
 //
 // OpenBLAS and OpenMP are found at run time, so that the code runs unchanged with the reference
 // BLAS (single threaded: nothing to do), another BLAS (left as it is) or a CHOLMOD without
@@ -104,9 +107,9 @@ struct CholmodThreadControl
 }
 
 /// While alive, OpenBLAS (when it is the BLAS) runs on one thread, and the OpenMP loops the
-/// calling thread opens (CHOLMOD's) get only the cores that are free. The BLAS thread count from
-/// before comes back when the last such object, of any thread, ends; the calling thread's
-/// dynamic adjustment when this one ends.
+/// calling thread opens (CHOLMOD's) get the threads the runtime's dynamic adjustment allows. The
+/// BLAS thread count from before comes back when the last such object, of any thread, ends; the
+/// calling thread's dynamic adjustment when this one ends.
 class CholmodThreads
 {
 public:

@@ -7,11 +7,13 @@
 #include <Eigen/Geometry>
 
 #include <atomic>
+#include <chrono>
 #include <cmath>
 #include <complex>
 #include <limits>
 #include <optional>
 #include <stdexcept>
+#include <thread>
 
 namespace quadcover
 {
@@ -211,6 +213,16 @@ void addLink(Eigen::VectorXd& diagonal, std::vector<Eigen::Triplet<Scalar>>& t, 
   }
 }
 
+/// What the run from the input shares with the runs from the global starts when it runs beside
+/// them (descendFromStarts).
+struct Beside
+{
+  /// the global runs' lowest end once they have ended (+infinity before, and when there is none)
+  std::atomic<double> bar{ std::numeric_limits<double>::infinity() };
+  std::atomic<bool> stop{ false };  ///< set when the global runs end by an exception (a cancel)
+  std::atomic<int> iterations{ 0 }; ///< the run's iterations so far, for its progress
+};
+
 /**
  * The descent: each iteration minimizes a quadratic upper bound of E (1 - cos is bounded by its
  * second-order expansion with curvature 1), so E never increases. The bound's matrix, 16 lambda
@@ -246,13 +258,14 @@ public:
   /// and the losers, given up after 10 iterations' gains, ran 15 to 38 iterations (armadillo
   /// 28, a fifth of its smoothing time); after 4 iterations' gains they run half as many, on
   /// the shared and generated meshes with both smoothing weights, and end as before.
-  /// The bar may become known while the run goes on (the runs before it on another thread): a
-  /// run is given up as soon as any of its iterations so far meets the test (givenUp), so that
-  /// where it stops does not change what it returns to a caller that tests its history again.
+  /// The bar may become known while the run goes on (beside: the runs before it on another
+  /// thread): a run is given up as soon as any of its iterations so far meets the test
+  /// (givenUp), so that where it stops does not change what it returns to a caller that tests
+  /// its history again. It also stops when beside's stop is set.
   /// @param[out] history E at the start and after every iteration
   /// @param[out] rejected whether it ended on a step that raised the energy by more than rounding
   Eigen::VectorXd run(Eigen::VectorXd alpha, std::vector<double>& history, int& iterations,
-    bool& rejected, const Progress& progress, const std::atomic<double>* bar = nullptr) const
+    bool& rejected, const Progress& progress, Beside* beside = nullptr) const
   {
     rejected = false;
     Eigen::VectorXcd z = phasors(alpha);
@@ -282,7 +295,11 @@ public:
       history.push_back(En);
       const bool done = E - En <= Options.convergenceTolerance * std::max(E, 1e-300);
       E = En;
-      if (done || (bar && givenUp(history, bar->load())))
+      if (beside)
+      {
+        beside->iterations.store(iterations);
+      }
+      if (done || (beside && (beside->stop.load() || givenUp(history, beside->bar.load()))))
       {
         break;
       }
@@ -669,6 +686,79 @@ bool descendFromGlobalStarts(const Smoothing& s, const Descent& descent,
   }
   return !starts.empty();
 }
+
+/**
+ * Runs 2 and 3 (descendFromGlobalStarts, with `global` for their progress), then run 1, from the
+ * input (`start`: held triangles turned onto their edges), given up once it cannot reach their
+ * lowest end (the bar); on a tie it wins. With more than one thread and a global start, run 1
+ * runs beside them and learns the bar when they end (armadillo: 13 of its iterations, 0.2 s, off
+ * the smoothing's time), while this thread reports its progress, so that a cancel stops both;
+ * whether it wins, and its figures, are as when it runs after them. The winner goes into alpha
+ * and R.
+ */
+void descendFromStarts(const Smoothing& s, const Descent& descent,
+  const std::vector<Eigen::VectorXcd>& starts, const Eigen::VectorXd& start,
+  const SmootherOptions& options, Eigen::VectorXd& alpha, SmootherResult& R, const Progress& global,
+  const Progress& input)
+{
+  Beside beside;
+  Eigen::VectorXd fromInput;
+  std::vector<double> history;
+  int iterations = 0;
+  bool anyGlobal = false, rejected = false;
+  const int threads = options.numberOfThreads > 0 ? options.numberOfThreads : defaultThreadCount();
+  if (threads <= 1 || starts.empty())
+  {
+    anyGlobal = descendFromGlobalStarts(s, descent, starts, start, alpha, R, global);
+    if (anyGlobal)
+    {
+      beside.bar.store(R.energyHistory.back());
+    }
+    fromInput = descent.run(start, history, iterations, rejected, input, &beside);
+  }
+  else
+  {
+    std::atomic<bool> ended{ false };
+    runBoth(
+      [&]() {
+        try
+        {
+          anyGlobal = descendFromGlobalStarts(s, descent, starts, start, alpha, R, global);
+          beside.bar.store(R.energyHistory.back());
+          const double most = std::max(1, options.maximumNumberOfIterations);
+          while (!ended.load())
+          {
+            input.report(beside.iterations.load() / most);
+            std::this_thread::sleep_for(std::chrono::milliseconds(10));
+          }
+        }
+        catch (...)
+        {
+          beside.stop.store(true);
+          throw;
+        }
+      },
+      [&]() {
+        struct End
+        {
+          std::atomic<bool>& ended;
+          ~End() { ended.store(true); }
+        } end{ ended };
+        fromInput = descent.run(start, history, iterations, rejected, Progress(), &beside);
+      },
+      threads);
+  }
+  R.energyBefore = history.front();
+  const bool lost = anyGlobal && Descent::givenUp(history, beside.bar.load());
+  R.rejectedSteps += rejected && !lost;
+  if (!anyGlobal || (!lost && history.back() <= beside.bar.load()))
+  {
+    alpha.swap(fromInput);
+    R.energyHistory.swap(history);
+    R.iterations = iterations;
+    R.fromGlobalStart = false;
+  }
+}
 }
 
 SmootherResult smoothFrames(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F,
@@ -700,41 +790,14 @@ SmootherResult smoothFrames(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F
     },
     [&]() { descent.emplace(s, options, Progress()); }, options.numberOfThreads);
 
-  // Run 1: from the input (held triangles turned onto their edges). It is given up once it
-  // cannot reach the global starts' end (the bar); on a tie it wins. On two threads it runs
-  // beside them and learns the bar when they end (armadillo: 13 of its iterations, 0.2 s, off
-  // the smoothing's time); whether it wins, and its figures, are as when it runs after them.
   Eigen::VectorXd start = Eigen::VectorXd::Zero(F.rows());
   for (Eigen::Index f = 0; f < F.rows(); ++f)
   {
     start[f] = R.constrained[f] ? s.fixedAlpha[f] : 0.0;
   }
-  Eigen::VectorXd alpha, fromInput;
-  bool anyGlobal = false, rejected = false;
-  std::atomic<double> bar{ std::numeric_limits<double>::infinity() };
-  std::vector<double> history;
-  int iterations = 0;
-  runBoth(
-    [&]() {
-      anyGlobal =
-        descendFromGlobalStarts(s, *descent, starts, start, alpha, R, progress.part(0.15, 1.0));
-      if (anyGlobal)
-      {
-        bar.store(R.energyHistory.back());
-      }
-    },
-    [&]() { fromInput = descent->run(start, history, iterations, rejected, Progress(), &bar); },
-    options.numberOfThreads);
-  R.energyBefore = history.front();
-  const bool lost = anyGlobal && Descent::givenUp(history, bar.load());
-  R.rejectedSteps += rejected && !lost;
-  if (!anyGlobal || (!lost && history.back() <= bar.load()))
-  {
-    alpha.swap(fromInput);
-    R.energyHistory.swap(history);
-    R.iterations = iterations;
-    R.fromGlobalStart = false;
-  }
+  Eigen::VectorXd alpha;
+  descendFromStarts(s, *descent, starts, start, options, alpha, R, progress.part(0.15, 0.6),
+    progress.part(starts.empty() ? 0.15 : 0.6, 1.0));
 
   R.rotation = alpha;
   R.energyAfter = R.energyHistory.back();

@@ -196,20 +196,30 @@ public:
     const Eigen::Matrix<typename MatrixType::Scalar, Eigen::Dynamic, 1>& b) const
   {
     using Vector = Eigen::Matrix<typename MatrixType::Scalar, Eigen::Dynamic, 1>;
+    eigen_assert(this->m_factorizationIsOk && "solveConcurrently() needs a factorization");
+    if (!this->m_factorizationIsOk || b.size() != static_cast<Eigen::Index>(this->rows()))
+    {
+      return Vector();
+    }
     const CholmodThreads threads;
-    cholmod_common c;
-    cholmod_start(&c);
+    // freed on every way out, the copy's bad_alloc included
+    struct Workspace
+    {
+      cholmod_common c;
+      cholmod_dense* X = nullptr;
+      Workspace() { cholmod_start(&c); }
+      ~Workspace()
+      {
+        cholmod_free_dense(&X, &c);
+        cholmod_finish(&c);
+      }
+    } w;
     Vector rhs = b;
     cholmod_dense B = Eigen::viewAsCholmod(rhs);
-    cholmod_dense* X = cholmod_solve(CHOLMOD_A, this->m_cholmodFactor, &B, &c);
-    Vector x;
-    if (X)
-    {
-      x = Eigen::Map<const Vector>(static_cast<const typename MatrixType::Scalar*>(X->x), b.size());
-      cholmod_free_dense(&X, &c);
-    }
-    cholmod_finish(&c);
-    return x;
+    w.X = cholmod_solve(CHOLMOD_A, this->m_cholmodFactor, &B, &w.c);
+    return w.X ? Vector(Eigen::Map<const Vector>(
+                   static_cast<const typename MatrixType::Scalar*>(w.X->x), b.size()))
+               : Vector();
   }
 
   template<typename Rhs, typename Dest>

@@ -24,7 +24,9 @@
  * IrregularVertices (inner, boundary), EdgeLengthRSD, AngleRSD, ScaledJacobianStatistics (min,
  * mean), NonManifoldEdges, EulerCharacteristic, BoundaryLoops, HausdorffDistance (two-sided, and
  * each way, in % of the input's bounding-box diagonal), InvertedQuads (before and after
- * RepairInvertedQuads), DroppedCells, FilledHoles and TurnedQuads (before and after it).
+ * RepairInvertedQuads), DroppedCells, FilledHoles, TurnedQuads (before and after it) and
+ * SplitQuadVertices (copies of a vertex where separate fans of quads touched: the output is
+ * manifold at its vertices).
  * @sa vtkQuadCoverSolver
  */
 #ifndef vtkQuadExtractor_h

@@ -74,7 +74,7 @@ std::string CheckObjFace(const std::string& line, long long number, bool cut, Ob
     {
       ++p; // the rest of the token: "/t/n"
     }
-    if (i == 0 || (i < 0 && -i > faces.vertices))
+    if (i == 0 || (i < 0 && i < -faces.vertices)) // (-i overflows at LLONG_MIN)
     {
       return "line " + std::to_string(number) + " refers to vertex " + std::to_string(i) +
         ", which does not exist";

@@ -300,3 +300,42 @@ TEST(FrameSmoother, ReportsProgressAndStopsWhenAsked)
     EXPECT_EQ(calls, 5);
   }
 }
+
+TEST(FrameSmoother, TheRunFromTheInputBesideTheGlobalRunsEndsAsAfterThem)
+{
+  // On two threads the run from the input runs beside the global starts' runs and learns their
+  // end late; the result must be the one thread's, bit for bit, whichever run wins. A cancel
+  // while it runs stops both.
+  int inputWins = 0, inputLoses = 0;
+  for (const double lambda : { 0.95, 1.0 })
+  {
+    for (const char* name : { "knot", "sphere", "torus" })
+    {
+      SCOPED_TRACE(std::string(name) + " lambda " + std::to_string(lambda));
+      const Case c = prepare(testSurface(name));
+      SmootherOptions one, two;
+      one.smoothingWeight = two.smoothingWeight = lambda;
+      one.numberOfThreads = 1;
+      two.numberOfThreads = 2;
+      const SmootherResult a = smooth(c, one), b = smooth(c, two);
+      EXPECT_EQ(a.energyHistory, b.energyHistory);
+      EXPECT_EQ(a.iterations, b.iterations);
+      EXPECT_EQ(a.rejectedSteps, b.rejectedSteps);
+      EXPECT_EQ(a.fromGlobalStart, b.fromGlobalStart);
+      EXPECT_EQ(a.energyBefore, b.energyBefore);
+      EXPECT_TRUE(a.rotation == b.rotation);
+      (a.fromGlobalStart ? inputLoses : inputWins) += 1;
+      for (const SmootherOptions& options : { one, two })
+      {
+        // reports of 0.6 and on are the run from the input's (or the end)
+        EXPECT_THROW(
+          smoothFrames(c.s.V, c.s.F, c.topo, c.geometry, c.curvature.frameU, c.curvature.frameV,
+            c.curvature.weight, options, Progress([](double x) { return x < 0.6; })),
+          Cancelled);
+      }
+    }
+  }
+  // both outcomes were compared
+  EXPECT_GT(inputWins, 0);
+  EXPECT_GT(inputLoses, 0);
+}

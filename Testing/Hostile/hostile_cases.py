@@ -358,6 +358,9 @@ CASES = {
     "bad_index_obj": (_text("index.obj", TRIANGLE_OBJ + "f 1 2 9\n"), Refused("refers to vertex 9")),
     "negative_index_obj": (_text("negative.obj", TRIANGLE_OBJ + "f -1 -2 -9\n"),
                            Refused("refers to vertex -9")),
+    # the most negative 64-bit index: its negation overflows
+    "lowest_index_obj": (_text("lowest.obj", TRIANGLE_OBJ + "f 1 2 -9223372036854775808\n"),
+                         Refused("refers to vertex -9223372036854775808")),
     "bad_index_off": (_text("index.off", TRIANGLE_OFF + "3 0 1 7\n"), Refused("refers to vertex 7")),
     "negative_index_off": (_text("negative.off", TRIANGLE_OFF + "3 0 1 -2\n"),
                            Refused("refers to vertex -2")),
