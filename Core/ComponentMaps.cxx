@@ -202,8 +202,7 @@ std::vector<ComponentMap> mapComponents(
   std::iota(order.begin(), order.end(), 0);
   std::stable_sort(order.begin(), order.end(),
     [&](int a, int b) { return parts[a].faces.size() > parts[b].faces.size(); });
-  const int wanted =
-    in.options.numberOfThreads > 0 ? in.options.numberOfThreads : defaultThreadCount();
+  const int wanted = threadCount(in.options.numberOfThreads);
   const int threads = std::max(1, std::min(wanted, static_cast<int>(parts.size())));
   std::vector<ComponentMap> maps(parts.size());
   std::vector<std::exception_ptr> failed(parts.size());

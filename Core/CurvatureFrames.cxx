@@ -322,7 +322,7 @@ CurvatureField computeCurvatureField(const Eigen::MatrixX3d& V, const Eigen::Mat
 
   resizeFrames(nf, out);
   const double r2 = out.curvatureRadius * out.curvatureRadius;
-  const int threads = options.numberOfThreads > 0 ? options.numberOfThreads : defaultThreadCount();
+  const int threads = threadCount(options.numberOfThreads);
   const size_t cap =
     options.maximumNeighborhood > 0 ? static_cast<size_t>(options.maximumNeighborhood) : size_t(-1);
   std::vector<int> truncated(std::max(1, threads), 0);

@@ -706,7 +706,7 @@ void descendFromStarts(const Smoothing& s, const Descent& descent,
   std::vector<double> history;
   int iterations = 0;
   bool anyGlobal = false, rejected = false;
-  const int threads = options.numberOfThreads > 0 ? options.numberOfThreads : defaultThreadCount();
+  const int threads = threadCount(options.numberOfThreads);
   if (threads <= 1 || starts.empty())
   {
     anyGlobal = descendFromGlobalStarts(s, descent, starts, start, alpha, R, global);

@@ -26,17 +26,19 @@ inline int defaultThreadCount()
   return hw == 0 ? 1 : static_cast<int>(hw);
 }
 
+/// The worker threads asked for: numThreads, or defaultThreadCount() when it is 0 or less.
+inline int threadCount(int numThreads)
+{
+  return numThreads > 0 ? numThreads : defaultThreadCount();
+}
+
 /// Calls first() and second(), on two threads when numThreads (0: defaultThreadCount()) is
 /// above 1; both have returned when it returns. An exception in either is rethrown (the first's
 /// when both throw).
 template<typename First, typename Second>
 void runBoth(First&& first, Second&& second, int numThreads)
 {
-  if (numThreads <= 0)
-  {
-    numThreads = defaultThreadCount();
-  }
-  if (numThreads == 1)
+  if (threadCount(numThreads) == 1)
   {
     first();
     second();
@@ -75,10 +77,7 @@ void runBoth(First&& first, Second&& second, int numThreads)
 template<typename Body>
 void parallelFor(int n, int numThreads, Body&& body)
 {
-  if (numThreads <= 0)
-  {
-    numThreads = defaultThreadCount();
-  }
+  numThreads = threadCount(numThreads);
   const int minBlock = 2048;
   numThreads = std::max(1, std::min(numThreads, (n + minBlock - 1) / minBlock));
   if (numThreads == 1)

@@ -208,7 +208,7 @@ double largestDistance(const Eigen::MatrixX3d& points, const Eigen::MatrixX3d& V
 {
   const SurfaceLocator locator(V, F);
   const int n = static_cast<int>(points.rows());
-  std::vector<double> largest(std::max(1, threads > 0 ? threads : defaultThreadCount()), 0.0);
+  std::vector<double> largest(std::max(1, threadCount(threads)), 0.0);
   // each thread keeps its own largest: a maximum does not depend on how the points are shared
   parallelFor(n, threads, [&](int begin, int end, int thread) {
     for (int i = begin; i < end; ++i)

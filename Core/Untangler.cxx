@@ -723,8 +723,7 @@ void Untangler::run(const MeshTopology& topo, const Eigen::MatrixX3i& F,
       energy.scatter(y, x);
     }
   };
-  const int threads = std::min(numberOfThreads > 0 ? numberOfThreads : defaultThreadCount(),
-    static_cast<int>(list.size()));
+  const int threads = std::min(threadCount(numberOfThreads), static_cast<int>(list.size()));
   std::vector<std::exception_ptr> failed(std::max(1, threads));
   std::vector<std::thread> workers;
   for (int t = 1; t < threads; ++t)
