@@ -75,25 +75,24 @@ struct CholmodThreadControl
 #ifdef QUADCOVER_CHOLMOD_THREADS_DLSYM
   void find(void* handle)
   {
-    if (!this->set || !this->get)
+    lookUp(handle, "openblas_set_num_threads", "openblas_get_num_threads", this->set, this->get);
+    lookUp(handle, "omp_set_dynamic", "omp_get_dynamic", this->setDynamic, this->getDynamic);
+  }
+
+  /// The pair of functions named, unless found before; both or neither.
+  static void lookUp(
+    void* handle, const char* setName, const char* getName, SetThreads& set, GetThreads& get)
+  {
+    if (set && get)
     {
-      this->set = reinterpret_cast<SetThreads>(dlsym(handle, "openblas_set_num_threads"));
-      this->get = reinterpret_cast<GetThreads>(dlsym(handle, "openblas_get_num_threads"));
-      if (!this->set || !this->get)
-      {
-        this->set = nullptr;
-        this->get = nullptr;
-      }
+      return;
     }
-    if (!this->setDynamic || !this->getDynamic)
+    set = reinterpret_cast<SetThreads>(dlsym(handle, setName));
+    get = reinterpret_cast<GetThreads>(dlsym(handle, getName));
+    if (!set || !get)
     {
-      this->setDynamic = reinterpret_cast<SetThreads>(dlsym(handle, "omp_set_dynamic"));
-      this->getDynamic = reinterpret_cast<GetThreads>(dlsym(handle, "omp_get_dynamic"));
-      if (!this->setDynamic || !this->getDynamic)
-      {
-        this->setDynamic = nullptr;
-        this->getDynamic = nullptr;
-      }
+      set = nullptr;
+      get = nullptr;
     }
   }
 #endif

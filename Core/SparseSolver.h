@@ -40,9 +40,10 @@ enum class Factorization
 #ifdef QUADCOVER_HAVE_CHOLMOD
 /**
  * Eigen's CholmodSupernodalLLT (or, with Factorization::Simplicial, CHOLMOD's simplicial
- * factor, which calls no BLAS) with the BLAS on one thread and CHOLMOD's OpenMP loops on the
- * free cores wherever CHOLMOD runs (CholmodThreads.h), so that the result does not depend on
- * the BLAS thread count and CHOLMOD's threads do not outnumber the cores. compute() and solve()
+ * factor, which calls no BLAS) with the BLAS on one thread and CHOLMOD's OpenMP loops under
+ * OpenMP's dynamic adjustment wherever CHOLMOD runs (CholmodThreads.h), so that the result does
+ * not depend on the BLAS thread count and CHOLMOD's threads need not outnumber the cores.
+ * compute() and solve()
  * are used as Eigen's; the solves run when the solve() expression is assigned, which calls
  * _solve_impl below.
  */
