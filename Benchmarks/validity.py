@@ -33,23 +33,34 @@ def faces(pd):
     return [conn[offs[i]:offs[i + 1]] for i in range(len(offs) - 1)]
 
 
-def join_points(F):
-    """(find, parent): the points of F joined through the faces (union-find); find(p) is the
-    root of p's connected piece, parent has every point."""
-    parent = {}
+class Sets:
+    """Disjoint sets of hashable items (union-find with path halving); an item joins when first
+    met, as a set of its own."""
 
-    def find(a):
+    def __init__(self):
+        self.parent = {}
+
+    def find(self, a):
+        parent = self.parent
         while parent.setdefault(a, a) != a:
             parent[a] = parent[parent[a]]
             a = parent[a]
         return a
 
+    def union(self, a, b):
+        ra, rb = self.find(a), self.find(b)
+        if ra != rb:
+            self.parent[ra] = rb
+
+
+def join_points(F):
+    """(find, parent): the points of F joined through the faces (union-find); find(p) is the
+    root of p's connected piece, parent has every point."""
+    pieces = Sets()
     for f in F:
         for v in f[1:]:
-            ra, rb = find(f[0]), find(v)
-            if ra != rb:
-                parent[ra] = rb
-    return find, parent
+            pieces.union(f[0], v)
+    return pieces.find, pieces.parent
 
 
 def components(F):
@@ -68,21 +79,12 @@ def components(F):
     for f in F:
         comp[find(f[0])][2] += 1
     loops = defaultdict(int)
-    bparent = {}
-
-    def bfind(a):
-        while bparent.setdefault(a, a) != a:
-            bparent[a] = bparent[bparent[a]]
-            a = bparent[a]
-        return a
-
+    boundary = Sets()
     for (a, b), n in edges.items():
         if n == 1:
-            ra, rb = bfind(a), bfind(b)
-            if ra != rb:
-                bparent[ra] = rb
-    for v in bparent:
-        if bfind(v) == v:
+            boundary.union(a, b)
+    for v in boundary.parent:
+        if boundary.find(v) == v:
             loops[find(v)] += 1
     return sorted((c[0] - c[1] + c[2], loops[r]) for r, c in comp.items())
 
@@ -97,21 +99,12 @@ def pinched_points(F):
             around[v].append((i, f[(k + 1) % len(f)], f[k - 1]))
     pinched = 0
     for v, corners in around.items():
-        fan = {i: i for i, _, _ in corners}
-
-        def root(a):
-            while fan[a] != a:
-                fan[a] = fan[fan[a]]
-                a = fan[a]
-            return a
-
-        first = {}
+        fans, first = Sets(), {}
         for i, after, before in corners:
             for w in (after, before):
                 if w != v:
-                    j = first.setdefault(w, i)
-                    fan[root(i)] = root(j)
-        pinched += len({root(i) for i, _, _ in corners}) > 1
+                    fans.union(i, first.setdefault(w, i))
+        pinched += len({fans.find(i) for i, _, _ in corners}) > 1
     return pinched
 
 
