@@ -136,7 +136,7 @@ TEST(SparseSolver, InverseOfTheLastUnknownsComesOffTheFactor)
 }
 
 #ifdef QUADCOVER_HAVE_CHOLMOD
-TEST(SparseSolver, CholmodCallsRunOnOneBlasThreadAndTheFreeCores)
+TEST(SparseSolver, CholmodCallsRunOnOneBlasThreadWithDynamicOpenMP)
 {
   const auto& control = detail::CholmodThreadControl::instance();
   if (!CholmodThreads::controlsOpenMP() || !CholmodThreads::controlsBlas())
