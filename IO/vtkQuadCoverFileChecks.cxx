@@ -13,88 +13,6 @@ namespace vtkQuadCoverFileChecks
 {
 namespace
 {
-/// "" or the reason why an OBJ "v" line's coordinates cannot be read; `largest` grows to the
-/// largest magnitude seen.
-std::string CheckObjVertex(const std::string& line, long long number, double& largest)
-{
-  const char* p = line.c_str() + 1;
-  for (int k = 0; k < 3; ++k)
-  {
-    char* end = nullptr;
-    const double x = std::strtod(p, &end);
-    if (end == p)
-    {
-      break; // not a number: the reader reports what it makes of it
-    }
-    if (!std::isfinite(x))
-    {
-      return "line " + std::to_string(number) + " has a non-finite (NaN or infinite) coordinate";
-    }
-    if (std::abs(x) > FloatMax)
-    {
-      return "line " + std::to_string(number) + " has a coordinate beyond single precision " +
-        "(1e38); VTK reads OBJ files in single precision, so write it as .vtp";
-    }
-    largest = std::max(largest, std::abs(x));
-    p = end;
-  }
-  return "";
-}
-
-/// What the face lines of an OBJ file refer to, for the checks after the last line.
-struct ObjFaces
-{
-  long long vertices = 0;
-  long long maxIndex = 0;
-  long long maxIndexLine = 0;
-};
-
-/// "" or the reason why an OBJ "f" line is wrong; `cut` when it is the last line and has no
-/// newline (a file cut short ends like that).
-std::string CheckObjFace(const std::string& line, long long number, bool cut, ObjFaces& faces)
-{
-  // Tokens "i", "i/t", "i//n" or "i/t/n"; negative i counts back from the last vertex.
-  // Read in place, without a string stream per line.
-  const char* p = line.c_str() + 2;
-  int count = 0;
-  for (;;)
-  {
-    while (std::isspace(static_cast<unsigned char>(*p)))
-    {
-      ++p;
-    }
-    char* end = nullptr;
-    const long long i = std::strtoll(p, &end, 10);
-    if (end == p)
-    {
-      break;
-    }
-    p = end;
-    while (*p != '\0' && !std::isspace(static_cast<unsigned char>(*p)))
-    {
-      ++p; // the rest of the token: "/t/n"
-    }
-    if (i == 0 || (i < 0 && i < -faces.vertices)) // (-i overflows at LLONG_MIN)
-    {
-      return "line " + std::to_string(number) + " refers to vertex " + std::to_string(i) +
-        ", which does not exist";
-    }
-    if (i > faces.maxIndex)
-    {
-      faces.maxIndex = i;
-      faces.maxIndexLine = number;
-    }
-    ++count;
-  }
-  if (count < 3)
-  {
-    // VTK's reader refuses these too, but says only "Error reading file near line N".
-    return "line " + std::to_string(number) + " has a face of fewer than three vertices" +
-      (cut ? " (the file ends in the middle of it: cut short?)" : "");
-  }
-  return "";
-}
-
 /// The binary STL's size against its header: 80 bytes, a triangle count, 50 bytes a triangle.
 std::string CheckBinaryStl(const std::string& path, long long size)
 {
@@ -166,50 +84,6 @@ bool LooksBinary(const std::string& path)
     control += (c < 32 && !std::isspace(c)) || c == 127;
   }
   return control * 100 > n;
-}
-
-std::string CheckObjText(const std::string& path)
-{
-  if (LooksBinary(path))
-  {
-    return "not a text OBJ file (it holds binary data)";
-  }
-  std::ifstream in(path);
-  std::string line;
-  ObjFaces faces;
-  double largest = 0.0;
-  for (long long number = 1; std::getline(in, line); ++number)
-  {
-    if (line.size() < 2 || (line[1] != ' ' && line[1] != '\t'))
-    {
-      continue;
-    }
-    std::string bad;
-    if (line[0] == 'v')
-    {
-      ++faces.vertices;
-      bad = CheckObjVertex(line, number, largest);
-    }
-    else if (line[0] == 'f')
-    {
-      bad = CheckObjFace(line, number, in.eof(), faces);
-    }
-    if (!bad.empty())
-    {
-      return bad;
-    }
-  }
-  if (faces.maxIndex > faces.vertices)
-  {
-    return "line " + std::to_string(faces.maxIndexLine) + " refers to vertex " +
-      std::to_string(faces.maxIndex) + ", but the file has only " + std::to_string(faces.vertices);
-  }
-  if (largest > 0.0 && largest < FloatMin)
-  {
-    return "every coordinate is below single precision (1e-38); VTK reads OBJ files in single "
-           "precision, so write it as .vtp";
-  }
-  return "";
 }
 
 std::string CheckStl(const std::string& path)

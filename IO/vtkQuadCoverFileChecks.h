@@ -1,4 +1,4 @@
-// vtkQuadCoverFileChecks.h (private): what VTK 9.1's OBJ, PLY and STL readers get wrong on bad
+// vtkQuadCoverFileChecks.h (private): what VTK 9.1's PLY and STL readers get wrong on bad
 // files, checked before they read them.
 #ifndef vtkQuadCoverFileChecks_h
 #define vtkQuadCoverFileChecks_h
@@ -8,7 +8,7 @@
 
 namespace vtkQuadCoverFileChecks
 {
-/// The range of the single-precision coordinates VTK's OBJ, PLY and STL readers store.
+/// The range of the single-precision coordinates VTK's PLY and STL readers store.
 constexpr double FloatMax = std::numeric_limits<float>::max();
 constexpr double FloatMin = std::numeric_limits<float>::min();
 
@@ -21,13 +21,6 @@ long long FileSize(const std::string& path);
 /// True when the file's first 4 KB hold a NUL byte or more than 1% control characters (bytes
 /// from 128 up count as text, for UTF-8).
 bool LooksBinary(const std::string& path);
-
-/// VTK 9.1's OBJ reader reads "nan" and "inf" as 0, coordinates beyond single precision as
-/// infinite, and a face index past the vertices reads memory it does not own; it reads binary
-/// data as lines of garbage. Returns "" or a one-line reason (naming the first offending line):
-/// binary data, a non-finite coordinate or one beyond single precision, every coordinate below
-/// it, a face index that is not a vertex, a face of fewer than three vertices.
-std::string CheckObjText(const std::string& path);
 
 /**
  * VTK 9.1's PLY reader dereferences face indices without checking them, crashes on a file cut

@@ -1,11 +1,11 @@
 #include "vtkQuadCoverReader.h"
 
 #include "vtkQuadCoverFileChecks.h"
+#include "vtkQuadCoverOBJ.h"
 #include "vtkQuadCoverOFF.h"
 
 #include "vtkInformationVector.h"
 #include "vtkNew.h"
-#include "vtkOBJReader.h"
 #include "vtkObjectFactory.h"
 #include "vtkPLYReader.h"
 #include "vtkPolyData.h"
@@ -47,11 +47,6 @@ vtkSmartPointer<vtkAlgorithm> MakeReader(const std::string& path, std::string& e
     reader->SetFileName(path.c_str());
     return reader;
   };
-  if (ext == ".obj")
-  {
-    error = checks::CheckObjText(path);
-    return error.empty() ? make(vtkSmartPointer<vtkOBJReader>::New()) : nullptr;
-  }
   if (ext == ".ply")
   {
     error = checks::CheckPly(path);
@@ -79,7 +74,12 @@ vtkSmartPointer<vtkAlgorithm> MakeReader(const std::string& path, std::string& e
 /// Reads `path` (whose extension CanReadFile knows) into `out`; "" or the first error.
 std::string ReadFile(const std::string& path, vtkPolyData* out)
 {
-  if (vtkQuadCoverFileChecks::Extension(path) == ".off")
+  const std::string ext = vtkQuadCoverFileChecks::Extension(path);
+  if (ext == ".obj")
+  {
+    return vtkQuadCoverOBJ::Read(path, out);
+  }
+  if (ext == ".off")
   {
     return vtkQuadCoverOFF::Read(path, out);
   }

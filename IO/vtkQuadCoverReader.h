@@ -5,17 +5,16 @@
  * One reader for every format QuadCover takes, with one-line errors for what goes wrong:
  * a missing, unreadable or empty file, an unknown extension, a file with no points (and, for
  * OFF, one that ends early).
- * It checks what VTK 9.1's own readers get wrong before they read: OBJ files with NaN or
- * infinite coordinates (read as 0), coordinates beyond single precision (read as infinite) or
- * all below it (read as 0), face indices past the vertices, faces of fewer than three vertices,
- * or binary data (read as lines of garbage, which its error echoed); PLY files with face
+ * OBJ and ASCII OFF files it reads itself, in double precision: OBJ in one pass over the file
+ * (its points in the file's order; NaN or infinite coordinates, face indices that are not
+ * points, faces of fewer than three vertices and binary data refused, naming the line), OFF,
+ * which VTK has no reader for (the header keyword with the usual prefixes ST, C and N, comments,
+ * counts on the header line or the next; binary, 4D and nOFF files are refused). For the other
+ * formats it checks what VTK 9.1's own readers get wrong before they read: PLY files with face
  * indices past the vertices, cut short, or whose header claims more elements than the file
  * holds (which crash its reader or make it allocate without bound), and PLY coordinates beyond
  * single precision (which it stores as infinite); binary STL files whose header counts more
- * triangles than the file holds (cut short; its reader allocates for the count). It also reads
- * ASCII OFF files, which VTK has no reader for (the header keyword with the usual prefixes ST, C
- * and N, comments, counts on the header line or the next; binary, 4D and nOFF files are
- * refused).
+ * triangles than the file holds (cut short; its reader allocates for the count).
  * The output is whatever the file holds (polygons, strips, lines, vertices, point and cell
  * data); vtkQuadCoverSurfaceRepair makes a triangle surface of it.
  * @sa vtkQuadCoverWriter vtkQuadCoverSurfaceRepair

@@ -257,6 +257,61 @@ class CommandLine(unittest.TestCase):
             q = json.load(f)["quads"]
         self.assertEqual((q["euler_characteristic"], q["irregular_vertices"]), (2, [8, 0]))
 
+    def test_obj_statements(self):
+        # Data/sphere.obj written with what OBJ files hold besides "v" and "f": texture
+        # coordinates and normals in the indices, negative indices (counting back from the
+        # points read so far), a face continued on the next line by a backslash, groups,
+        # comments, a point and a line statement, CRLF line ends, and a face before the points it
+        # uses. The repair stage gives the same surface.
+        points, faces = [], []
+        with open(os.path.join(DATA, "sphere.obj")) as f:
+            for line in f:
+                w = line.split()
+                if w and w[0] == "v":
+                    points.append(line.strip())
+                elif w and w[0] == "f":
+                    faces.append([int(i) for i in w[1:]])
+        n = len(points)
+        written = []
+        for k, f in enumerate(faces[1:]):
+            if k % 3 == 0:
+                written.append("f %d/1/1 %d//1 %d/1" % tuple(f))
+            elif k % 3 == 1:
+                written.append("f %d \\\r\n  %d %d" % tuple(i - n - 1 for i in f))
+            else:
+                written.append("f %d %d %d" % tuple(f))
+        text = ["# sphere", "mtllib none.mtl", "o sphere", "f %d %d %d" % tuple(faces[0]), "g all",
+                "s 1", "vt 0 0", "vn 0 0 1"] + points + written + ["p 1", "l 1 2 3"]
+        path = self.write("sphere_statements.obj", "\r\n".join(text) + "\r\n")
+        sizes = []
+        for source in (os.path.join(DATA, "sphere.obj"), path):
+            stats = os.path.join(self.dir, "s.json")
+            code, _, err = run(source, "-o", os.path.join(self.dir, "s.vtp"), "--stage", "repair",
+                               "--stats", stats)
+            self.assertEqual(code, 0, err)
+            with open(stats) as f:
+                s = json.load(f)
+            sizes.append((s["surface"], s["repair"]["merged_points"]))
+        self.assertEqual(sizes[0], sizes[1])
+        self.assertEqual(sizes[0], ({"points": 2562, "triangles": 5120}, 0))
+
+    def test_obj_coordinates_in_double_precision(self):
+        # A tetrahedron whose coordinates single precision cannot hold: read (and written) as the
+        # doubles nearest to what the file says.
+        values = (0.1, 0.7, 0.3, 1.0000000001)
+        text = "v 0.1 0 0\nv 0 0.7 0\nv 0 0 0.3\nv 1.0000000001 1.0000000001 1.0000000001\n" \
+            "f 1 3 2\nf 1 2 4\nf 2 3 4\nf 3 1 4\n"
+        out = os.path.join(self.dir, "d.vtp")
+        code, _, err = run(self.write("double.obj", text), "-o", out, "--stage", "repair",
+                           "--minimum-component-triangle-count", "0")
+        self.assertEqual(code, 0, err)
+        reader = vtk.vtkXMLPolyDataReader()
+        reader.SetFileName(out)
+        reader.Update()
+        pd = reader.GetOutput()
+        found = {x for i in range(pd.GetNumberOfPoints()) for x in pd.GetPoint(i)} - {0.0}
+        self.assertEqual(found, set(values))
+
     def test_bad_off_files(self):
         # A generated corpus of broken OFF files: each gets one line that names what is wrong.
         tri = "0 0 0\n1 0 0\n0 1 0\n"
