@@ -1,11 +1,12 @@
 // QuadMeshAdjacency.cxx: vertexQuads, quadMeshBoundary, onSurfaceBoundary, verticesNear,
-// splitPinchedVertices.
+// splitPinchedVertices, dropPinchedFragments.
 #include "QuadMeshAdjacency.h"
 
 #include "SurfaceLocator.h"
 #include "UnionFind.h"
 
 #include <algorithm>
+#include <array>
 #include <map>
 #include <numeric>
 #include <utility>
@@ -190,5 +191,155 @@ int splitPinchedVertices(QuadMesh& mesh)
     }
   }
   return copies;
+}
+namespace
+{
+/// Per quad its piece (quads joined through shared edges): the lowest quad's index.
+std::vector<int> piecesThroughEdges(const QuadMesh& mesh)
+{
+  const int nQ = static_cast<int>(mesh.Q.rows());
+  std::vector<std::array<int, 3>> edges; // (lower end, upper end, quad)
+  edges.reserve(4 * static_cast<std::size_t>(nQ));
+  for (int i = 0; i < nQ; ++i)
+  {
+    for (int k = 0; k < 4; ++k)
+    {
+      const int a = mesh.Q(i, k), b = mesh.Q(i, (k + 1) % 4);
+      edges.push_back({ std::min(a, b), std::max(a, b), i });
+    }
+  }
+  std::sort(edges.begin(), edges.end());
+  std::vector<int> piece(nQ);
+  std::iota(piece.begin(), piece.end(), 0);
+  for (std::size_t e = 1; e < edges.size(); ++e)
+  {
+    if (edges[e][0] == edges[e - 1][0] && edges[e][1] == edges[e - 1][1])
+    {
+      unite(piece, edges[e][2], edges[e - 1][2]);
+    }
+  }
+  for (int i = 0; i < nQ; ++i)
+  {
+    piece[i] = findRoot(piece, i);
+  }
+  return piece;
+}
+
+/// The mesh without the quads marked, and without the vertices no quad uses any more.
+void removeQuads(QuadMesh& mesh, const std::vector<char>& remove)
+{
+  std::vector<int> newIndex(mesh.V.rows(), -1);
+  int used = 0, kept = 0;
+  for (int i = 0; i < static_cast<int>(mesh.Q.rows()); ++i)
+  {
+    if (remove[i])
+    {
+      continue;
+    }
+    for (int k = 0; k < 4; ++k)
+    {
+      int& index = newIndex[mesh.Q(i, k)];
+      index = index < 0 ? used++ : index;
+    }
+    mesh.Q.row(kept) = mesh.Q.row(i);
+    if (i < static_cast<int>(mesh.quadTriangle.size()))
+    {
+      mesh.quadTriangle[kept] = mesh.quadTriangle[i];
+    }
+    ++kept;
+  }
+  mesh.Q.conservativeResize(kept, 4);
+  mesh.quadTriangle.resize(std::min<std::size_t>(mesh.quadTriangle.size(), kept));
+  Eigen::MatrixX3d V(used, 3);
+  std::vector<int> vertexTriangle(used, -1), vertexPoint(used, -1);
+  for (int v = 0; v < static_cast<int>(newIndex.size()); ++v)
+  {
+    const int n = newIndex[v];
+    if (n < 0)
+    {
+      continue;
+    }
+    V.row(n) = mesh.V.row(v);
+    if (v < static_cast<int>(mesh.vertexTriangle.size()))
+    {
+      vertexTriangle[n] = mesh.vertexTriangle[v];
+    }
+    if (v < static_cast<int>(mesh.vertexPoint.size()))
+    {
+      vertexPoint[n] = mesh.vertexPoint[v];
+    }
+  }
+  for (int i = 0; i < kept; ++i)
+  {
+    for (int k = 0; k < 4; ++k)
+    {
+      mesh.Q(i, k) = newIndex[mesh.Q(i, k)];
+    }
+  }
+  mesh.V.swap(V);
+  mesh.vertexTriangle.swap(vertexTriangle);
+  mesh.vertexPoint.swap(vertexPoint);
+}
+}
+
+int dropPinchedFragments(QuadMesh& mesh, const Eigen::VectorXi& faceComponent, int largest)
+{
+  const int nQ = static_cast<int>(mesh.Q.rows());
+  if (nQ == 0 || largest <= 0)
+  {
+    return 0;
+  }
+  const std::vector<int> piece = piecesThroughEdges(mesh);
+  std::vector<int> size(nQ, 0), component(nQ, -1);
+  for (int i = 0; i < nQ; ++i)
+  {
+    ++size[piece[i]];
+    const int t = i < static_cast<int>(mesh.quadTriangle.size()) ? mesh.quadTriangle[i] : -1;
+    if (component[piece[i]] < 0 && t >= 0 && t < faceComponent.size())
+    {
+      component[piece[i]] = faceComponent[t];
+    }
+  }
+  // pieces joined through points into groups; in each group, per component, the largest piece
+  std::vector<int> group(nQ);
+  std::iota(group.begin(), group.end(), 0);
+  const VertexQuads around = vertexQuads(mesh);
+  for (int v = 0; v + 1 < static_cast<int>(around.offsets.size()); ++v)
+  {
+    for (int j = around.offsets[v] + 1; j < around.offsets[v + 1]; ++j)
+    {
+      unite(group, piece[around.quads[j]], piece[around.quads[around.offsets[v]]]);
+    }
+  }
+  std::map<std::pair<int, int>, int> most; // (group, component) -> its largest piece's size
+  for (int i = 0; i < nQ; ++i)
+  {
+    if (piece[i] == i && component[i] >= 0)
+    {
+      int& m = most[{ findRoot(group, i), component[i] }];
+      m = std::max(m, size[i]);
+    }
+  }
+  // a small piece with a piece of its component at least four times its size in its group
+  std::vector<char> fragment(nQ, 0);
+  for (int i = 0; i < nQ; ++i)
+  {
+    if (piece[i] == i && component[i] >= 0 && size[i] <= largest)
+    {
+      fragment[i] = most[{ findRoot(group, i), component[i] }] >= 4 * size[i];
+    }
+  }
+  std::vector<char> remove(nQ, 0);
+  int removed = 0;
+  for (int i = 0; i < nQ; ++i)
+  {
+    remove[i] = fragment[piece[i]];
+    removed += remove[i];
+  }
+  if (removed > 0)
+  {
+    removeQuads(mesh, remove);
+  }
+  return removed;
 }
 }

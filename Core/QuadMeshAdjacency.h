@@ -43,6 +43,20 @@ std::vector<char> verticesNear(const QuadMesh& mesh, const std::vector<int>& qua
  * copies added.
  */
 int splitPinchedVertices(QuadMesh& mesh);
+
+/**
+ * Removes the fragments of a component's quads: pieces of the mesh (quads joined through edges)
+ * of at most `largest` quads that touch, at points only (directly, or through other such
+ * pieces), a piece at least four times their size on the same component of the surface (the
+ * component of each quad's triangle, quadTriangle). Such a fragment is a quad or two hanging by a
+ * corner off the rest (where a component's grid meets its boundary at a point); the pinch split
+ * would leave it a piece of its own, which the surface's component does not have. Pieces that
+ * touch nothing, or only pieces of other components or not much larger, are kept. The vertices
+ * no quad uses any more are removed.
+ * @param faceComponent per surface triangle its component (MeshTopology::faceComponent)
+ * @return the quads removed
+ */
+int dropPinchedFragments(QuadMesh& mesh, const Eigen::VectorXi& faceComponent, int largest);
 }
 
 #endif

@@ -47,6 +47,7 @@ struct QuadMeshResult
   int turnedExtracted = 0;   ///< turnedQuads as extracted (after the holes are filled)
   int turnedQuads = 0;       ///< turnedQuads of the final mesh
   int splitVertices = 0;     ///< copies splitPinchedVertices added
+  int fragmentQuads = 0;     ///< quads dropPinchedFragments removed
   int droppedCells() const
   {
     return mesh.cellsOffSurface + mesh.cellsDegenerate + mesh.cellsConflicting;
@@ -57,8 +58,8 @@ struct QuadMeshResult
  * extractQuads, then patchQuadMesh, repairInvertedQuads (or only countInvertedQuads), repairQuads
  * of the quads facing against the surface, relaxQuads with options.relaxationIterations sweeps,
  * repairFacing, a last repairQuads round with QuadRelaxOptions::unfold for the quads still inside
- * out (kept when fewer stay so and none more faces against the surface), splitPinchedVertices,
- * then measureQuads.
+ * out (kept when fewer stay so and none more faces against the surface), dropPinchedFragments (of
+ * at most 2 quads), splitPinchedVertices, then measureQuads.
  * @throws std::invalid_argument as extractQuads does
  */
 QuadMeshResult buildQuadMesh(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F,

@@ -195,6 +195,9 @@ constexpr const char* TurnedQuads = "TurnedQuads";
 /// pieces of the mesh, or two of its boundary loops), so that the output is manifold at its
 /// vertices; 0 on a valid remesh.
 constexpr const char* SplitQuadVertices = "SplitQuadVertices";
+/// field, 1 x int: quads removed as fragments of a component's quads (a quad or two that touched
+/// the rest of their component's quads, four times as many or more, at a corner only).
+constexpr const char* FragmentQuads = "FragmentQuads";
 }
 
 #endif

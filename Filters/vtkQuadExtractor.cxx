@@ -113,6 +113,7 @@ void AddFigures(vtkFieldData* fd, const quadcover::QuadMeshResult& r)
   AddField<vtkIntArray>(
     fd, names::TurnedQuads, { double(r.turnedExtracted), double(r.turnedQuads) });
   AddField<vtkIntArray>(fd, names::SplitQuadVertices, { double(r.splitVertices) });
+  AddField<vtkIntArray>(fd, names::FragmentQuads, { double(r.fragmentQuads) });
 }
 
 /// Field data HausdorffDistance: two-sided, surface to quads, quads to surface, in % of the

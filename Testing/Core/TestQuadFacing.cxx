@@ -241,3 +241,55 @@ TEST(QuadMeshAdjacency, SplitsPinchedVerticesIntoTheirFans)
   EXPECT_EQ(cube.Q, faces);
   EXPECT_EQ(cube.V.rows(), 8);
 }
+
+TEST(QuadMeshAdjacency, DropsQuadsHangingByACornerOffTheirComponent)
+{
+  // a 2 x 2 block of quads (points 0..8, corner 8) on component 0; a quad hanging off it at 8,
+  // and another off that one at 10; a quad of component 1 touching the block at 6; a quad of
+  // component 0 touching nothing
+  QuadMesh q;
+  q.V = Eigen::MatrixX3d::Random(22, 3);
+  q.Q.resize(8, 4);
+  q.Q << 0, 1, 4, 3, 1, 2, 5, 4, 3, 4, 7, 6, 4, 5, 8, 7, // the block
+    8, 9, 10, 11, 10, 12, 13, 14,                        // hanging off it
+    6, 15, 16, 17,                                       // another component's
+    18, 19, 20, 21;                                      // alone
+  q.quadTriangle = { 0, 0, 0, 0, 0, 0, 1, 0 };
+  for (int v = 0; v < 22; ++v)
+  {
+    q.vertexTriangle.push_back(100 + v);
+    q.vertexPoint.push_back(v);
+  }
+  const Eigen::VectorXi component = (Eigen::VectorXi(2) << 0, 1).finished();
+  QuadMesh dropped = q;
+  EXPECT_EQ(dropPinchedFragments(dropped, component, 2), 2);
+  ASSERT_EQ(dropped.Q.rows(), 6);
+  ASSERT_EQ(dropped.V.rows(), 16);
+  EXPECT_EQ(dropped.quadTriangle, (std::vector<int>{ 0, 0, 0, 0, 1, 0 }));
+  const std::vector<int> kept = { 0, 1, 2, 3, 6, 7 };
+  for (int i = 0; i < 6; ++i)
+  {
+    for (int k = 0; k < 4; ++k)
+    {
+      const int v = dropped.Q(i, k), was = q.Q(kept[i], k);
+      EXPECT_TRUE(dropped.V.row(v) == q.V.row(was)) << "quad " << i << " corner " << k;
+      EXPECT_EQ(dropped.vertexPoint[v], was);
+      EXPECT_EQ(dropped.vertexTriangle[v], 100 + was);
+    }
+  }
+  // fragments only of at most `largest` quads: the chain of two single quads still goes with 1
+  QuadMesh one = q;
+  EXPECT_EQ(dropPinchedFragments(one, component, 1), 2);
+  EXPECT_EQ(dropPinchedFragments(one, component, 2), 0);
+  // a quad hanging off a block of three: three is not four times one, it stays
+  QuadMesh small;
+  small.V = Eigen::MatrixX3d::Random(12, 3);
+  small.Q.resize(4, 4);
+  small.Q << 0, 1, 4, 3, 1, 2, 5, 4, 3, 4, 7, 6, 5, 9, 10, 11;
+  small.quadTriangle.assign(4, 0);
+  small.vertexTriangle.assign(12, 0);
+  small.vertexPoint.assign(12, -1);
+  EXPECT_EQ(dropPinchedFragments(small, component, 2), 0);
+  EXPECT_EQ(small.Q.rows(), 4);
+  EXPECT_EQ(small.V.rows(), 12);
+}
