@@ -250,10 +250,10 @@ public:
   /// Descends from alpha (#F) until an iteration gains less than the convergence tolerance.
   /// A run that can no longer reach `bar` (the lowest end of the runs before it) is given up:
   /// when its energy is above the bar by more than Hopeless times what its last Window
-  /// iterations gained (each iteration gains less than the one before, up to the jumps of a
-  /// singularity moving; on the shared meshes the runs from the input end 2.8 times (armadillo)
-  /// to 1.5 times (spot) above the global start's end, after 60 to 130 iterations). Its end is
-  /// then above the bar, so it loses as it would have. The runs from the input that won (the
+  /// iterations gained (each iteration gains about as much as the one before or less, up to the
+  /// jumps of a singularity moving; on the shared meshes the runs from the input end 2.8 times
+  /// (armadillo) to 1.5 times (spot) above the global start's end, after 60 to 130 iterations). Its
+  /// end is then above the bar, so it loses as it would have. The runs from the input that won (the
   /// teapot, and the knot with the smoothest field) were below the bar after 4 iterations,
   /// and the losers, given up after 10 iterations' gains, ran 15 to 38 iterations (armadillo
   /// 28, a fifth of its smoothing time); after 4 iterations' gains they run half as many, on
@@ -273,25 +273,43 @@ public:
     history.assign(1, E);
     iterations = 0;
     Eigen::VectorXd grad(S.n);
-    for (int it = 0; it < Options.maximumNumberOfIterations && S.n > 0; ++it)
+    // Accelerated (Nesterov's momentum, at most MaximumMomentum, restarted whenever a step from
+    // the extrapolated point does not lower the energy): each step is the bound's from
+    // y = alpha + beta (alpha - previous), kept only when it ends below alpha's energy, so the
+    // descent stays monotone. At 6,500 quads: armadillo 44 -> 19 iterations, rocker-arm 45 ->
+    // 24, lion 45 -> 30, to the same energies within 3e-4.
+    Eigen::VectorXd previous = alpha, y = alpha;
+    double t = 1.0;
+    for (int it = 0; iterations < Options.maximumNumberOfIterations && S.n > 0; ++it)
     {
-      progress.report(static_cast<double>(it) / Options.maximumNumberOfIterations);
+      progress.report(static_cast<double>(iterations) / Options.maximumNumberOfIterations);
+      const double tNext = 0.5 * (1.0 + std::sqrt(1.0 + 4.0 * t * t));
+      const double beta = std::min(MaximumMomentum, (t - 1.0) / tNext);
       if (it > 0)
       {
-        z = phasors(alpha); // afresh: products of products would drift off the unit circle
+        y = alpha + beta * (alpha - previous);
+        z = phasors(y); // afresh: products of products would drift off the unit circle
       }
-      this->gradient(z, alpha, grad);
+      this->gradient(z, y, grad);
       const Eigen::VectorXd step = Solver.solveConcurrently(-grad);
       double En = 0.0;
-      Eigen::VectorXd next = this->longestStep(alpha, z, step, En);
+      Eigen::VectorXd next = this->longestStep(y, z, step, En);
+      if (!(En <= E) && beta > 0.0)
+      {
+        t = 1.0; // restart: the next step from alpha itself
+        previous = alpha;
+        continue;
+      }
       if (!(En <= E))
       {
-        // The bound guarantees descent: only rounding at the minimum gets here.
+        // The bound guarantees descent from alpha: only rounding at the minimum gets here.
         rejected = En - E > 1e-12 * EnergyScale || !std::isfinite(En);
         break;
       }
+      t = tNext;
       ++iterations;
-      alpha = next;
+      previous.swap(alpha);
+      alpha.swap(next);
       history.push_back(En);
       const bool done = E - En <= Options.convergenceTolerance * std::max(E, 1e-300);
       E = En;
@@ -422,6 +440,9 @@ private:
 
   static constexpr std::size_t Window = 4;
   static constexpr double Hopeless = 5.0;
+  /// The momentum's cap: above 0.8 cheburashka and the teapot (at 6,500 quads) ended in other
+  /// minima, higher ones, and armadillo took 32 iterations instead of 19.
+  static constexpr double MaximumMomentum = 0.7;
   const Smoothing& S;
   const SmootherOptions& Options;
   /// simplicial: one factorization, 40 to 60 solves (armadillo: 0.6 s less than supernodal)
