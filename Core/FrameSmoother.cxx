@@ -311,7 +311,15 @@ public:
       previous.swap(alpha);
       alpha.swap(next);
       history.push_back(En);
-      const bool done = E - En <= Options.convergenceTolerance * std::max(E, 1e-300);
+      bool done = E - En <= Options.convergenceTolerance * std::max(E, 1e-300);
+      if (done && beta > 0.0)
+      {
+        // a step carried by momentum may gain little where a plain one gains more: converged
+        // only when a plain step says so
+        done = false;
+        t = 1.0;
+        previous = alpha;
+      }
       E = En;
       if (beside)
       {

@@ -225,9 +225,15 @@ std::vector<int> piecesThroughEdges(const QuadMesh& mesh)
   return piece;
 }
 
-/// The mesh without the quads marked, and without the vertices no quad uses any more.
+/// The mesh without the quads marked, and without the vertices no quad uses any more
+/// (quadTriangle, vertexTriangle and vertexPoint follow when they have an entry per quad and
+/// per vertex; otherwise they are cleared).
 void removeQuads(QuadMesh& mesh, const std::vector<char>& remove)
 {
+  const bool perQuad = mesh.quadTriangle.size() == static_cast<std::size_t>(mesh.Q.rows());
+  const bool perVertexTriangle =
+    mesh.vertexTriangle.size() == static_cast<std::size_t>(mesh.V.rows());
+  const bool perVertexPoint = mesh.vertexPoint.size() == static_cast<std::size_t>(mesh.V.rows());
   std::vector<int> newIndex(mesh.V.rows(), -1);
   int used = 0, kept = 0;
   for (int i = 0; i < static_cast<int>(mesh.Q.rows()); ++i)
@@ -242,14 +248,14 @@ void removeQuads(QuadMesh& mesh, const std::vector<char>& remove)
       index = index < 0 ? used++ : index;
     }
     mesh.Q.row(kept) = mesh.Q.row(i);
-    if (i < static_cast<int>(mesh.quadTriangle.size()))
+    if (perQuad)
     {
       mesh.quadTriangle[kept] = mesh.quadTriangle[i];
     }
     ++kept;
   }
   mesh.Q.conservativeResize(kept, 4);
-  mesh.quadTriangle.resize(std::min<std::size_t>(mesh.quadTriangle.size(), kept));
+  mesh.quadTriangle.resize(perQuad ? kept : 0);
   Eigen::MatrixX3d V(used, 3);
   std::vector<int> vertexTriangle(used, -1), vertexPoint(used, -1);
   for (int v = 0; v < static_cast<int>(newIndex.size()); ++v)
@@ -260,11 +266,11 @@ void removeQuads(QuadMesh& mesh, const std::vector<char>& remove)
       continue;
     }
     V.row(n) = mesh.V.row(v);
-    if (v < static_cast<int>(mesh.vertexTriangle.size()))
+    if (perVertexTriangle)
     {
       vertexTriangle[n] = mesh.vertexTriangle[v];
     }
-    if (v < static_cast<int>(mesh.vertexPoint.size()))
+    if (perVertexPoint)
     {
       vertexPoint[n] = mesh.vertexPoint[v];
     }
@@ -279,6 +285,14 @@ void removeQuads(QuadMesh& mesh, const std::vector<char>& remove)
   mesh.V.swap(V);
   mesh.vertexTriangle.swap(vertexTriangle);
   mesh.vertexPoint.swap(vertexPoint);
+  if (!perVertexTriangle)
+  {
+    mesh.vertexTriangle.clear();
+  }
+  if (!perVertexPoint)
+  {
+    mesh.vertexPoint.clear();
+  }
 }
 }
 
@@ -300,15 +314,23 @@ int dropPinchedFragments(QuadMesh& mesh, const Eigen::VectorXi& faceComponent, i
       component[piece[i]] = faceComponent[t];
     }
   }
-  // pieces joined through points into groups; in each group, per component, the largest piece
+  // pieces joined through points into groups, each join through a piece of at most `largest`
+  // quads (two large pieces touching stay apart); in each group, per component, the largest piece
   std::vector<int> group(nQ);
   std::iota(group.begin(), group.end(), 0);
   const VertexQuads around = vertexQuads(mesh);
   for (int v = 0; v + 1 < static_cast<int>(around.offsets.size()); ++v)
   {
-    for (int j = around.offsets[v] + 1; j < around.offsets[v + 1]; ++j)
+    for (int j = around.offsets[v]; j < around.offsets[v + 1]; ++j)
     {
-      unite(group, piece[around.quads[j]], piece[around.quads[around.offsets[v]]]);
+      for (int l = around.offsets[v]; l < j; ++l)
+      {
+        const int a = piece[around.quads[j]], b = piece[around.quads[l]];
+        if (a != b && (size[a] <= largest || size[b] <= largest))
+        {
+          unite(group, a, b);
+        }
+      }
     }
   }
   std::map<std::pair<int, int>, int> most; // (group, component) -> its largest piece's size

@@ -51,8 +51,9 @@ int splitPinchedVertices(QuadMesh& mesh);
  * component of each quad's triangle, quadTriangle). Such a fragment is a quad or two hanging by a
  * corner off the rest (where a component's grid meets its boundary at a point); the pinch split
  * would leave it a piece of its own, which the surface's component does not have. Pieces that
- * touch nothing, or only pieces of other components or not much larger, are kept. The vertices
- * no quad uses any more are removed.
+ * touch nothing, or only pieces of other components or not much larger, are kept (two pieces
+ * larger than `largest` touching do not join their groups). The vertices no quad uses any more
+ * are removed.
  * @param faceComponent per surface triangle its component (MeshTopology::faceComponent)
  * @return the quads removed
  */

@@ -85,11 +85,11 @@ QuadMeshResult buildQuadMesh(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& 
     r.facing = repairFacing(V, F, topo, surface, r.mesh);
     unfoldLastInverted(V, F, topo, surface, r.mesh);
   }
-  r.turnedQuads = static_cast<int>(turnedQuads(surface, r.mesh).size());
   // a quad or two hanging by a corner off its component's quads (the truck's disk of 512
   // triangles: 21 quads and one more at a corner, at 1,000, 3,000 and 6,500 quads)
   constexpr int FragmentQuads = 2;
   r.fragmentQuads = dropPinchedFragments(r.mesh, topo.faceComponent, FragmentQuads);
+  r.turnedQuads = static_cast<int>(turnedQuads(surface, r.mesh).size());
   r.splitVertices = splitPinchedVertices(r.mesh);
   r.quality = measureQuads(r.mesh.V, r.mesh.Q);
   for (Eigen::Index i = 0; i < r.quality.scaledJacobian.size(); ++i)

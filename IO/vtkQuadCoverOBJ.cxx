@@ -13,6 +13,7 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <cstdlib>
 #include <fstream>
 #include <stdexcept>
 #include <string>
@@ -25,6 +26,18 @@ namespace
 bool IsBlank(char c)
 {
   return c == ' ' || c == '\t' || c == '\r' || c == '\f' || c == '\v';
+}
+
+/// At most 32 characters of [a, b) as they may be shown in a one-line error: other bytes than
+/// printable ASCII as '?', a longer token cut with "...".
+std::string Shown(const char* a, const char* b)
+{
+  std::string shown;
+  for (const char* c = a; c < b && shown.size() < 32; ++c)
+  {
+    shown += (*c >= 32 && *c < 127) ? *c : '?';
+  }
+  return b - a > 32 ? shown + "..." : shown;
 }
 
 /// One kind of cell as it is read: the point ids of all cells in a row, and where each starts.
@@ -113,50 +126,59 @@ private:
       {
         return;
       }
-      const char* q = this->P + 1;
-      while (q < this->End && *q == '\r')
-      {
-        ++q;
-      }
-      if (q < this->End && *q != '\n')
+      const char* q = this->ContinuationEnd(this->P);
+      if (q == nullptr)
       {
         return; // a backslash inside the line: a token of its own
       }
-      this->P = q < this->End ? q + 1 : q;
-      ++this->Line;
+      this->Line += q > this->P + 1 && q[-1] == '\n'; // (none at the end of the file)
+      this->P = q;
     }
+  }
+
+  /// When the backslash at b ends its line (only '\r' after it, then a newline or the end of the
+  /// file): past that line's newline; else null.
+  const char* ContinuationEnd(const char* b) const
+  {
+    const char* q = b + 1;
+    while (q < this->End && *q == '\r')
+    {
+      ++q;
+    }
+    if (q == this->End)
+    {
+      return q;
+    }
+    return *q == '\n' ? q + 1 : nullptr;
   }
 
   bool AtLineEnd() const { return this->P == this->End || *this->P == '\n'; }
 
-  /// The end of the token at P: the next blank, newline or the end of the file.
+  /// The end of the token at P: the next blank, newline, backslash that continues the line, or
+  /// the end of the file.
   const char* TokenEnd() const
   {
     const char* q = this->P;
-    while (q < this->End && !IsBlank(*q) && *q != '\n')
+    while (q < this->End && !IsBlank(*q) && *q != '\n' &&
+      !(*q == '\\' && this->ContinuationEnd(q) != nullptr))
     {
       ++q;
     }
     return q;
   }
 
-  /// Past the rest of the line (continued lines included) and its newline.
+  /// Past the next newline. A backslash continues only "v", "f", "l" and "p" statements (read
+  /// through SkipBlanks), not a comment or a statement that is skipped.
   void NextLine()
   {
-    for (;;)
+    while (this->P < this->End && *this->P != '\n')
     {
-      this->SkipBlanks();
-      if (this->P == this->End)
-      {
-        return;
-      }
-      if (*this->P == '\n')
-      {
-        ++this->P;
-        ++this->Line;
-        return;
-      }
-      this->P = std::max(this->TokenEnd(), this->P + 1);
+      ++this->P;
+    }
+    if (this->P < this->End)
+    {
+      ++this->P;
+      ++this->Line;
     }
   }
 
@@ -173,11 +195,16 @@ private:
       const char* end = this->TokenEnd();
       const char* start = this->P + (*this->P == '+'); // from_chars takes no '+'
       const auto read = std::from_chars(start, end, c);
-      if (read.ec == std::errc::result_out_of_range)
+      if (read.ec == std::errc::result_out_of_range && read.ptr == end)
       {
-        this->Fail("has a coordinate beyond double precision (1e308)");
+        // too large, or so small that it rounds to 0 (or a subnormal): strtod tells which
+        c = std::strtod(std::string(this->P, end).c_str(), nullptr);
+        if (std::isinf(c))
+        {
+          this->Fail("has a coordinate beyond double precision (1e308)");
+        }
       }
-      if (read.ec != std::errc() || read.ptr != end)
+      else if (read.ec != std::errc() || read.ptr != end)
       {
         this->Fail("has a vertex coordinate that is not a number");
       }
@@ -205,11 +232,15 @@ private:
       const char* end = this->TokenEnd();
       long long i = 0;
       const auto read = std::from_chars(this->P, end, i);
-      const std::string token(this->P, static_cast<std::size_t>(read.ptr - this->P));
-      if (read.ec != std::errc() || (read.ptr != end && *read.ptr != '/'))
+      const bool whole = read.ptr == end || *read.ptr == '/';
+      const std::string token = Shown(this->P, read.ptr);
+      if (read.ec == std::errc::result_out_of_range && whole)
       {
-        this->Fail("has a vertex index that is not a number (" +
-          std::string(this->P, static_cast<std::size_t>(end - this->P)) + ")");
+        this->Fail("refers to vertex " + token + ", which does not exist");
+      }
+      if (read.ec != std::errc() || !whole)
+      {
+        this->Fail("has a vertex index that is not a number (" + Shown(this->P, end) + ")");
       }
       if (i == 0 || i < -count) // (-i would overflow at the lowest 64-bit index)
       {

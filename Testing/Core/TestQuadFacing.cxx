@@ -244,31 +244,52 @@ TEST(QuadMeshAdjacency, SplitsPinchedVerticesIntoTheirFans)
 
 TEST(QuadMeshAdjacency, DropsQuadsHangingByACornerOffTheirComponent)
 {
-  // a 2 x 2 block of quads (points 0..8, corner 8) on component 0; a quad hanging off it at 8,
-  // and another off that one at 10; a quad of component 1 touching the block at 6; a quad of
-  // component 0 touching nothing
+  // A 3 x 3 block of quads (points 0..15, p = 4 j + i) on component 0, and around it: a quad
+  // hanging off its corner 15 and another off that one; two quads joined through an edge off its
+  // corner 3; three quads in a row off its corner 12, and a quad off their far end; a quad of
+  // component 1 touching it at 0; a quad of component 0 touching nothing.
+  std::vector<Eigen::Vector4i> quads;
+  for (int j = 0; j < 3; ++j)
+  {
+    for (int i = 0; i < 3; ++i)
+    {
+      const int p = 4 * j + i;
+      quads.emplace_back(p, p + 1, p + 5, p + 4);
+    }
+  }
+  const std::vector<Eigen::Vector4i> around = { { 15, 16, 17, 18 }, { 17, 19, 20, 21 }, // chain
+    { 3, 22, 23, 24 }, { 22, 25, 26, 23 },                                              // a pair
+    { 12, 27, 28, 29 }, { 27, 30, 31, 28 }, { 30, 32, 33, 31 }, // three in a row
+    { 33, 34, 35, 36 },                                         // off the three
+    { 0, 37, 38, 39 },                                          // component 1
+    { 40, 41, 42, 43 } };                                       // alone
+  quads.insert(quads.end(), around.begin(), around.end());
   QuadMesh q;
-  q.V = Eigen::MatrixX3d::Random(22, 3);
-  q.Q.resize(8, 4);
-  q.Q << 0, 1, 4, 3, 1, 2, 5, 4, 3, 4, 7, 6, 4, 5, 8, 7, // the block
-    8, 9, 10, 11, 10, 12, 13, 14,                        // hanging off it
-    6, 15, 16, 17,                                       // another component's
-    18, 19, 20, 21;                                      // alone
-  q.quadTriangle = { 0, 0, 0, 0, 0, 0, 1, 0 };
-  for (int v = 0; v < 22; ++v)
+  q.V = Eigen::MatrixX3d::Random(44, 3);
+  q.Q.resize(static_cast<Eigen::Index>(quads.size()), 4);
+  for (std::size_t i = 0; i < quads.size(); ++i)
+  {
+    q.Q.row(static_cast<Eigen::Index>(i)) = quads[i].transpose();
+    q.quadTriangle.push_back(i == 17 ? 1 : 0);
+  }
+  for (int v = 0; v < 44; ++v)
   {
     q.vertexTriangle.push_back(100 + v);
     q.vertexPoint.push_back(v);
   }
   const Eigen::VectorXi component = (Eigen::VectorXi(2) << 0, 1).finished();
+  // at most 2 quads: the chain and the pair go (the block has 9 quads, 4 and 8 times theirs); the
+  // three in a row are larger, so they do not join the block's group, and the quad off them
+  // (three is not four times one) stays, as do the other component's quad and the lone one
   QuadMesh dropped = q;
-  EXPECT_EQ(dropPinchedFragments(dropped, component, 2), 2);
-  ASSERT_EQ(dropped.Q.rows(), 6);
-  ASSERT_EQ(dropped.V.rows(), 16);
-  EXPECT_EQ(dropped.quadTriangle, (std::vector<int>{ 0, 0, 0, 0, 1, 0 }));
-  const std::vector<int> kept = { 0, 1, 2, 3, 6, 7 };
-  for (int i = 0; i < 6; ++i)
+  EXPECT_EQ(dropPinchedFragments(dropped, component, 2), 4);
+  ASSERT_EQ(dropped.Q.rows(), 15);
+  ASSERT_EQ(dropped.V.rows(), 44 - 11); // 16..26 were theirs alone
+  std::vector<int> kept = { 0, 1, 2, 3, 4, 5, 6, 7, 8, 13, 14, 15, 16, 17, 18 };
+  ASSERT_EQ(dropped.quadTriangle.size(), kept.size());
+  for (int i = 0; i < 15; ++i)
   {
+    EXPECT_EQ(dropped.quadTriangle[i], kept[i] == 17 ? 1 : 0);
     for (int k = 0; k < 4; ++k)
     {
       const int v = dropped.Q(i, k), was = q.Q(kept[i], k);
@@ -277,19 +298,16 @@ TEST(QuadMeshAdjacency, DropsQuadsHangingByACornerOffTheirComponent)
       EXPECT_EQ(dropped.vertexTriangle[v], 100 + was);
     }
   }
-  // fragments only of at most `largest` quads: the chain of two single quads still goes with 1
+  // nothing more to drop; at most 1 quad: only the chain
+  EXPECT_EQ(dropPinchedFragments(dropped, component, 2), 0);
   QuadMesh one = q;
   EXPECT_EQ(dropPinchedFragments(one, component, 1), 2);
-  EXPECT_EQ(dropPinchedFragments(one, component, 2), 0);
-  // a quad hanging off a block of three: three is not four times one, it stays
-  QuadMesh small;
-  small.V = Eigen::MatrixX3d::Random(12, 3);
-  small.Q.resize(4, 4);
-  small.Q << 0, 1, 4, 3, 1, 2, 5, 4, 3, 4, 7, 6, 5, 9, 10, 11;
-  small.quadTriangle.assign(4, 0);
-  small.vertexTriangle.assign(12, 0);
-  small.vertexPoint.assign(12, -1);
-  EXPECT_EQ(dropPinchedFragments(small, component, 2), 0);
-  EXPECT_EQ(small.Q.rows(), 4);
-  EXPECT_EQ(small.V.rows(), 12);
+  EXPECT_EQ(one.Q.rows(), 17);
+  // per-vertex arrays shorter than V are cleared, not filled with made-up entries
+  QuadMesh bare = q;
+  bare.vertexTriangle.clear();
+  bare.vertexPoint.resize(10);
+  EXPECT_EQ(dropPinchedFragments(bare, component, 2), 4);
+  EXPECT_TRUE(bare.vertexTriangle.empty());
+  EXPECT_TRUE(bare.vertexPoint.empty());
 }

@@ -365,6 +365,11 @@ CASES = {
                          Refused("line 1 has a vertex of fewer than three coordinates")),
     "word_index_obj": (_text("word.obj", TRIANGLE_OBJ + "f 1 2 x/1\n"),
                        Refused("line 4 has a vertex index that is not a number")),
+    # the error shows 32 characters of a long token, and an index beyond 64 bits is no vertex
+    "long_token_obj": (_text("long.obj", TRIANGLE_OBJ + "f 1 2 " + 5000 * "x" + "\n"),
+                       Refused("not a number (" + 32 * "x" + "...)")),
+    "huge_index_obj": (_text("huge_index.obj", TRIANGLE_OBJ + "f 1 2 99999999999999999999\n"),
+                       Refused("refers to vertex 99999999999999999999, which does not exist")),
     "bad_index_off": (_text("index.off", TRIANGLE_OFF + "3 0 1 7\n"), Refused("refers to vertex 7")),
     "negative_index_off": (_text("negative.off", TRIANGLE_OFF + "3 0 1 -2\n"),
                            Refused("refers to vertex -2")),

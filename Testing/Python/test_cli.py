@@ -274,14 +274,17 @@ class CommandLine(unittest.TestCase):
         n = len(points)
         written = []
         for k, f in enumerate(faces[1:]):
-            if k % 3 == 0:
+            if k % 4 == 0:
                 written.append("f %d/1/1 %d//1 %d/1" % tuple(f))
-            elif k % 3 == 1:
+            elif k % 4 == 1:
                 written.append("f %d \\\r\n  %d %d" % tuple(i - n - 1 for i in f))
+            elif k % 4 == 2:
+                written.append("f %d %d\\\r\n%d" % tuple(f))  # the backslash on the index
             else:
                 written.append("f %d %d %d" % tuple(f))
+        # a comment that ends in a backslash does not take the next line with it
         text = ["# sphere", "mtllib none.mtl", "o sphere", "f %d %d %d" % tuple(faces[0]), "g all",
-                "s 1", "vt 0 0", "vn 0 0 1"] + points + written + ["p 1", "l 1 2 3"]
+                "s 1", "vt 0 0", "vn 0 0 1", "# points \\"] + points + written + ["p 1", "l 1 2 3"]
         path = self.write("sphere_statements.obj", "\r\n".join(text) + "\r\n")
         sizes = []
         for source in (os.path.join(DATA, "sphere.obj"), path):
@@ -298,8 +301,9 @@ class CommandLine(unittest.TestCase):
     def test_obj_coordinates_in_double_precision(self):
         # A tetrahedron whose coordinates single precision cannot hold: read (and written) as the
         # doubles nearest to what the file says.
+        # (1e-400 is below the smallest double: read as 0, not refused)
         values = (0.1, 0.7, 0.3, 1.0000000001)
-        text = "v 0.1 0 0\nv 0 0.7 0\nv 0 0 0.3\nv 1.0000000001 1.0000000001 1.0000000001\n" \
+        text = "v 0.1 0 1e-400\nv 0 0.7 0\nv 0 0 0.3\nv 1.0000000001 1.0000000001 1.0000000001\n" \
             "f 1 3 2\nf 1 2 4\nf 2 3 4\nf 3 1 4\n"
         out = os.path.join(self.dir, "d.vtp")
         code, _, err = run(self.write("double.obj", text), "-o", out, "--stage", "repair",
