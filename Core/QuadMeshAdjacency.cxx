@@ -1,5 +1,5 @@
 // QuadMeshAdjacency.cxx: vertexQuads, quadMeshBoundary, onSurfaceBoundary, verticesNear,
-// splitPinchedVertices, dropPinchedFragments.
+// splitPinchedVertices, removeUnusedVertices, dropPinchedFragments.
 #include "QuadMeshAdjacency.h"
 
 #include "SurfaceLocator.h"
@@ -192,6 +192,47 @@ int splitPinchedVertices(QuadMesh& mesh)
   }
   return copies;
 }
+void removeUnusedVertices(QuadMesh& mesh)
+{
+  const bool perVertexTriangle =
+    mesh.vertexTriangle.size() == static_cast<std::size_t>(mesh.V.rows());
+  const bool perVertexPoint = mesh.vertexPoint.size() == static_cast<std::size_t>(mesh.V.rows());
+  std::vector<int> newIndex(mesh.V.rows(), -1);
+  int used = 0;
+  for (Eigen::Index i = 0; i < mesh.Q.rows(); ++i)
+  {
+    for (int k = 0; k < 4; ++k)
+    {
+      int& index = newIndex[mesh.Q(i, k)];
+      index = index < 0 ? used++ : index;
+      mesh.Q(i, k) = index;
+    }
+  }
+  Eigen::MatrixX3d V(used, 3);
+  std::vector<int> vertexTriangle(perVertexTriangle ? used : 0, -1);
+  std::vector<int> vertexPoint(perVertexPoint ? used : 0, -1);
+  for (int v = 0; v < static_cast<int>(newIndex.size()); ++v)
+  {
+    const int n = newIndex[v];
+    if (n < 0)
+    {
+      continue;
+    }
+    V.row(n) = mesh.V.row(v);
+    if (perVertexTriangle)
+    {
+      vertexTriangle[n] = mesh.vertexTriangle[v];
+    }
+    if (perVertexPoint)
+    {
+      vertexPoint[n] = mesh.vertexPoint[v];
+    }
+  }
+  mesh.V.swap(V);
+  mesh.vertexTriangle.swap(vertexTriangle);
+  mesh.vertexPoint.swap(vertexPoint);
+}
+
 namespace
 {
 /// Per quad its piece (quads joined through shared edges): the lowest quad's index.
@@ -225,74 +266,26 @@ std::vector<int> piecesThroughEdges(const QuadMesh& mesh)
   return piece;
 }
 
-/// The mesh without the quads marked, and without the vertices no quad uses any more
-/// (quadTriangle, vertexTriangle and vertexPoint follow when they have an entry per quad and
-/// per vertex; otherwise they are cleared).
+/// The mesh without the quads marked (and without the vertices no quad uses any more).
 void removeQuads(QuadMesh& mesh, const std::vector<char>& remove)
 {
   const bool perQuad = mesh.quadTriangle.size() == static_cast<std::size_t>(mesh.Q.rows());
-  const bool perVertexTriangle =
-    mesh.vertexTriangle.size() == static_cast<std::size_t>(mesh.V.rows());
-  const bool perVertexPoint = mesh.vertexPoint.size() == static_cast<std::size_t>(mesh.V.rows());
-  std::vector<int> newIndex(mesh.V.rows(), -1);
-  int used = 0, kept = 0;
+  int kept = 0;
   for (int i = 0; i < static_cast<int>(mesh.Q.rows()); ++i)
   {
-    if (remove[i])
+    if (!remove[i])
     {
-      continue;
+      mesh.Q.row(kept) = mesh.Q.row(i);
+      if (perQuad)
+      {
+        mesh.quadTriangle[kept] = mesh.quadTriangle[i];
+      }
+      ++kept;
     }
-    for (int k = 0; k < 4; ++k)
-    {
-      int& index = newIndex[mesh.Q(i, k)];
-      index = index < 0 ? used++ : index;
-    }
-    mesh.Q.row(kept) = mesh.Q.row(i);
-    if (perQuad)
-    {
-      mesh.quadTriangle[kept] = mesh.quadTriangle[i];
-    }
-    ++kept;
   }
   mesh.Q.conservativeResize(kept, 4);
   mesh.quadTriangle.resize(perQuad ? kept : 0);
-  Eigen::MatrixX3d V(used, 3);
-  std::vector<int> vertexTriangle(used, -1), vertexPoint(used, -1);
-  for (int v = 0; v < static_cast<int>(newIndex.size()); ++v)
-  {
-    const int n = newIndex[v];
-    if (n < 0)
-    {
-      continue;
-    }
-    V.row(n) = mesh.V.row(v);
-    if (perVertexTriangle)
-    {
-      vertexTriangle[n] = mesh.vertexTriangle[v];
-    }
-    if (perVertexPoint)
-    {
-      vertexPoint[n] = mesh.vertexPoint[v];
-    }
-  }
-  for (int i = 0; i < kept; ++i)
-  {
-    for (int k = 0; k < 4; ++k)
-    {
-      mesh.Q(i, k) = newIndex[mesh.Q(i, k)];
-    }
-  }
-  mesh.V.swap(V);
-  mesh.vertexTriangle.swap(vertexTriangle);
-  mesh.vertexPoint.swap(vertexPoint);
-  if (!perVertexTriangle)
-  {
-    mesh.vertexTriangle.clear();
-  }
-  if (!perVertexPoint)
-  {
-    mesh.vertexPoint.clear();
-  }
+  removeUnusedVertices(mesh);
 }
 }
 

@@ -44,6 +44,11 @@ std::vector<char> verticesNear(const QuadMesh& mesh, const std::vector<int>& qua
  */
 int splitPinchedVertices(QuadMesh& mesh);
 
+/// Removes the vertices no quad uses, numbering the others in the order the quads first use
+/// them; vertexTriangle and vertexPoint follow when they have an entry per vertex (otherwise
+/// they are cleared).
+void removeUnusedVertices(QuadMesh& mesh);
+
 /**
  * Removes the fragments of a component's quads: pieces of the mesh (quads joined through edges)
  * of at most `largest` quads that touch, at points only (directly, or through other such

@@ -131,45 +131,22 @@ public:
   /// Writes the quads back, without the points no quad uses.
   void finish()
   {
-    std::vector<int> newIndex(q_.V.rows(), -1);
-    int used = 0;
     std::vector<NewQuad> kept;
     for (size_t i = 0; i < quads_.size(); ++i)
     {
       if (!removed_[i])
       {
         kept.push_back(quads_[i]);
-        for (int k = 0; k < 4; ++k)
-        {
-          int& index = newIndex[quads_[i].corners[k]];
-          index = index < 0 ? used++ : index;
-        }
       }
     }
-    QuadMesh out = q_;
-    out.V.resize(used, 3);
-    out.vertexTriangle.assign(used, -1);
-    out.vertexPoint.assign(used, -1);
-    for (int v = 0; v < static_cast<int>(newIndex.size()); ++v)
-    {
-      if (newIndex[v] >= 0)
-      {
-        out.V.row(newIndex[v]) = q_.V.row(v);
-        out.vertexTriangle[newIndex[v]] = q_.vertexTriangle[v];
-        out.vertexPoint[newIndex[v]] = q_.vertexPoint[v];
-      }
-    }
-    out.Q.resize(static_cast<Eigen::Index>(kept.size()), 4);
-    out.quadTriangle.resize(kept.size());
+    q_.Q.resize(static_cast<Eigen::Index>(kept.size()), 4);
+    q_.quadTriangle.resize(kept.size());
     for (size_t i = 0; i < kept.size(); ++i)
     {
-      for (int k = 0; k < 4; ++k)
-      {
-        out.Q(static_cast<Eigen::Index>(i), k) = newIndex[kept[i].corners[k]];
-      }
-      out.quadTriangle[i] = kept[i].triangle;
+      q_.Q.row(static_cast<Eigen::Index>(i)) = kept[i].corners.transpose();
+      q_.quadTriangle[i] = kept[i].triangle;
     }
-    q_ = std::move(out);
+    removeUnusedVertices(q_);
   }
 
 private:
