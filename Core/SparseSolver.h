@@ -43,9 +43,8 @@ enum class Factorization
  * factor, which calls no BLAS) with the BLAS on one thread and CHOLMOD's OpenMP loops under
  * OpenMP's dynamic adjustment wherever CHOLMOD runs (CholmodThreads.h), so that the result does
  * not depend on the BLAS thread count and CHOLMOD's threads need not outnumber the cores.
- * compute() and solve()
- * are used as Eigen's; the solves run when the solve() expression is assigned, which calls
- * _solve_impl below.
+ * compute() and solve() are used as Eigen's; the solves run when the solve() expression is
+ * assigned, which calls _solve_impl below.
  */
 template<typename MatrixType>
 class CholmodLLT : public Eigen::CholmodBase<MatrixType, Eigen::Lower, CholmodLLT<MatrixType>>

@@ -232,19 +232,14 @@ private:
       const char* end = this->TokenEnd();
       long long i = 0;
       const auto read = std::from_chars(this->P, end, i);
-      const bool whole = read.ptr == end || *read.ptr == '/';
-      const std::string token = Shown(this->P, read.ptr);
-      if (read.ec == std::errc::result_out_of_range && whole)
-      {
-        this->Fail("refers to vertex " + token + ", which does not exist");
-      }
-      if (read.ec != std::errc() || !whole)
+      const bool beyond = read.ec == std::errc::result_out_of_range; // beyond 64 bits
+      if ((read.ec != std::errc() && !beyond) || (read.ptr != end && *read.ptr != '/'))
       {
         this->Fail("has a vertex index that is not a number (" + Shown(this->P, end) + ")");
       }
-      if (i == 0 || i < -count) // (-i would overflow at the lowest 64-bit index)
+      if (beyond || i == 0 || i < -count) // (-i would overflow at the lowest 64-bit index)
       {
-        this->Fail("refers to vertex " + token + ", which does not exist");
+        this->Fail("refers to vertex " + Shown(this->P, read.ptr) + ", which does not exist");
       }
       if (i > this->MaxIndex)
       {
