@@ -28,8 +28,11 @@ struct QuadMeshOptions
   /// Fill the holes that cells without a quad leave inside the surface with quads
   /// (patchQuadMesh), where the map could not be repaired.
   bool fillHoles = true;
-  /// Sweeps of tangential relaxation of the whole mesh afterwards (relaxQuads); 0: none.
-  int relaxationIterations = 0;
+  /// Sweeps of tangential relaxation of the whole mesh afterwards (relaxQuads, vertices whose
+  /// quads span a sharp bend held); 0: none. Three sweeps take the shared meshes' median
+  /// edge-length RSD from 10.6 to 10.3% and the angle RSD from 7.7 to 7.3%, and no Hausdorff
+  /// distance grows (Documentation/Algorithms.md); more change little.
+  int relaxationIterations = 3;
   /// Measure the two-sided Hausdorff distance to the surface (hausdorffSamples); the filter
   /// finds the closest points.
   bool computeHausdorffDistance = true;
@@ -56,10 +59,12 @@ struct QuadMeshResult
 
 /**
  * extractQuads, then patchQuadMesh, repairInvertedQuads (or only countInvertedQuads), repairQuads
- * of the quads facing against the surface, relaxQuads with options.relaxationIterations sweeps,
- * repairFacing, a last repairQuads round with QuadRelaxOptions::unfold for the quads still inside
- * out (kept when fewer stay so and none more faces against the surface), dropPinchedFragments (of
- * at most 2 quads), splitPinchedVertices, then measureQuads.
+ * of the quads facing against the surface, relaxQuads with options.relaxationIterations sweeps
+ * (QuadRelaxOptions::holdAcrossBends; the corners of a quad it made face against the surface or
+ * turn inside out are put back), repairFacing, a last repairQuads round with
+ * QuadRelaxOptions::unfold for the quads still inside out (kept when fewer stay so and none more
+ * faces against the surface), dropPinchedFragments (of at most 2 quads), splitPinchedVertices, then
+ * measureQuads.
  * @throws std::invalid_argument as extractQuads does
  */
 QuadMeshResult buildQuadMesh(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F,

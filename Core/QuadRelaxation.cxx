@@ -79,6 +79,7 @@ public:
     , topo(topo)
     , mesh(mesh)
     , options(options)
+    , creaseCos(std::cos(options.featureAngle * 3.14159265358979323846 / 180.0))
   {
     computeNormals();
     findCreases();
@@ -132,7 +133,6 @@ private:
   /// The edges no vertex crosses (boundary, crease, non-manifold) and the points on them.
   void findCreases()
   {
-    const double creaseCos = std::cos(options.featureAngle * 3.14159265358979323846 / 180.0);
     blocked.assign(topo.numEdges(), 1);
     pointOnCrease.assign(V.rows(), 0);
     for (int e = 0; e < topo.numEdges(); ++e)
@@ -227,10 +227,36 @@ private:
     return true;
   }
 
+  /// Do v's quads span a bend sharper than the feature angle: the input's normal at one of
+  /// their corners against its normal at v? (Where they do, the surface bends that much within
+  /// a quad or two, on a ridge or a tube only a few quads round: the centre of the quads lies
+  /// off the surface there, and the move would drag the quads' chords across the bend.)
+  bool spansBend(int v) const
+  {
+    const Eigen::Vector3d n = normal.row(mesh.vertexTriangle[v]);
+    for (int j = offsets[v]; j < offsets[v + 1]; ++j)
+    {
+      for (int k = 0; k < 4; ++k)
+      {
+        const int c = mesh.Q(quadsOf[j], k);
+        if (n.dot(normal.row(mesh.vertexTriangle[c])) < creaseCos)
+        {
+          return true;
+        }
+      }
+    }
+    return false;
+  }
+
   /// Moves v part of the way to the centre of its quads, in the plane of its triangle and back
   /// onto the surface, unless that folds a corner of its quads.
   void relaxVertex(int v, QuadRelaxReport& report)
   {
+    if (options.holdAcrossBends && spansBend(v))
+    {
+      ++report.heldMoves;
+      return;
+    }
     Eigen::Vector3d centre;
     if (!centreOfQuads(v, centre))
     {
@@ -414,6 +440,7 @@ private:
   const MeshTopology& topo;
   QuadMesh& mesh;
   const QuadRelaxOptions& options;
+  const double creaseCos;          ///< cosine of options.featureAngle
   Eigen::MatrixX3d normal;         ///< #F x 3: the input's unit normals (0 where degenerate)
   std::vector<char> blocked;       ///< per input edge: boundary, crease or non-manifold
   std::vector<char> pointOnCrease; ///< per input point: on a blocked edge

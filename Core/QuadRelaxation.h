@@ -26,6 +26,12 @@ struct QuadRelaxOptions
   /// Input edges with a dihedral angle above this (degrees) are creases: vertices on them stay,
   /// and no vertex is moved across one.
   double featureAngle = 60.0;
+  /// Vertices whose quads span a bend of the input sharper than featureAngle (the input's normal
+  /// at a corner of their quads against its normal at the vertex) stay: moved along the surface
+  /// they would pull their quads' chords across the bend and cut it off (the rim of a thin ear,
+  /// a ridge no quad edge follows). For the relaxation that evens out the quads; the repairs of
+  /// inverted quads move them.
+  bool holdAcrossBends = false;
   /// #V of the quad mesh, 1 for the vertices that may move; empty: all of them.
   std::vector<char> movable;
   /// Where a vertex's quads have a corner inside out and its step was not made or did not turn
@@ -38,6 +44,7 @@ struct QuadRelaxOptions
 struct QuadRelaxReport
 {
   int fixedVertices = 0; ///< on the boundary or on a crease: not moved
+  int heldMoves = 0;     ///< moves not made because the vertex's quads span a bend
   int rejectedMoves = 0; ///< moves that would have folded a quad
   double maxMove = 0.0;  ///< longest single move, in units of the mean edge length
 };
@@ -47,7 +54,8 @@ struct QuadRelaxReport
  * centres of its quads, within the plane of the input triangle it lies in, and is put back on
  * the input surface (the closest point, found by walking from its triangle across edges that
  * are neither boundary nor crease). The connectivity stays; vertices on the quad mesh's boundary
- * or on input creases (featureAngle) stay where they are; a move that would turn a quad corner
+ * or on input creases (featureAngle) stay where they are, with options.holdAcrossBends also
+ * those whose quads span a bend that sharp; a move that would turn a quad corner
  * inside out (against the input's normal) is not made; with options.unfold a vertex whose
  * quads keep a corner inside out also tries short steps around it. It evens out uneven
  * spacing, at the price of the grid lines' exact alignment with the frame field; it cannot move

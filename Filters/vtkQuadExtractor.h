@@ -80,15 +80,17 @@ public:
   ///@}
 
   ///@{
-  /** Sweeps of tangential relaxation after extraction, in [0, 1000] (default 0: the quads as
+  /** Sweeps of tangential relaxation after extraction, in [0, 1000] (default 3; 0: the quads as
    * the map cuts them). Each free vertex moves halfway towards the area-weighted mean of its
    * quads' centres, in the input's tangent plane, and back onto the input surface; vertices on
-   * the boundary or on input creases (dihedral angle above 60 degrees) stay, and no move turns a
-   * quad corner inside out. It evens out uneven spacing (a jittered mesh returns to about its
-   * original figures) but it cannot change how many quads a region has, which is where most of a
-   * map's distortion shows: on the shared meshes it lowers the RSDs by a few per cent at most,
-   * raises the Hausdorff distance slightly, and the grid lines follow the frame field less
-   * exactly (Documentation/Algorithms.md, "How the quads are cut out"). */
+   * the boundary or on input creases (dihedral angle above 60 degrees) stay, and so do those
+   * whose quads span a bend that sharp (moved, they would pull the quads' chords across it: the
+   * rim of a thin ear), and no move turns a quad corner inside out. It evens out uneven spacing
+   * (a jittered mesh returns to about its original figures) but it cannot change how many quads
+   * a region has, which is where most of a map's distortion shows: on the shared meshes three
+   * sweeps lower the edge-length RSD by 0.1-1.1 points and the angle RSD by 0.1-0.8 points, and
+   * the grid lines follow the frame field a little less exactly (Documentation/Algorithms.md,
+   * "How the quads are cut out"). */
   vtkSetClampMacro(RelaxationIterations, int, 0, 1000);
   vtkGetMacro(RelaxationIterations, int);
   ///@}

@@ -127,7 +127,7 @@ class CurvaturePipeline(unittest.TestCase):
         extractor = vtkQuadExtractor()
         extractor.SetInputConnection(solver.GetOutputPort())
         self.assertTrue(extractor.GetRepairInvertedQuads())
-        self.assertEqual(extractor.GetRelaxationIterations(), 0)
+        self.assertEqual(extractor.GetRelaxationIterations(), 3)
         extractor.SetRelaxationIterations(5)
         extractor.Update()
         out = extractor.GetOutput()
