@@ -37,37 +37,46 @@ void unfoldLastInverted(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F,
   }
 }
 
-/// The quads facing against the surface or with a corner inside out, 1 each.
-std::vector<char> wrongQuads(const SurfaceLocator& surface, const QuadMesh& mesh)
+/// Is quad i facing against the surface or inside out?
+bool wrongQuad(const SurfaceLocator& surface, const QuadMesh& mesh, int i)
 {
-  std::vector<char> wrong(mesh.Q.rows(), 0);
-  for (const int q : turnedQuads(surface, mesh))
-  {
-    wrong[q] = 1;
-  }
-  for (const int q : invertedQuads(mesh.V, mesh.Q))
-  {
-    wrong[q] = 1;
-  }
-  return wrong;
+  return !(quadScaledJacobian(mesh.V, mesh.Q, i) > 0) || !(quadFacing(surface, mesh, i) > 0);
 }
 
 /// Puts the corners of the quads that the relaxation turned against the surface or inside out
 /// back where they were before it, until no quad that was right is wrong: relaxQuads checks each
 /// move against the corners' normals only, not against the input's normal at the quad's centre
 /// (on the truck's body at 6,500 quads 61 quads were wrong after it where 60 were before; 10
-/// vertices put back leave 58). Returns the vertices put back.
+/// vertices put back leave 58). Only quads with a moved corner are measured. Returns the
+/// vertices put back.
 int undoWrongMoves(const SurfaceLocator& surface, const QuadMesh& before, QuadMesh& mesh)
 {
-  const std::vector<char> wrongBefore = wrongQuads(surface, before);
+  const int nQ = static_cast<int>(mesh.Q.rows());
+  auto moved = [&](int q) {
+    for (int k = 0; k < 4; ++k)
+    {
+      if (mesh.V.row(mesh.Q(q, k)) != before.V.row(mesh.Q(q, k)))
+      {
+        return true;
+      }
+    }
+    return false;
+  };
+  std::vector<int> watched; // quads with a moved corner that were right before
+  for (int q = 0; q < nQ; ++q)
+  {
+    if (moved(q) && !wrongQuad(surface, before, q))
+    {
+      watched.push_back(q);
+    }
+  }
   int restored = 0;
   for (bool again = true; again;)
   {
     again = false;
-    const std::vector<char> wrong = wrongQuads(surface, mesh);
-    for (int q = 0; q < static_cast<int>(mesh.Q.rows()); ++q)
+    for (const int q : watched)
     {
-      if (!wrong[q] || wrongBefore[q])
+      if (!moved(q) || !wrongQuad(surface, mesh, q))
       {
         continue;
       }
