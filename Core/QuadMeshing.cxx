@@ -134,6 +134,14 @@ QuadMeshResult buildQuadMesh(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& 
     repairQuads(V, F, topo, r.mesh, bad, 2, 10, 3, progress.part(0.7, 0.73));
   }
   progress.report(0.75);
+  if (options.repairInvertedQuads)
+  {
+    r.facing = repairFacing(V, F, topo, surface, r.mesh);
+    unfoldLastInverted(V, F, topo, surface, r.mesh);
+  }
+  // last, so that the repairs above see the quads as the map made them (moved first, a few
+  // vertices changed what the repairs did near the map's defects: fandisk with feature lines at
+  // 6,500 quads, Hausdorff distance 0.40 -> 0.83%)
   if (options.relaxationIterations > 0)
   {
     QuadRelaxOptions relax;
@@ -142,11 +150,6 @@ QuadMeshResult buildQuadMesh(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& 
     const QuadMesh unrelaxed = r.mesh;
     relaxQuads(V, F, topo, r.mesh, relax, progress.part(0.75, 0.95));
     undoWrongMoves(surface, unrelaxed, r.mesh);
-  }
-  if (options.repairInvertedQuads)
-  {
-    r.facing = repairFacing(V, F, topo, surface, r.mesh);
-    unfoldLastInverted(V, F, topo, surface, r.mesh);
   }
   // a quad or two hanging by a corner off its component's quads (the truck's disk of 512
   // triangles: 21 quads and one more at a corner, at 1,000, 3,000 and 6,500 quads)

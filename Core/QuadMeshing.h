@@ -59,12 +59,12 @@ struct QuadMeshResult
 
 /**
  * extractQuads, then patchQuadMesh, repairInvertedQuads (or only countInvertedQuads), repairQuads
- * of the quads facing against the surface, relaxQuads with options.relaxationIterations sweeps
- * (QuadRelaxOptions::holdAcrossBends; the corners of a quad it made face against the surface or
- * turn inside out are put back), repairFacing, a last repairQuads round with
+ * of the quads facing against the surface, repairFacing, a last repairQuads round with
  * QuadRelaxOptions::unfold for the quads still inside out (kept when fewer stay so and none more
- * faces against the surface), dropPinchedFragments (of at most 2 quads), splitPinchedVertices, then
- * measureQuads.
+ * faces against the surface), relaxQuads with options.relaxationIterations sweeps
+ * (QuadRelaxOptions::holdAcrossBends; the corners of a quad it made face against the surface or
+ * turn inside out are put back), dropPinchedFragments (of at most 2 quads), splitPinchedVertices,
+ * then measureQuads.
  * @throws std::invalid_argument as extractQuads does
  */
 QuadMeshResult buildQuadMesh(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F,
