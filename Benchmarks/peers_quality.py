@@ -9,7 +9,8 @@ with its defaults and --target-quad-count QUADS), and each output is measured ag
 by the shared evaluator (../shared/tools/quadeval.py): interior irregular vertices, edge-length
 and angle RSD, Hausdorff distance in % of the diagonal, faces against the input's normal, χ (the
 input's in the first column). The last rows give each tool's medians over the meshes where all
-three gave a mesh. A run that fails or leaves no output shows as "failed".
+three gave a mesh. A run that fails, leaves no output or takes over --timeout seconds shows as
+"failed" (the evaluator's own failure as "not measured", with its message on stderr).
 """
 import argparse
 import json
@@ -19,36 +20,54 @@ import subprocess
 import sys
 import tempfile
 
-from peers_speed import HERE, MESHES, commands
+from peers_speed import HERE, commands, shared_meshes, tool_arguments
 
 KEYS = ("irregular_interior", "rsd_edge_pct", "rsd_angle_pct", "hausdorff_pct_diag",
         "faces_against_ref_normal", "euler")
 
 
 def measure(evaluator, out, mesh=None):
-    """The evaluator's figures of one output (against mesh), or None."""
+    """The evaluator's figures of one output (against mesh), or None (its message on stderr)."""
     done = subprocess.run([sys.executable, evaluator, out, "--json"] +
                           (["--ref", mesh] if mesh else []), capture_output=True, text=True)
-    return json.loads(done.stdout) if done.returncode == 0 else None
+    if done.returncode != 0:
+        print("peers_quality.py: the evaluator failed on %s: %s" % (out, done.stderr.strip()),
+              file=sys.stderr)
+        return None
+    return json.loads(done.stdout)
 
 
-def row(name, chi, tool, r):
+def run(command, timeout):
+    """The output file of one run of a tool, or None when it failed or left none."""
+    out = command[command.index("-o") + 1]
+    if os.path.exists(out):
+        os.remove(out)
+    try:
+        done = subprocess.run(command, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL,
+                              timeout=timeout)
+    except subprocess.TimeoutExpired:
+        return None
+    if done.returncode != 0 or not os.path.exists(out) or os.path.getsize(out) == 0:
+        return None
+    return out
+
+
+def row(name, chi, tool, r, why="failed"):
     if r is None:
-        return "| %s (%s) | %s | failed | | | | | |" % (name, chi, tool)
+        return "| %s (%s) | %s | %s | | | | | |" % (name, chi, tool, why)
     return "| %s (%s) | %s | %d | %.1f | %.1f | %.2f | %d | %d |" % (
         (name, chi, tool) + tuple(r[k] for k in KEYS))
 
 
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--data", default=os.path.join(HERE, "..", "..", "shared", "data"))
-    parser.add_argument("--peers", default=os.path.join(HERE, "..", "..", "shared", "peers", "bin"))
-    parser.add_argument("--quadcover", default=os.path.join(HERE, "..", "build", "bin", "quadcover"))
-    parser.add_argument("--meshes", default=",".join(MESHES))
-    parser.add_argument("--quads", type=int, default=6500)
+    tool_arguments(parser)
+    parser.add_argument("--evaluator",
+                        default=os.path.join(HERE, "..", "..", "shared", "tools", "quadeval.py"))
+    parser.add_argument("--timeout", type=float, default=600.0)
     args = parser.parse_args()
     args.quadriflow = True
-    evaluator = os.path.join(args.data, "..", "tools", "quadeval.py")
+    evaluator = args.evaluator
     for tool in (args.quadcover, os.path.join(args.peers, "instant-meshes"),
                  os.path.join(args.peers, "quadriflow"), evaluator):
         if not os.path.exists(tool):
@@ -59,23 +78,16 @@ def main():
     print("|---|---|---:|---:|---:|---:|---:|---:|")
     found = {n: {} for n in names}
     with tempfile.TemporaryDirectory() as scratch:
-        for name in args.meshes.split(","):
-            mesh = os.path.join(args.data, name + ".obj")
-            if not os.path.exists(mesh):
-                print("peers_quality.py: skipped, not found: " + mesh, file=sys.stderr)
-                continue
-            chi = measure(evaluator, mesh)["euler"]
+        for name, mesh in shared_meshes(args, "peers_quality.py"):
+            figures = measure(evaluator, mesh)
+            chi = figures["euler"] if figures else "?"
             for tool, command in commands(args, mesh, scratch).items():
-                out = command[command.index("-o") + 1]
-                done = subprocess.run(command, stdout=subprocess.DEVNULL,
-                                      stderr=subprocess.DEVNULL)
-                r = None
-                if done.returncode == 0 and os.path.exists(out) and os.path.getsize(out) > 0:
-                    r = measure(evaluator, out, mesh)
-                    os.remove(out)
+                out = run(command, args.timeout)
+                r = measure(evaluator, out, mesh) if out else None
                 if r is not None:
                     found[tool][name] = r
-                print(row(name, chi, tool, r), flush=True)
+                print(row(name, chi, tool, r, "failed" if out is None else "not measured"),
+                      flush=True)
     common = [m for m in found["QuadCover"] if all(m in found[n] for n in names)]
     if not common:
         return

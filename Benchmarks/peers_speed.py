@@ -82,19 +82,35 @@ def commands(args, mesh, scratch):
     return tools
 
 
+def tool_arguments(parser):
+    """The options peers_speed.py and peers_quality.py share: where the meshes, the peers and
+    QuadCover are, which meshes, how many quads."""
+    parser.add_argument("--data", default=os.path.join(HERE, "..", "..", "shared", "data"))
+    parser.add_argument("--peers", default=os.path.join(HERE, "..", "..", "shared", "peers", "bin"))
+    parser.add_argument("--quadcover", default=os.path.join(HERE, "..", "build", "bin", "quadcover"))
+    parser.add_argument("--meshes", default=",".join(MESHES))
+    parser.add_argument("--quads", type=int, default=6500)
+
+
+def shared_meshes(args, script):
+    """(name, path) of each mesh of --meshes in --data; one missing is said and skipped."""
+    for name in args.meshes.split(","):
+        path = os.path.join(args.data, name + ".obj")
+        if os.path.exists(path):
+            yield name, path
+        else:
+            print("%s: skipped, not found: %s" % (script, path), file=sys.stderr)
+
+
 def cell(values, fmt):
     return fmt % statistics.median(values) if values else "failed"
 
 
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--data", default=os.path.join(HERE, "..", "..", "shared", "data"))
-    parser.add_argument("--peers", default=os.path.join(HERE, "..", "..", "shared", "peers", "bin"))
-    parser.add_argument("--quadcover", default=os.path.join(HERE, "..", "build", "bin", "quadcover"))
-    parser.add_argument("--meshes", default=",".join(MESHES))
+    tool_arguments(parser)
     parser.add_argument("--levels", default="0")
     parser.add_argument("--runs", type=int, default=3)
-    parser.add_argument("--quads", type=int, default=6500)
     parser.add_argument("--no-quadriflow", dest="quadriflow", action="store_false")
     args = parser.parse_args()
     for tool in (args.quadcover, os.path.join(args.peers, "instant-meshes")):
@@ -105,11 +121,7 @@ def main():
           " | ".join(n + " MB" for n in names) + " | time QC/IM | memory QC/IM |")
     print("|---|---:|" + "---:|" * (2 * len(names) + 2))
     with tempfile.TemporaryDirectory() as scratch:
-        for name in args.meshes.split(","):
-            path = os.path.join(args.data, name + ".obj")
-            if not os.path.exists(path):
-                print("peers_speed.py: skipped, not found: " + path, file=sys.stderr)
-                continue
+        for name, path in shared_meshes(args, "peers_speed.py"):
             for level in (int(v) for v in args.levels.split(",")):
                 mesh, triangles = prepared(path, level, scratch)
                 runs = {n: [] for n in names}

@@ -230,16 +230,21 @@ private:
   /// Do v's quads span a bend sharper than the feature angle: the input's normal at one of
   /// their corners against its normal at v? (Where they do, the surface bends that much within
   /// a quad or two, on a ridge or a tube only a few quads round: the centre of the quads lies
-  /// off the surface there, and the move would drag the quads' chords across the bend.)
+  /// off the surface there, and the move would drag the quads' chords across the bend.) A
+  /// triangle of zero area has no normal and takes no part.
   bool spansBend(int v) const
   {
     const Eigen::Vector3d n = normal.row(mesh.vertexTriangle[v]);
+    if (!(n.squaredNorm() > 0))
+    {
+      return false;
+    }
     for (int j = offsets[v]; j < offsets[v + 1]; ++j)
     {
       for (int k = 0; k < 4; ++k)
       {
-        const int c = mesh.Q(quadsOf[j], k);
-        if (n.dot(normal.row(mesh.vertexTriangle[c])) < creaseCos)
+        const Eigen::Vector3d m = normal.row(mesh.vertexTriangle[mesh.Q(quadsOf[j], k)]);
+        if (m.squaredNorm() > 0 && n.dot(m) < creaseCos)
         {
           return true;
         }

@@ -88,7 +88,7 @@ public:
    * rim of a thin ear), and no move turns a quad corner inside out. It evens out uneven spacing
    * (a jittered mesh returns to about its original figures) but it cannot change how many quads
    * a region has, which is where most of a map's distortion shows: on the shared meshes three
-   * sweeps lower the edge-length RSD by 0.1-1.1 points and the angle RSD by 0.1-0.8 points, and
+   * sweeps lower the edge-length RSD by 0.3-0.9 points and the angle RSD by 0.2-0.7 points, and
    * the grid lines follow the frame field a little less exactly (Documentation/Algorithms.md,
    * "How the quads are cut out"). */
   vtkSetClampMacro(RelaxationIterations, int, 0, 1000);

@@ -516,16 +516,19 @@ TEST(QuadRelaxation, BoundaryVerticesStay)
   EXPECT_NEAR(after.edgeLengthRSD, before.edgeLengthRSD, 0.01) << "a regular grid stays regular";
 }
 
-/// A roof: the plane z = -2|y| over [0, 10] x [-4, 4], triangles of a grid of step 0.5 (its
-/// ridge along grid lines, a bend of 127 degrees), and on it a quad grid of unit steps whose rows
-/// lie at y = -3.2, -2.2, ..., 2.8 (the ridge inside the row of quads from -0.2 to 0.8), inner
-/// vertices jittered along x.
+namespace
+{
+/// A roof: the planes z = -slope |y| over [0, 10] x [-4, 4], triangles of a grid of step 0.5 (its
+/// ridge along grid lines; slope 2: a bend of 127 degrees), and on it a quad grid of unit steps
+/// whose rows lie at y = -3.2, -2.2, ..., 2.8 (the ridge inside the row of quads from -0.2 to 0.8),
+/// inner vertices jittered along x.
 struct Roof
 {
   Surface s;
   MeshTopology topo;
   QuadMesh q;
-  static double height(double y) { return -2.0 * std::abs(y); }
+  double slope = 2.0;
+  double height(double y) const { return -slope * std::abs(y); }
   static int triangleAt(double x, double y)
   {
     const int i = static_cast<int>(std::floor(x / 0.5)),
@@ -533,7 +536,8 @@ struct Roof
     const double fx = x / 0.5 - i, fy = (y + 4) / 0.5 - j;
     return 2 * (i * 16 + j) + (fx < fy ? 1 : 0);
   }
-  Roof()
+  explicit Roof(double roofSlope)
+    : slope(roofSlope)
   {
     s.V.resize(21 * 17, 3);
     for (int i = 0; i <= 20; ++i)
@@ -581,6 +585,16 @@ struct Roof
   }
 };
 
+/// Three sweeps of relaxQuads over the roof's quads.
+QuadRelaxReport relaxRoof(Roof& roof, bool holdAcrossBends)
+{
+  QuadRelaxOptions options;
+  options.relaxationIterations = 3;
+  options.holdAcrossBends = holdAcrossBends;
+  return relaxQuads(roof.s.V, roof.s.F, roof.topo, roof.q, options);
+}
+}
+
 TEST(QuadRelaxation, HoldsTheVerticesWhoseQuadsSpanASharpBend)
 {
   // Moved along the roof, the vertices next to the ridge would drag the chords of the quads
@@ -588,12 +602,9 @@ TEST(QuadRelaxation, HoldsTheVerticesWhoseQuadsSpanASharpBend)
   // grew from 0.79 to 1.07% with three sweeps). With holdAcrossBends they stay; the others move.
   for (const bool hold : { false, true })
   {
-    Roof roof;
+    Roof roof(2.0);
     const Eigen::MatrixX3d start = roof.q.V;
-    QuadRelaxOptions options;
-    options.relaxationIterations = 3;
-    options.holdAcrossBends = hold;
-    const QuadRelaxReport report = relaxQuads(roof.s.V, roof.s.F, roof.topo, roof.q, options);
+    const QuadRelaxReport report = relaxRoof(roof, hold);
     int movedNextToRidge = 0, movedAway = 0;
     for (int a = 1; a < 8; ++a)
     {
@@ -623,9 +634,27 @@ TEST(QuadRelaxation, HoldsTheVerticesWhoseQuadsSpanASharpBend)
     }
     for (int v = 0; v < roof.q.V.rows(); ++v)
     {
-      ASSERT_NEAR(roof.q.V(v, 2), Roof::height(roof.q.V(v, 1)), 1e-9) << "on the roof";
+      ASSERT_NEAR(roof.q.V(v, 2), roof.height(roof.q.V(v, 1)), 1e-9) << "on the roof";
     }
   }
+}
+
+TEST(QuadRelaxation, MovesTheVerticesAcrossABendGentlerThanTheFeatureAngle)
+{
+  // slope 0.4: the roof's faces 43.6 degrees apart, under the feature angle of 60
+  Roof roof(0.4);
+  const Eigen::MatrixX3d start = roof.q.V;
+  const QuadRelaxReport report = relaxRoof(roof, true);
+  int moved = 0;
+  for (int a = 1; a < 8; ++a)
+  {
+    for (int b = 1; b < 6; ++b)
+    {
+      moved += (roof.q.V.row(a * 7 + b) - start.row(a * 7 + b)).norm() > 1e-9;
+    }
+  }
+  EXPECT_EQ(report.heldMoves, 0);
+  EXPECT_EQ(moved, 35) << "every inner vertex, those next to the ridge too";
 }
 
 TEST(QuadRelaxation, RejectsBadOptions)
