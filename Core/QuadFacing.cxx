@@ -148,11 +148,11 @@ private:
   static constexpr double BoundaryCornerTurn = Pi / 6;
   long long budget_ = 0;
 
-  /// The smaller of quadFacing and quadScaledJacobian.
+  /// quadWorstOf, counted against the budget.
   double quality(int i) const
   {
     ++evaluations_;
-    return std::min(quadFacing(surface_, mesh_, i), quadScaledJacobian(mesh_.V, mesh_.Q, i));
+    return quadWorstOf(surface_, mesh_, i);
   }
 
   /// Of v's quads: the worst quality, and how many face against the surface (quadFacing below
@@ -365,6 +365,11 @@ std::vector<Candidate> FacingRepairer::candidatesOf(int v) const
   }
   return list;
 }
+}
+
+double quadWorstOf(const SurfaceLocator& surface, const QuadMesh& mesh, int i)
+{
+  return std::min(quadFacing(surface, mesh, i), quadScaledJacobian(mesh.V, mesh.Q, i));
 }
 
 double quadFacing(const SurfaceLocator& surface, const QuadMesh& mesh, int i)

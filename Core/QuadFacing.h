@@ -23,6 +23,10 @@ namespace quadcover
  */
 double quadFacing(const SurfaceLocator& surface, const QuadMesh& mesh, int i);
 
+/// The smaller of quadFacing and quadScaledJacobian: at most 0 for a quad facing against the
+/// surface or with a corner inside out (what repairFacing repairs).
+double quadWorstOf(const SurfaceLocator& surface, const QuadMesh& mesh, int i);
+
 /// The quads that face against the surface (quadFacing <= 0), in index order: the figure
 /// TurnedQuads.
 std::vector<int> turnedQuads(const SurfaceLocator& surface, const QuadMesh& mesh);

@@ -40,7 +40,7 @@ void unfoldLastInverted(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F,
 /// Is quad i facing against the surface or inside out?
 bool wrongQuad(const SurfaceLocator& surface, const QuadMesh& mesh, int i)
 {
-  return !(quadScaledJacobian(mesh.V, mesh.Q, i) > 0) || !(quadFacing(surface, mesh, i) > 0);
+  return !(quadWorstOf(surface, mesh, i) > 0);
 }
 
 /// Puts the corners of the quads that the relaxation turned against the surface or inside out

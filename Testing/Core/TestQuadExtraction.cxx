@@ -527,7 +527,7 @@ struct Roof
   Surface s;
   MeshTopology topo;
   QuadMesh q;
-  double slope = 2.0;
+  double slope;
   double height(double y) const { return -slope * std::abs(y); }
   static int triangleAt(double x, double y)
   {
