@@ -9,6 +9,7 @@ packages=(
   # python3-paraview replaces python3-vtk9 and libvtk9-dev (apt removes them: they conflict)
   paraview paraview-dev python3-paraview python3-dev python3-numpy
   openmpi-bin                                          # mpiexec, for pvbatch on several ranks
+  libopenmpi-dev libdouble-conversion-dev              # found by ParaView's CMake package (MPI::MPI_C)
   libeigen3-dev                                        # Eigen 3.4
   libsuitesparse-dev                                   # CHOLMOD for the sparse solves
   libopenblas0-pthread                                 # its BLAS: 3x faster factorizations
