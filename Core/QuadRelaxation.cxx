@@ -154,9 +154,11 @@ private:
   void fixVertices()
   {
     fixed = quadMeshBoundary(mesh);
+    creaseVertex.assign(mesh.V.rows(), 0);
     for (int v = 0; v < static_cast<int>(mesh.V.rows()); ++v)
     {
-      fixed[v] |= onCrease(v);
+      creaseVertex[v] = onCrease(v);
+      fixed[v] |= creaseVertex[v];
     }
   }
 
@@ -231,7 +233,9 @@ private:
   /// their corners against its normal at v? (Where they do, the surface bends that much within
   /// a quad or two, on a ridge or a tube only a few quads round: the centre of the quads lies
   /// off the surface there, and the move would drag the quads' chords across the bend.) A
-  /// triangle of zero area has no normal and takes no part.
+  /// triangle of zero area has no normal and takes no part, nor does a corner on an input
+  /// crease: its triangle may lie on either side, and a quad that reaches across the crease has
+  /// a corner off it on the far side (quads along a crease that a quad edge follows move).
   bool spansBend(int v) const
   {
     const Eigen::Vector3d n = normal.row(mesh.vertexTriangle[v]);
@@ -243,7 +247,12 @@ private:
     {
       for (int k = 0; k < 4; ++k)
       {
-        const Eigen::Vector3d m = normal.row(mesh.vertexTriangle[mesh.Q(quadsOf[j], k)]);
+        const int corner = mesh.Q(quadsOf[j], k);
+        if (creaseVertex[corner])
+        {
+          continue;
+        }
+        const Eigen::Vector3d m = normal.row(mesh.vertexTriangle[corner]);
         if (m.squaredNorm() > 0 && n.dot(m) < creaseCos)
         {
           return true;
@@ -450,6 +459,7 @@ private:
   std::vector<char> blocked;       ///< per input edge: boundary, crease or non-manifold
   std::vector<char> pointOnCrease; ///< per input point: on a blocked edge
   std::vector<char> fixed;         ///< per quad vertex: stays where it is
+  std::vector<char> creaseVertex;  ///< per quad vertex: on an input crease or boundary
   std::vector<int> offsets;        ///< #V + 1: where each vertex's quads start in quadsOf
   std::vector<int> quadsOf;        ///< the quads of each vertex, one after the other
   double meanEdge = 0.0;           ///< of the quad mesh, the unit of QuadRelaxReport::maxMove

@@ -520,7 +520,8 @@ namespace
 {
 /// A roof: the planes z = -slope |y| over [0, 10] x [-4, 4], triangles of a grid of step 0.5 (its
 /// ridge along grid lines; slope 2: a bend of 127 degrees), and on it a quad grid of unit steps
-/// whose rows lie at y = -3.2, -2.2, ..., 2.8 (the ridge inside the row of quads from -0.2 to 0.8),
+/// whose rows lie at y = firstRow, firstRow + 1, ..., firstRow + 6 (by default -3.2, ..., 2.8: the
+/// ridge inside the row of quads from -0.2 to 0.8; at -3 a row of quad edges follows the ridge),
 /// inner vertices jittered along x.
 struct Roof
 {
@@ -536,7 +537,7 @@ struct Roof
     const double fx = x / 0.5 - i, fy = (y + 4) / 0.5 - j;
     return 2 * (i * 16 + j) + (fx < fy ? 1 : 0);
   }
-  explicit Roof(double roofSlope)
+  explicit Roof(double roofSlope, double firstRow = -3.2)
     : slope(roofSlope)
   {
     s.V.resize(21 * 17, 3);
@@ -567,7 +568,7 @@ struct Roof
       for (int b = 0; b < 7; ++b)
       {
         const bool inner = a > 0 && a < 8 && b > 0 && b < 6;
-        const double x = 1.0 + a + (inner ? jitter(rng) : 0.0), y = -3.2 + b;
+        const double x = 1.0 + a + (inner ? jitter(rng) : 0.0), y = firstRow + b;
         q.V.row(a * 7 + b) << x, y, height(y);
         q.vertexTriangle.push_back(triangleAt(x, y));
         q.vertexPoint.push_back(-1);
@@ -579,7 +580,7 @@ struct Roof
       for (int b = 0; b < 6; ++b)
       {
         q.Q.row(a * 6 + b) << a * 7 + b, (a + 1) * 7 + b, (a + 1) * 7 + b + 1, a * 7 + b + 1;
-        q.quadTriangle.push_back(triangleAt(1.5 + a, -2.7 + b));
+        q.quadTriangle.push_back(triangleAt(1.5 + a, firstRow + 0.5 + b));
       }
     }
   }
@@ -636,6 +637,37 @@ TEST(QuadRelaxation, HoldsTheVerticesWhoseQuadsSpanASharpBend)
     {
       ASSERT_NEAR(roof.q.V(v, 2), roof.height(roof.q.V(v, 1)), 1e-9) << "on the roof";
     }
+  }
+}
+
+TEST(QuadRelaxation, MovesTheVerticesBesideACreaseThatQuadEdgesFollow)
+{
+  // Rows of quad vertices at y = -3, ..., 3: the one at y = 0 lies on the ridge (a crease: its
+  // vertices stay), and the quads on either side of it lie on one face each. No move next to it
+  // is held, although a ridge vertex's triangle lies on the far face for the row at y = -1 (as
+  // beside feature lines: before, that row was held). The fold guard still judges the corners on
+  // the ridge against that face's normal, and may refuse a move.
+  Roof roof(2.0, -3.0);
+  const Eigen::MatrixX3d start = roof.q.V;
+  const QuadRelaxReport report = relaxRoof(roof, true);
+  int movedOnRidge = 0, movedNextToRidge = 0;
+  for (int a = 1; a < 8; ++a)
+  {
+    movedOnRidge += (roof.q.V.row(a * 7 + 3) - start.row(a * 7 + 3)).norm() > 0;
+    for (const int b : { 2, 4 })
+    {
+      movedNextToRidge += (roof.q.V.row(a * 7 + b) - start.row(a * 7 + b)).norm() > 1e-9;
+    }
+  }
+  std::printf("%d of 14 next to the ridge moved; %d moves held, %d rejected\n", movedNextToRidge,
+    report.heldMoves, report.rejectedMoves);
+  EXPECT_EQ(report.fixedVertices, 28 + 7) << "the grid's boundary and the ridge";
+  EXPECT_EQ(report.heldMoves, 0);
+  EXPECT_EQ(movedOnRidge, 0);
+  EXPECT_GE(movedNextToRidge, 12);
+  for (int v = 0; v < roof.q.V.rows(); ++v)
+  {
+    ASSERT_NEAR(roof.q.V(v, 2), roof.height(roof.q.V(v, 1)), 1e-9) << "on the roof";
   }
 }
 
