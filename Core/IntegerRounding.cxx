@@ -423,8 +423,8 @@ void correctEdgeLength(
   double cells = 0.0;
   for (int f = 0; f < in.numFaces(); ++f)
   {
-    // a finer grid's cells count as the cells of the uniform grid they replace
-    const double cell = sys.cell(f);
+    // a thin strip's finer grid's cells count as the cells of the uniform grid they replace
+    const double cell = sys.countedCell.size() > 0 ? sys.countedCell[f] : sys.cell(f);
     cells += 0.5 * twiceUVArea(uv, out.cornerSector, f) * cell * cell;
   }
   if (cells > 0 && std::isfinite(cells))

@@ -4,6 +4,7 @@
 #include "Parameterization.h"
 
 #include "ConePairs.h"
+#include "CurvatureSizing.h"
 #include "FrameField.h"
 #include "ParameterizationSteps.h"
 #include "ThinStrips.h"
@@ -89,6 +90,25 @@ double meanCurvature(const Inputs& in)
   }
   const double area = surfaceArea(in.V, in.F);
   return area > 0 ? std::abs(sum) / area : 0.0;
+}
+
+/// sys.cellScale and countedCell: finer around thin strips (thinStripGridScale) and, with
+/// adaptiveCurvature, where the surface curves sharply (curvatureGridScale); the finer wins.
+void setGridScale(const Inputs& in, SeamlessSystem& sys, Parameterization& out)
+{
+  constexpr double AdaptiveMaximumRefinement = 8.0;
+  sys.cellScale =
+    thinStripGridScale(in.V, in.F, in.topo, out.edgeLength, in.options.maximumThinStripRefinement);
+  const Eigen::VectorXd curved = curvatureGridScale(
+    in.V, in.F, in.topo, out.edgeLength, in.options.adaptiveCurvature, AdaptiveMaximumRefinement);
+  if (curved.size() > 0)
+  {
+    const Eigen::VectorXd strips =
+      sys.cellScale.size() > 0 ? sys.cellScale : Eigen::VectorXd::Ones(in.numFaces());
+    sys.cellScale = strips.cwiseMin(curved);
+    sys.countedCell = sys.cellScale.cwiseQuotient(curved);
+  }
+  out.finerGridTriangles = static_cast<int>((sys.cellScale.array() < 1.0).count());
 }
 
 /// For ParameterizationOptions::curvatureEdgeLength: the edge length made shorter (the map
@@ -476,9 +496,7 @@ Parameterization computeParameterization(const Eigen::MatrixX3d& V, const Eigen:
   // ---- the seamless system: unknowns, constraints eliminated, the energy ----
   Eliminator elim = constrainUnknowns(in, field, out, progress.part(0.04, 0.07));
   SeamlessSystem sys = numberUnknowns(elim, out);
-  sys.cellScale =
-    thinStripGridScale(V, F, topo, out.edgeLength, options.maximumThinStripRefinement);
-  out.finerGridTriangles = static_cast<int>((sys.cellScale.array() < 1.0).count());
+  setGridScale(in, sys, out);
   progress.report(0.08);
   assembleEnergy(in, field, out, sys, progress.part(0.08, 0.22));
 

@@ -128,6 +128,13 @@ struct ParameterizationOptions
   /// (thinStripGridScale): on a uniform grid both sides of the strip round onto one grid line,
   /// which cuts it and joins the holes. 1: a uniform grid everywhere.
   double maximumThinStripRefinement = 8.0;
+  /// Adaptive density: where the surface curves sharply against the grid (a thin ear, finger or
+  /// horn, a small bump), the grid edge is at most this many times the radius of curvature, seen
+  /// at the grid's scale (curvatureGridScale; at most 8 times finer, growing back over a few grid
+  /// edges), so that thin parts keep their shape: 0.5 puts about 12 quads around a thin tube.
+  /// The quads there count as they are, so the surface has about targetQuadCount quads in all,
+  /// larger elsewhere. 0: a uniform grid (thin strips and defects aside).
+  double adaptiveCurvature = 0.0;
   /// Where the repaired map keeps defects (flipped triangles, points wound the wrong way: a thin
   /// ear or finger a grid cell around, cones packed closer than a cell), the grid is made this
   /// many times finer around them, growing back over a few grid edges, and the map is rounded and
@@ -172,8 +179,8 @@ struct Parameterization
   int movedSingularities = 0;
   /// pairs of opposite quarter cones added for quads of even size (conePairGain)
   int addedConePairs = 0;
-  /// triangles where the grid is finer than edgeLength (maximumThinStripRefinement, or
-  /// defectGridRefinement where it was kept)
+  /// triangles where the grid is finer than edgeLength (maximumThinStripRefinement,
+  /// adaptiveCurvature, or defectGridRefinement where it was kept)
   int finerGridTriangles = 0;
   int branchPoints = 0;         ///< inner points with a non-zero layer shift
   int branchPointsOnGrid = 0;   ///< of those, mapped to integer (u, v) within 1e-6

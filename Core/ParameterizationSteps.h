@@ -120,9 +120,13 @@ struct SeamlessSystem
   /// 4 #F: sqrt(A) times the combed frame (U', V') / (edgeLength cellScale)
   Eigen::VectorXd rhs;
   Eigen::VectorXd faceArea; ///< #F: 0 for a degenerate triangle (left out of the energy)
-  /// #F: the grid edge wanted in each triangle over the map's edge length (thinStripGridScale);
-  /// empty: 1 everywhere
+  /// #F: the grid edge wanted in each triangle over the map's edge length (thinStripGridScale,
+  /// curvatureGridScale); empty: 1 everywhere
   Eigen::VectorXd cellScale;
+  /// #F: how a cell of each triangle counts against targetQuadCount (correctEdgeLength), in
+  /// cells of the uniform grid: cellScale where a thin strip's grid is finer (its few extra
+  /// quads come on top), 1 where adaptiveCurvature's is (they count); empty: cellScale
+  Eigen::VectorXd countedCell;
   double energyNorm = 0.0; ///< 2 sum A / cellScale^2 / edgeLength^2: the energy's scale
 
   int numColumns() const { return numReal + numInteger; }

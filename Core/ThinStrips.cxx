@@ -166,6 +166,12 @@ Eigen::VectorXd thinStripGridScale(const Eigen::MatrixX3d& V, const Eigen::Matri
     return {};
   }
   spreadGridSizes(V, topo, gradation, size);
+  return faceGridScale(F, size, edgeLength);
+}
+
+Eigen::VectorXd faceGridScale(
+  const Eigen::MatrixX3i& F, const std::vector<double>& size, double edgeLength)
+{
   Eigen::VectorXd scale(F.rows());
   for (int f = 0; f < F.rows(); ++f)
   {
@@ -173,5 +179,4 @@ Eigen::VectorXd thinStripGridScale(const Eigen::MatrixX3d& V, const Eigen::Matri
   }
   return scale;
 }
-
 }

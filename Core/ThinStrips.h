@@ -1,5 +1,6 @@
 // ThinStrips.h: where a strip of the surface between two boundary lines is narrower than a grid
-// edge, and the finer grid the map needs there to keep it.
+// edge, and the finer grid the map needs there to keep it (the spreading of grid sizes is shared
+// with CurvatureSizing).
 #ifndef quadcover_ThinStrips_h
 #define quadcover_ThinStrips_h
 
@@ -32,6 +33,10 @@ Eigen::VectorXd thinStripGridScale(const Eigen::MatrixX3d& V, const Eigen::Matri
 /// (Dijkstra from the smallest sizes up).
 void spreadGridSizes(
   const Eigen::MatrixX3d& V, const MeshTopology& topo, double gradation, std::vector<double>& size);
+
+/// Per triangle, the mean of its points' grid sizes over edgeLength.
+Eigen::VectorXd faceGridScale(
+  const Eigen::MatrixX3i& F, const std::vector<double>& size, double edgeLength);
 }
 
 #endif

@@ -170,6 +170,7 @@ vtkQuadCoverSolver::vtkQuadCoverSolver()
   this->MaximumTriangleEdge = defaults.maximumTriangleEdge;
   this->ConePairGain = defaults.conePairGain;
   this->MaximumThinStripRefinement = defaults.maximumThinStripRefinement;
+  this->AdaptiveCurvature = defaults.adaptiveCurvature;
   this->DefectGridRefinement = defaults.defectGridRefinement;
   this->NumberOfThreads = defaults.numberOfThreads;
   this->SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_CELLS, names::FrameU);
@@ -300,6 +301,7 @@ void vtkQuadCoverSolver::Execute(vtkQuadCoverSurface& in, vtkInformationVector* 
     { "MinimumSingularitySeparation", this->MinimumSingularitySeparation },
     { "MaximumTriangleEdge", this->MaximumTriangleEdge }, { "ConePairGain", this->ConePairGain },
     { "MaximumThinStripRefinement", this->MaximumThinStripRefinement },
+    { "AdaptiveCurvature", this->AdaptiveCurvature },
     { "DefectGridRefinement", this->DefectGridRefinement } });
   quadcover::ParameterizationOptions options;
   options.targetEdgeLength = in.InCoreUnits(this->TargetEdgeLength); // for the scaled surface
@@ -321,6 +323,7 @@ void vtkQuadCoverSolver::Execute(vtkQuadCoverSurface& in, vtkInformationVector* 
   options.maximumTriangleEdge = this->MaximumTriangleEdge;
   options.conePairGain = this->ConePairGain;
   options.maximumThinStripRefinement = this->MaximumThinStripRefinement;
+  options.adaptiveCurvature = this->AdaptiveCurvature;
   options.defectGridRefinement = this->DefectGridRefinement;
   options.numberOfThreads = this->NumberOfThreads;
   CheckQuadCount(in, options, this->TargetEdgeLength);
@@ -410,6 +413,7 @@ void vtkQuadCoverSolver::PrintSelf(ostream& os, vtkIndent indent)
      << "\n";
   os << indent << "ConePairGain: " << this->ConePairGain << "\n";
   os << indent << "MaximumThinStripRefinement: " << this->MaximumThinStripRefinement << "\n";
+  os << indent << "AdaptiveCurvature: " << this->AdaptiveCurvature << "\n";
   os << indent << "DefectGridRefinement: " << this->DefectGridRefinement << "\n";
   os << indent << "NumberOfThreads: " << this->NumberOfThreads << "\n";
   os << indent << "SplitSeams: " << (this->SplitSeams ? "On" : "Off") << "\n";

@@ -240,6 +240,17 @@ public:
   ///@}
 
   ///@{
+  /** Adaptive density: where the surface curves sharply against the grid (thin ears, fingers,
+   * horns, small bumps), the grid edge is at most this many times the radius of curvature, seen
+   * at the grid's scale (at most 8 times finer, growing back over a few grid edges), so that
+   * thin parts keep their shape; 0.5 puts about 12 quads around a thin tube. The surface keeps
+   * about TargetQuadCount quads in all, larger elsewhere. In [0, 10] (default 0: a uniform
+   * grid). Counted in FinerGridTriangles. */
+  vtkSetClampMacro(AdaptiveCurvature, double, 0.0, 10.0);
+  vtkGetMacro(AdaptiveCurvature, double);
+  ///@}
+
+  ///@{
   /** Where the repaired map keeps defects (flipped triangles, points wound the wrong way: a
    * thin ear or finger a grid cell around, say), the grid is made this many times finer around
    * them, growing back over a few grid edges, and the map is rounded and repaired again; the
@@ -301,6 +312,7 @@ protected:
   double MaximumTriangleEdge;
   double ConePairGain;
   double MaximumThinStripRefinement;
+  double AdaptiveCurvature;
   double DefectGridRefinement;
   int NumberOfThreads;
   bool SplitSeams = false;

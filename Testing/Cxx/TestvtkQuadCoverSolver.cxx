@@ -109,6 +109,13 @@ TEST(vtkQuadCoverSolver, DefaultsClampsAndPrintSelf)
   std::ostringstream os;
   s->Print(os);
   EXPECT_NE(os.str().find("MaximumThinStripRefinement: 4"), std::string::npos);
+  EXPECT_EQ(s->GetAdaptiveCurvature(), 0.0); // ParameterizationOptions::adaptiveCurvature
+  s->SetAdaptiveCurvature(-1.0);
+  EXPECT_EQ(s->GetAdaptiveCurvature(), 0.0);
+  s->SetAdaptiveCurvature(0.5);
+  std::ostringstream adaptive;
+  s->Print(adaptive);
+  EXPECT_NE(adaptive.str().find("AdaptiveCurvature: 0.5"), std::string::npos);
   EXPECT_EQ(s->GetDefectGridRefinement(), 2.0); // ParameterizationOptions::defectGridRefinement
   s->SetDefectGridRefinement(20.0);
   EXPECT_EQ(s->GetDefectGridRefinement(), 8.0);

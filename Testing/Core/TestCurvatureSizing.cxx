@@ -1,0 +1,96 @@
+// Adaptive density: the grid size asked where the surface curves sharply against the grid
+// (curvatureGridScale), and the map and quads made with it (adaptiveCurvature).
+#include "CurvatureSizing.h"
+#include "QuadExtraction.h"
+#include "QuadQuality.h"
+#include "TestChain.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+
+using namespace quadcover;
+
+TEST(CurvatureSizing, AsksForAFinerGridOnlyWhereTheRadiusIsSmallAgainstTheGrid)
+{
+  // the unit sphere: radius of curvature 1 everywhere
+  const Surface s = makeIcosphere(1.0, 4);
+  const MeshTopology topo = buildTopology(s.F, static_cast<int>(s.V.rows()));
+  // grid edge 1: half the radius is asked, everywhere
+  const Eigen::VectorXd half = curvatureGridScale(s.V, s.F, topo, 1.0, 0.5, 8.0);
+  ASSERT_EQ(half.size(), s.F.rows());
+  EXPECT_GT(half.minCoeff(), 0.4);
+  EXPECT_LT(half.maxCoeff(), 0.6);
+  // no finer than the bound
+  const Eigen::VectorXd bounded = curvatureGridScale(s.V, s.F, topo, 1.0, 0.05, 8.0);
+  EXPECT_NEAR(bounded.minCoeff(), 1.0 / 8.0, 1e-12);
+  EXPECT_NEAR(bounded.maxCoeff(), 1.0 / 8.0, 1e-12);
+  // a grid edge of 0.3 is already finer than half the radius; off, or no refinement allowed
+  EXPECT_EQ(curvatureGridScale(s.V, s.F, topo, 0.3, 0.5, 8.0).size(), 0);
+  EXPECT_EQ(curvatureGridScale(s.V, s.F, topo, 1.0, 0.0, 8.0).size(), 0);
+  EXPECT_EQ(curvatureGridScale(s.V, s.F, topo, 1.0, 0.5, 1.0).size(), 0);
+}
+
+TEST(CurvatureSizing, TheNeckOfADumbbellGetsAFinerGridAndTheBulbsKeepTheirs)
+{
+  // bulbs of radius 0.8, a neck of 0.12 at z = 0; grid edge 0.2: the neck asks for 0.06
+  const Surface s = makeDumbbell(1.5, 0.8, 0.12, 48, 60);
+  const MeshTopology topo = buildTopology(s.F, static_cast<int>(s.V.rows()));
+  const Eigen::VectorXd scale = curvatureGridScale(s.V, s.F, topo, 0.2, 0.5, 8.0);
+  ASSERT_EQ(scale.size(), s.F.rows());
+  double neck = 1.0, bulb = 0.0, widest = 0.0;
+  for (int f = 0; f < s.F.rows(); ++f)
+  {
+    const double z = (s.V(s.F(f, 0), 2) + s.V(s.F(f, 1), 2) + s.V(s.F(f, 2), 2)) / 3;
+    const double r = std::hypot(s.V(s.F(f, 0), 0), s.V(s.F(f, 0), 1));
+    if (std::abs(z) < 0.05)
+    {
+      neck = std::min(neck, scale[f]);
+    }
+    if (r > widest)
+    {
+      widest = r;
+      bulb = scale[f];
+    }
+  }
+  std::printf("neck %.3f, bulbs %.3f\n", neck, bulb);
+  EXPECT_LT(neck, 0.5);
+  EXPECT_EQ(bulb, 1.0);
+}
+
+TEST(CurvatureSizing, AdaptiveQuadsKeepTheTopologyAndTheCountAndPutMoreRowsOnTheNeck)
+{
+  const Surface dumbbell = makeDumbbell(1.5, 0.8, 0.12, 48, 60);
+  int neckQuads[2] = { 0, 0 }, allQuads[2] = { 0, 0 };
+  for (const double adaptive : { 0.0, 0.5 })
+  {
+    ParameterizationOptions options;
+    options.adaptiveCurvature = adaptive;
+    const Chain c = runChain(dumbbell, 500, options);
+    const QuadMesh quads = extractQuads(c.s.V, c.s.F, c.topo, c.map.cornerUV);
+    const QuadQuality q = measureQuads(quads.V, quads.Q);
+    EXPECT_EQ(q.quads, q.faces);
+    EXPECT_EQ(q.eulerCharacteristic, 2);
+    EXPECT_EQ(q.boundaryEdges, 0);
+    EXPECT_EQ(q.nonManifoldEdges, 0);
+    EXPECT_EQ(c.map.flipped, 0);
+    allQuads[adaptive > 0 ? 1 : 0] = q.quads;
+    int& neck = neckQuads[adaptive > 0 ? 1 : 0];
+    for (int i = 0; i < quads.Q.rows(); ++i)
+    {
+      double z = 0.0;
+      for (int k = 0; k < 4; ++k)
+      {
+        z += quads.V(quads.Q(i, k), 2) / 4;
+      }
+      neck += std::abs(z) < 0.3;
+    }
+    std::printf("adaptive %.1f: %d quads, %d on the neck (|z| < 0.3), edge RSD %.1f%%\n", adaptive,
+      q.quads, neck, 100 * q.edgeLengthRSD);
+  }
+  EXPECT_GT(neckQuads[1], 1.5 * neckQuads[0]) << "more rows along the neck";
+  // the neck's quads count against the quads asked for: the bulbs' are larger (not all of them:
+  // the quad count follows the map's area before rounding)
+  EXPECT_LT(allQuads[1], 1.35 * allQuads[0]);
+}
