@@ -92,17 +92,53 @@ double meanCurvature(const Inputs& in)
   return area > 0 ? std::abs(sum) / area : 0.0;
 }
 
+/// Raises the smallest scales of `scale` (#F grid edge over h) to a common floor so that the
+/// grid has at most `growth` times the cells of the uniform one (sum A / scale^2 <= growth sum A).
+void boundGridGrowth(const Eigen::VectorXd& area, double growth, Eigen::VectorXd& scale)
+{
+  const auto cells = [&](double floor) {
+    double sum = 0.0;
+    for (Eigen::Index f = 0; f < scale.size(); ++f)
+    {
+      const double s = std::max(scale[f], floor);
+      sum += area[f] / (s * s);
+    }
+    return sum;
+  };
+  const double limit = growth * area.sum();
+  if (!(cells(0.0) > limit))
+  {
+    return;
+  }
+  double low = scale.minCoeff(), high = 1.0; // cells(low) > limit >= cells(high)
+  for (int i = 0; i < 40; ++i)
+  {
+    const double middle = 0.5 * (low + high);
+    (cells(middle) > limit ? low : high) = middle;
+  }
+  scale = scale.cwiseMax(high);
+}
+
 /// sys.cellScale and countedCell: finer around thin strips (thinStripGridScale) and, with
-/// adaptiveCurvature, where the surface curves sharply (curvatureGridScale); the finer wins.
+/// adaptiveCurvature, where the surface curves sharply (curvatureGridScale, at most
+/// AdaptiveMaximumGrowth times the uniform grid's cells in all); the finer wins.
 void setGridScale(const Inputs& in, SeamlessSystem& sys, Parameterization& out)
 {
   constexpr double AdaptiveMaximumRefinement = 8.0;
   sys.cellScale =
     thinStripGridScale(in.V, in.F, in.topo, out.edgeLength, in.options.maximumThinStripRefinement);
-  const Eigen::VectorXd curved = curvatureGridScale(
+  Eigen::VectorXd curved = curvatureGridScale(
     in.V, in.F, in.topo, out.edgeLength, in.options.adaptiveCurvature, AdaptiveMaximumRefinement);
   if (curved.size() > 0)
   {
+    Eigen::VectorXd area(in.numFaces());
+    for (int f = 0; f < in.numFaces(); ++f)
+    {
+      const Eigen::Vector3d a = in.V.row(in.F(f, 0)), b = in.V.row(in.F(f, 1)),
+                            c = in.V.row(in.F(f, 2));
+      area[f] = 0.5 * (b - a).cross(c - a).norm();
+    }
+    boundGridGrowth(area, AdaptiveMaximumGrowth, curved);
     const Eigen::VectorXd strips =
       sys.cellScale.size() > 0 ? sys.cellScale : Eigen::VectorXd::Ones(in.numFaces());
     sys.cellScale = strips.cwiseMin(curved);
@@ -506,7 +542,11 @@ Parameterization computeParameterization(const Eigen::MatrixX3d& V, const Eigen:
   HessianFactor factor;
   Eigen::VectorXd x = solveContinuous(sys, greedy, factor, out, progress.part(0.22, 0.5));
   correctEdgeLength(in, sys, x, out);
-  if (in.options.curvatureEdgeLength > 0)
+  // the adaptive grid already follows the curvature, at most curvatureEdgeLength times the radius
+  // (limiting the whole grid again doubled the quads of the fifty components)
+  const bool adaptiveCovers = in.options.adaptiveCurvature > 0 &&
+    in.options.adaptiveCurvature <= in.options.curvatureEdgeLength;
+  if (in.options.curvatureEdgeLength > 0 && !adaptiveCovers)
   {
     limitEdgeLengthByCurvature(in, sys, x, out);
   }

@@ -25,6 +25,10 @@ enum class RoundingMode
   Greedy  ///< fix the unknown closest to an integer, update the others exactly, repeat
 };
 
+/// ParameterizationOptions::adaptiveCurvature's grid has at most this many times the cells of the
+/// uniform grid (where more of the surface asks for a finer grid, the finest parts are coarser).
+constexpr double AdaptiveMaximumGrowth = 4.0;
+
 struct ParameterizationOptions
 {
   /// World length of one grid unit, the quads' edge length; 0 chooses it from targetQuadCount.
@@ -129,11 +133,12 @@ struct ParameterizationOptions
   /// which cuts it and joins the holes. 1: a uniform grid everywhere.
   double maximumThinStripRefinement = 8.0;
   /// Adaptive density: where the surface curves sharply against the grid (a thin ear, finger or
-  /// horn, a small bump), the grid edge is at most this many times the radius of curvature, seen
+  /// horn, a small bump), the grid edge is about this many times the radius of curvature, seen
   /// at the grid's scale (curvatureGridScale; at most 8 times finer, growing back over a few grid
   /// edges), so that thin parts keep their shape: 0.5 puts about 12 quads around a thin tube.
   /// The quads there count as they are, so the surface has about targetQuadCount quads in all,
-  /// larger elsewhere. 0: a uniform grid (thin strips and defects aside).
+  /// larger elsewhere (with targetEdgeLength they come on top: at most AdaptiveMaximumGrowth
+  /// times the uniform grid's). 0: a uniform grid (thin strips and defects aside).
   double adaptiveCurvature = 0.0;
   /// Where the repaired map keeps defects (flipped triangles, points wound the wrong way: a thin
   /// ear or finger a grid cell around, cones packed closer than a cell), the grid is made this

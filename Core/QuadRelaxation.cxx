@@ -130,6 +130,10 @@ private:
     }
   }
 
+  /// What a blocked edge is to the points on it: Blocked for all, and InnerCrease for a sharp edge
+  /// between two triangles (not a boundary or non-manifold edge).
+  static constexpr char Blocked = 1, InnerCrease = 2;
+
   /// The edges no vertex crosses (boundary, crease, non-manifold) and the points on them.
   void findCreases()
   {
@@ -145,9 +149,16 @@ private:
       }
       if (blocked[e])
       {
-        pointOnCrease[topo.edges(e, 0)] = pointOnCrease[topo.edges(e, 1)] = 1;
+        const char kind = edgeKind(e);
+        pointOnCrease[topo.edges(e, 0)] |= kind;
+        pointOnCrease[topo.edges(e, 1)] |= kind;
       }
     }
+  }
+
+  char edgeKind(int e) const
+  {
+    return topo.edgeFaceCount[e] == 2 ? Blocked | InnerCrease : Blocked;
   }
 
   /// Fixed vertices: on the quad mesh's boundary, or on an input crease or boundary.
@@ -157,13 +168,14 @@ private:
     creaseVertex.assign(mesh.V.rows(), 0);
     for (int v = 0; v < static_cast<int>(mesh.V.rows()); ++v)
     {
-      creaseVertex[v] = onCrease(v);
-      fixed[v] |= creaseVertex[v];
+      const char kind = onCrease(v);
+      creaseVertex[v] = (kind & InnerCrease) != 0;
+      fixed[v] |= kind != 0;
     }
   }
 
   /// Is quad vertex v on a blocked input edge: its point on one, or on an edge of its triangle
-  /// (relative distance to the edge's line)?
+  /// (relative distance to the edge's line)? 0, or the edges' kinds (Blocked, InnerCrease).
   char onCrease(int v) const
   {
     if (mesh.vertexPoint[v] >= 0)
@@ -179,7 +191,7 @@ private:
       if (blocked[topo.faceEdges(f, k)] && length > 0 &&
         (p - a).cross(b - a).norm() <= 1e-6 * length * length)
       {
-        return 1;
+        return edgeKind(topo.faceEdges(f, k));
       }
     }
     return 0;
@@ -233,9 +245,10 @@ private:
   /// their corners against its normal at v? (Where they do, the surface bends that much within
   /// a quad or two, on a ridge or a tube only a few quads round: the centre of the quads lies
   /// off the surface there, and the move would drag the quads' chords across the bend.) A
-  /// triangle of zero area has no normal and takes no part, nor does a corner on an input
-  /// crease: its triangle may lie on either side, and a quad that reaches across the crease has
-  /// a corner off it on the far side (quads along a crease that a quad edge follows move).
+  /// triangle of zero area has no normal and takes no part, nor does a corner on an inner input
+  /// crease (not a boundary): its triangle may lie on either side, and a quad that reaches across
+  /// the crease has a corner off it on the far side (quads along a crease that a quad edge
+  /// follows move).
   bool spansBend(int v) const
   {
     const Eigen::Vector3d n = normal.row(mesh.vertexTriangle[v]);
@@ -457,9 +470,9 @@ private:
   const double creaseCos;          ///< cosine of options.featureAngle
   Eigen::MatrixX3d normal;         ///< #F x 3: the input's unit normals (0 where degenerate)
   std::vector<char> blocked;       ///< per input edge: boundary, crease or non-manifold
-  std::vector<char> pointOnCrease; ///< per input point: on a blocked edge
+  std::vector<char> pointOnCrease; ///< per input point: the kinds of blocked edges it is on
   std::vector<char> fixed;         ///< per quad vertex: stays where it is
-  std::vector<char> creaseVertex;  ///< per quad vertex: on an input crease or boundary
+  std::vector<char> creaseVertex;  ///< per quad vertex: on an inner input crease
   std::vector<int> offsets;        ///< #V + 1: where each vertex's quads start in quadsOf
   std::vector<int> quadsOf;        ///< the quads of each vertex, one after the other
   double meanEdge = 0.0;           ///< of the quad mesh, the unit of QuadRelaxReport::maxMove

@@ -198,8 +198,11 @@ void CheckQuadCount(const vtkQuadCoverSurface& in, const quadcover::Parameteriza
   double worldEdgeLength)
 {
   const double share = TargetShare(in, o);
-  // each component's minimum comes on top of its share, at most
-  const double quads = share + o.minimumComponentQuadCount * in.topo.numComponents();
+  // each component's minimum comes on top of its share, at most; with a target edge length an
+  // adaptive grid's finer cells too
+  const double growth =
+    o.adaptiveCurvature > 0 && o.targetEdgeLength > 0 ? quadcover::AdaptiveMaximumGrowth : 1.0;
+  const double quads = growth * share + o.minimumComponentQuadCount * in.topo.numComponents();
   const double most = vtkQuadCoverSolver::MaximumQuadCount(in.F.rows());
   if (!(quads > most)) // NaN (a zero-area surface) is for the map to refuse
   {

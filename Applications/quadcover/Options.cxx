@@ -383,7 +383,7 @@ std::vector<Option> StageOptions(Pipeline& p)
       "around a strip between two boundary lines narrower than a grid edge the grid is finer, down "
       "to the strip's width but at most this many times, 1: uniform"),
     QC_NUMBER("param", solver, AdaptiveCurvature,
-      "adaptive density: the grid edge at most this many times the radius of curvature (thin "
+      "adaptive density: the grid edge about this many times the radius of curvature (thin "
       "parts keep their shape; 0.5: about 12 quads around a thin tube), 0: uniform"),
     QC_NUMBER("param", solver, DefectGridRefinement,
       "where the repaired map keeps defects the grid is this many times finer and the map made "

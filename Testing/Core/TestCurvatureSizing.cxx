@@ -32,6 +32,24 @@ TEST(CurvatureSizing, AsksForAFinerGridOnlyWhereTheRadiusIsSmallAgainstTheGrid)
   EXPECT_EQ(curvatureGridScale(s.V, s.F, topo, 1.0, 0.5, 1.0).size(), 0);
 }
 
+TEST(CurvatureSizing, SeesTheCurvatureAtTheGridsScaleNotTheMeshNoise)
+{
+  // the unit sphere with its points moved in and out by up to 2% of the radius (a bumpy scan):
+  // the normals of neighbouring points differ by up to ~0.4 radians over edges of ~0.08, a
+  // radius of ~0.2; at a grid edge of 1 the surface is the sphere of radius 1
+  Surface s = makeIcosphere(1.0, 4);
+  for (Eigen::Index v = 0; v < s.V.rows(); ++v)
+  {
+    s.V.row(v) *= 1.0 + 0.02 * std::sin(12.9898 * static_cast<double>(v));
+  }
+  const MeshTopology topo = buildTopology(s.F, static_cast<int>(s.V.rows()));
+  const Eigen::VectorXd scale = curvatureGridScale(s.V, s.F, topo, 1.0, 0.5, 8.0);
+  ASSERT_EQ(scale.size(), s.F.rows());
+  std::printf("bumpy sphere: scale %.3f to %.3f\n", scale.minCoeff(), scale.maxCoeff());
+  EXPECT_GT(scale.minCoeff(), 0.35) << "the bumps ask for no finer grid than the sphere";
+  EXPECT_LT(scale.maxCoeff(), 0.65);
+}
+
 TEST(CurvatureSizing, TheNeckOfADumbbellGetsAFinerGridAndTheBulbsKeepTheirs)
 {
   // bulbs of radius 0.8, a neck of 0.12 at z = 0; grid edge 0.2: the neck asks for 0.06

@@ -60,21 +60,26 @@ int flippedTriangles(const Parameterization& m)
 }
 
 /// The layer shifts of the field the map follows: the map's own (the field's, with the pairs it
-/// cancelled, the singularities it moved and the cone pairs it added), where it reports them.
+/// cancelled, the singularities it moved and the cone pairs it added).
 const Eigen::VectorXi& mapLayerShift(const Chain& r)
 {
-  return r.map.layerShift.size() == r.s.V.rows() ? r.map.layerShift : r.field.layerShift;
+  EXPECT_EQ(r.map.layerShift.size(), r.s.V.rows());
+  return r.map.layerShift;
 }
 
 /// The indices of the field the map follows, as mapLayerShift.
 const Eigen::VectorXd& mapIndex(const Chain& r)
 {
-  return r.map.singularityIndex.size() == r.s.V.rows() ? r.map.singularityIndex : r.field.index;
+  EXPECT_EQ(r.map.singularityIndex.size(), r.s.V.rows());
+  return r.map.singularityIndex;
 }
 
 int branchPointsOffGrid(const Chain& r)
 {
-  return checks::branchPointsOffGrid(r.s.F, r.topo, mapLayerShift(r), r.map.cornerUV);
+  const Eigen::VectorXi& shift = mapLayerShift(r);
+  return shift.size() == r.s.V.rows()
+    ? checks::branchPointsOffGrid(r.s.F, r.topo, shift, r.map.cornerUV)
+    : -1;
 }
 
 /// Sum of the (u, v) angles at the corners around each inner point minus 2 pi (1 - index):
@@ -92,12 +97,17 @@ double indexDeviation(const Chain& r)
       angle[r.s.F(f, k)] += std::arg(b / a);
     }
   }
+  const Eigen::VectorXd& index = mapIndex(r);
+  if (index.size() != r.s.V.rows())
+  {
+    return 2 * Pi;
+  }
   double worst = 0.0;
   for (int p = 0; p < r.s.V.rows(); ++p)
   {
     if (!r.topo.boundaryVertex[p])
     {
-      worst = std::max(worst, std::abs(angle[p] - 2 * Pi * (1 - mapIndex(r)[p])));
+      worst = std::max(worst, std::abs(angle[p] - 2 * Pi * (1 - index[p])));
     }
   }
   return worst;

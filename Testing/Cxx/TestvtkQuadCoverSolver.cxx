@@ -377,6 +377,23 @@ TEST(vtkQuadCoverSolver, AFinerGridAroundTheDefectsRepairsTheMap)
   EXPECT_EQ(checks::seamViolations(F, topo, uv), 0) << "the finer grid's map is still seamless";
 }
 
+TEST(vtkQuadCoverSolver, AdaptiveCurvatureMakesTheGridFinerWhereTheSurfaceCurves)
+{
+  // the dumbbell's neck (radius 0.12 against bulbs of 0.8) at 500 quads: finer with the option,
+  // a uniform grid without
+  const quadcover::Surface dumbbell = quadcover::makeDumbbell(1.5, 0.8, 0.12, 48, 60);
+  Chain chain(vtkQuadCoverEigen::ToPolyData(dumbbell.V, dumbbell.F));
+  chain.solver->SetTargetQuadCount(500);
+  vtkPolyData* out = chain.Run();
+  ASSERT_EQ(chain.errors->GetError(), "");
+  EXPECT_EQ(Field(out, names::FinerGridTriangles), 0);
+  chain.solver->SetAdaptiveCurvature(0.5);
+  out = chain.Run();
+  ASSERT_EQ(chain.errors->GetError(), "");
+  EXPECT_GT(Field(out, names::FinerGridTriangles), 0);
+  EXPECT_EQ(Field(out, names::FlippedTriangles, 2), 0);
+}
+
 // ---- the whole chain on every surface ----
 
 class ParameterizeOn : public ::testing::TestWithParam<const char*>
