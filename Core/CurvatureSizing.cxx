@@ -40,17 +40,21 @@ Eigen::MatrixX3d pointNormals(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i&
 void smoothNormals(const MeshTopology& topo, int rounds, Eigen::MatrixX3d& normal)
 {
   const int nE = topo.numEdges();
+  Eigen::VectorXd count = Eigen::VectorXd::Zero(normal.rows()); // edge neighbours per point
+  for (int e = 0; e < nE; ++e)
+  {
+    count[topo.edges(e, 0)] += 1;
+    count[topo.edges(e, 1)] += 1;
+  }
+  Eigen::MatrixX3d sum(normal.rows(), 3);
   for (int round = 0; round < rounds; ++round)
   {
-    Eigen::MatrixX3d sum = Eigen::MatrixX3d::Zero(normal.rows(), 3);
-    Eigen::VectorXd count = Eigen::VectorXd::Zero(normal.rows());
+    sum.setZero();
     for (int e = 0; e < nE; ++e)
     {
       const int a = topo.edges(e, 0), b = topo.edges(e, 1);
       sum.row(a) += normal.row(b);
       sum.row(b) += normal.row(a);
-      count[a] += 1;
-      count[b] += 1;
     }
     for (Eigen::Index v = 0; v < normal.rows(); ++v)
     {

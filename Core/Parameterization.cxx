@@ -134,9 +134,7 @@ void setGridScale(const Inputs& in, SeamlessSystem& sys, Parameterization& out)
     Eigen::VectorXd area(in.numFaces());
     for (int f = 0; f < in.numFaces(); ++f)
     {
-      const Eigen::Vector3d a = in.V.row(in.F(f, 0)), b = in.V.row(in.F(f, 1)),
-                            c = in.V.row(in.F(f, 2));
-      area[f] = 0.5 * (b - a).cross(c - a).norm();
+      area[f] = triangleArea(in.V, in.F, f);
     }
     boundGridGrowth(area, AdaptiveMaximumGrowth, curved);
     const Eigen::VectorXd strips =
