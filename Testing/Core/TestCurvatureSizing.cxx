@@ -1,6 +1,7 @@
 // Adaptive density: the grid size asked where the surface curves sharply against the grid
 // (curvatureGridScale), and the map and quads made with it (adaptiveCurvature).
 #include "CurvatureSizing.h"
+#include "GridMapChecks.h"
 #include "QuadExtraction.h"
 #include "QuadQuality.h"
 #include "TestChain.h"
@@ -86,6 +87,12 @@ TEST(CurvatureSizing, AdaptiveQuadsKeepTheTopologyAndTheCountAndPutMoreRowsOnThe
     ParameterizationOptions options;
     options.adaptiveCurvature = adaptive;
     const Chain c = runChain(dumbbell, 500, options);
+    // the finer grid's map is still an integer-grid map: seamless, branch points on the grid,
+    // and Poincare-Hopf (the sphere's chi) for the singularities it follows
+    EXPECT_EQ(checks::seamViolations(c.s.F, c.topo, c.map.cornerUV, 1e-6), 0);
+    EXPECT_EQ(checks::branchPointsOffGrid(c.s.F, c.topo, c.map.layerShift, c.map.cornerUV), 0);
+    EXPECT_NEAR(c.map.singularityIndex.sum(), 2.0, 1e-9);
+    EXPECT_EQ(c.map.branchPointsOnGrid, c.map.branchPoints);
     const QuadMesh quads = extractQuads(c.s.V, c.s.F, c.topo, c.map.cornerUV);
     const QuadQuality q = measureQuads(quads.V, quads.Q);
     EXPECT_EQ(q.quads, q.faces);
