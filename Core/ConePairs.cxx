@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <iterator>
 #include <limits>
 #include <queue>
 
@@ -20,11 +21,13 @@ namespace
 {
 using namespace branchsearch;
 constexpr double Infinity = std::numeric_limits<double>::infinity();
-/// Faces of steepest slope a round looks at, and how many of their dipoles (the best to first
-/// order) it measures; a dipole's cones are this many grid edges apart.
-constexpr int CandidateFaces = 6;
+/// Dipoles a round lists (at the faces of steepest slope, one of each length per face), and how
+/// many of them (the best to first order) it measures; a dipole's cones are one of these many
+/// grid edges apart (the longer one evens a wide slope, a bump's or a tube's, with one pair where
+/// the shorter needs two or three).
+constexpr int CandidateDipoles = 6;
 constexpr std::size_t MeasuredDipoles = 3;
-constexpr double DipoleLength = 3.0;
+constexpr double DipoleLengths[] = { 3.0, 6.0 };
 
 /// Edge-path distances over the mesh's edges.
 class EdgeDistances
@@ -277,12 +280,13 @@ struct Dipole
   double gain;
 };
 
-/// Dipoles across the steepest slopes of w (firstOrder): at the `faces` faces where it changes
-/// fastest (their points free, each at least `separation` from the others), the +1/4 `apart`
-/// grid edges down the slope from the -1/4; gain to first order.
+/// Dipoles across the steepest slopes of w (firstOrder), at least `count`: at the faces where it
+/// changes fastest (their points free, each at least `separation` from the others), for each
+/// length in `apart` (grid edges), the +1/4 that far down the slope from the -1/4; gain to first
+/// order.
 std::vector<Dipole> dipolesAcrossSlopes(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F,
   const EdgeDistances& distances, const Eigen::VectorXd& w, const std::vector<double>& blocked,
-  double separation, double apart, double h, int faces)
+  double separation, const std::vector<double>& apart, double h, int count)
 {
   const auto free = [&](int v) { return !(blocked[v] < separation); };
   std::vector<std::pair<double, int>> slopes;
@@ -302,9 +306,9 @@ std::vector<Dipole> dipolesAcrossSlopes(const Eigen::MatrixX3d& V, const Eigen::
   // lie around two or three places)
   std::vector<Dipole> list;
   std::vector<char> taken(V.rows(), 0);
-  const auto first = slopes.begin() + std::min<std::size_t>(64 * faces, slopes.size());
+  const auto first = slopes.begin() + std::min<std::size_t>(64 * count, slopes.size());
   std::partial_sort(slopes.begin(), first, slopes.end());
-  for (auto it = slopes.begin(); it != slopes.end() && static_cast<int>(list.size()) < faces; ++it)
+  for (auto it = slopes.begin(); it != slopes.end() && static_cast<int>(list.size()) < count; ++it)
   {
     if (it == first)
     {
@@ -318,12 +322,16 @@ std::vector<Dipole> dipolesAcrossSlopes(const Eigen::MatrixX3d& V, const Eigen::
     const Eigen::Vector3d centre =
       (V.row(F(f, 0)) + V.row(F(f, 1)) + V.row(F(f, 2))).transpose() / 3.0;
     const Eigen::Vector3d down = -gradient(V, F, f, w).normalized();
-    const std::vector<int> around = distances.within(F(f, 0), apart * h);
-    const int a = nearest(V, around, centre + 0.5 * apart * h * down);
-    const int b = nearest(V, around, centre - 0.5 * apart * h * down);
-    if (a >= 0 && b >= 0 && a != b && free(a) && free(b))
+    for (const double length : apart)
     {
-      list.push_back({ a, b, -Pi * (w[a] - w[b]) });
+      // within the length along the surface, so as not to reach across a thin part
+      const std::vector<int> around = distances.within(F(f, 0), length * h);
+      const int a = nearest(V, around, centre + 0.5 * length * h * down);
+      const int b = nearest(V, around, centre - 0.5 * length * h * down);
+      if (a >= 0 && b >= 0 && a != b && free(a) && free(b))
+      {
+        list.push_back({ a, b, -Pi * (w[a] - w[b]) });
+      }
     }
     for (const int x : distances.within(F(f, 0), separation))
     {
@@ -412,23 +420,18 @@ ConePairs conePairsForEvenScale(const Eigen::MatrixX3d& V, const Eigen::MatrixX3
   const double minimumGain = options.minimumGain / std::max(model.totalArea() / (h * h), 1.0);
   double variance = model.variance(u);
   result.deviationBefore = std::sqrt(variance);
-  while (static_cast<int>(result.pairs.size()) < options.maximumPairs)
-  {
-    std::vector<Dipole> dipoles = dipolesAcrossSlopes(
-      V, F, distances, model.firstOrder(u), blocked, separation, DipoleLength, h, CandidateFaces);
-    std::sort(dipoles.begin(), dipoles.end(),
-      [](const Dipole& a, const Dipole& b) { return a.gain > b.gain; });
-    // the best few by the first order, measured; the best taken, and each other one that still
-    // gains enough with those taken before it and is not near them
-    std::vector<std::pair<Dipole, Eigen::VectorXd>> measured;
-    const int m = static_cast<int>(std::min(dipoles.size(), MeasuredDipoles));
+  // measures the dipoles; keeps the best, and each other one that still gains enough with
+  // those kept before it and is not near them; returns how many it kept
+  const auto keepMeasured = [&](const std::vector<Dipole>& dipoles) {
+    const int m = static_cast<int>(dipoles.size());
     Eigen::MatrixXd charge = Eigen::MatrixXd::Zero(n, m);
     for (int i = 0; i < m; ++i)
     {
       charge(dipoles[i].plus, i) = Pi / 2;
       charge(dipoles[i].minus, i) = -Pi / 2;
     }
-    const Eigen::MatrixXd responses = m > 0 ? model.response(charge) : Eigen::MatrixXd();
+    const Eigen::MatrixXd responses = model.response(charge);
+    std::vector<std::pair<Dipole, Eigen::VectorXd>> measured;
     for (int i = 0; i < m; ++i)
     {
       Eigen::VectorXd response = responses.col(i);
@@ -437,7 +440,7 @@ ConePairs conePairsForEvenScale(const Eigen::MatrixX3d& V, const Eigen::MatrixX3
     }
     std::stable_sort(measured.begin(), measured.end(),
       [](const auto& a, const auto& b) { return a.first.gain > b.first.gain; });
-    const int before = static_cast<int>(result.pairs.size());
+    int kept = 0;
     for (auto& [dipole, response] : measured)
     {
       if (static_cast<int>(result.pairs.size()) >= options.maximumPairs ||
@@ -454,8 +457,26 @@ ConePairs conePairsForEvenScale(const Eigen::MatrixX3d& V, const Eigen::MatrixX3
       variance = after;
       result.pairs.emplace_back(dipole.plus, dipole.minus);
       distances.spread({ dipole.plus, dipole.minus }, separation, blocked);
+      ++kept;
     }
-    if (static_cast<int>(result.pairs.size()) == before)
+    return kept;
+  };
+  const std::vector<double> lengths(std::begin(DipoleLengths), std::end(DipoleLengths));
+  while (static_cast<int>(result.pairs.size()) < options.maximumPairs)
+  {
+    std::vector<Dipole> dipoles = dipolesAcrossSlopes(
+      V, F, distances, model.firstOrder(u), blocked, separation, lengths, h, CandidateDipoles);
+    std::sort(dipoles.begin(), dipoles.end(),
+      [](const Dipole& a, const Dipole& b) { return a.gain > b.gain; });
+    // the best few by the first order measured; the next few only if none of them is kept (a
+    // long dipole that looks best to first order may overshoot where a short one would not)
+    int kept = 0;
+    for (std::size_t first = 0; kept == 0 && first < dipoles.size(); first += MeasuredDipoles)
+    {
+      const std::size_t last = std::min(dipoles.size(), first + MeasuredDipoles);
+      kept = keepMeasured(std::vector<Dipole>(dipoles.begin() + first, dipoles.begin() + last));
+    }
+    if (kept == 0)
     {
       break;
     }

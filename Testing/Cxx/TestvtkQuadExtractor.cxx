@@ -274,9 +274,9 @@ TEST_P(QuadsOn, ManifoldAllQuadMeshWithTheInputsTopology)
           Field(out, names::DroppedCells, 2),
         0);
       // irregular inner vertices: exactly the branch points, valence 4 - 4 index, but near the
-      // points where the map winds unlike the field (KnownWindingErrors), a few each
+      // points where the map winds unlike the field (none on these meshes), a few each
       const double windings = Field(map, names::WindingErrors);
-      EXPECT_EQ(windings, KnownWindingErrors(GetParam(), quads));
+      EXPECT_EQ(windings, 0);
       int misplaced = 0;
       std::map<int, int> byValence;
       vtkDataArray* valence = out->GetPointData()->GetArray(names::Valence);

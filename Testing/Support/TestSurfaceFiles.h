@@ -36,14 +36,6 @@ inline vtkSmartPointer<vtkPolyData> ReadRepaired(const std::string& path, std::s
   return surface;
 }
 
-/// Points the default chain's map leaves wound unlike the field on shared mesh NAME at QUADS
-/// quads (known): cheburashka at 3,000, where an ear, a thin disk with a sharp rim, meets the head
-/// and the ear is thinner than a grid cell (the quality issue's adaptive density is the fix).
-inline int KnownWindingErrors(const std::string& name, int quads)
-{
-  return name == "cheburashka" && quads == 3000 ? 1 : 0;
-}
-
 #ifdef QUADCOVER_SHARED_DATA
 /// The repaired surface NAME, or nullptr when neither file exists; `path` gets the one tried.
 inline vtkSmartPointer<vtkPolyData> LoadTestSurface(const std::string& name, std::string& path)
