@@ -29,7 +29,9 @@ struct ConePairOptions
 
 struct ConePairs
 {
-  /// (+1/4 point, -1/4 point) of each pair, in the order they were chosen
+  /// (+1/4 point, -1/4 point) of each pair, in the order they were chosen; a move of one of the
+  /// field's own quarters is such a pair with that quarter at one end (a +1/4 at the -1/4 end, a
+  /// -1/4 at the +1/4 end), which cancels it there
   std::vector<std::pair<int, int>> pairs;
   /// the area-weighted RMS of the modelled log scale about its mean per component, with the
   /// field's own singularities and with the pairs added
@@ -48,34 +50,41 @@ struct ConePairs
  * singularities, 0.99 on a dumbbell and bumpy-cube), so that where u is low the quads are large.
  * A single cone, or a pair far apart, spreads its log potential over the whole surface and
  * raises the variance; a dipole does not. So, greedily: w, what a unit cone at each point adds
- * to the variance of u to first order (two solves for all points at once), and at the six faces
+ * to the variance of u to first order (two solves for all points at once), and at the faces
  * where w changes fastest (their points regular, inside, and `separation` grid edges from every
  * singularity and the boundary) a +1/4 cone on the low side of w and a -1/4 on the high side,
- * three grid edges apart (a dipole across a slope lowers it between the two and hardly changes
- * u elsewhere); the three best to first order are measured (two solves each), and each kept that
- * lowers the variance of u, summed over the grid's cells (area / h^2), by `minimumGain`. Two
- * factorizations in all.
+ * three and six grid edges apart (a dipole across a slope lowers it between the two and hardly
+ * changes u elsewhere), until six are listed; and for each of the field's own inner quarters not
+ * within `separation` of a sharp edge, its move to the free point within six grid edges that
+ * gains most to first order (a +1/4 moved from s to t is the dipole +1/4 at t, -1/4 at s). The
+ * three best to first order are measured (two solves each), the next three only when none of
+ * those is kept; a pair is kept that lowers the variance of u, summed over the grid's cells
+ * (area / h^2), by `minimumGain`, a move that lowers it by twice that. Two factorizations in all.
  * @param[in] defect     #V angleDefects
  * @param[in] index      #V the field's index at each point (FrameTopology::index)
  * @param[in] edgeLength the grid's edge length h
+ * @param[in] sharp      #E (topo's edges) or empty: 1 for a sharp edge; a quarter within
+ *                       `separation` of one stays (the frames are held along it, and a CAD part's
+ *                       corners are where its creases need them)
  */
 ConePairs conePairsForEvenScale(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F,
   const MeshTopology& topo, const Eigen::VectorXd& defect, const Eigen::VectorXd& index,
-  double edgeLength, const ConePairOptions& options);
+  double edgeLength, const std::vector<char>& sharp, const ConePairOptions& options);
 
 /**
  * Adds cone pairs: for each (a, b), a +1/4 singularity at a and a -1/4 at b, by a quarter turn
  * of the matchings along the shortest edge path between them over regular inner points. On a
  * component with handles only where the triangles within twice the path's length of a form a
  * disk (see cancelClosePairs). (The twist check of optimizeBranchPoints cannot object: both ends
- * stay singular.) Updates `topology` in place.
+ * stay singular.) Where a is a -1/4 or b a +1/4 of the field, and the other point regular, the
+ * same change moves that quarter to the other point. Updates `topology` in place.
  * @param[out] changedFaces #F, 1 for the faces on both sides of a changed edge
+ * @param[out] moved        the number of quarters moved
  * @return the number of pairs added
  */
 int addConePairs(const Eigen::MatrixX3i& F, const MeshTopology& topo, const FrameGeometry& geometry,
   const Eigen::MatrixX3d& frameU, FrameTopology& topology,
-  const std::vector<std::pair<int, int>>& pairs, std::vector<char>& changedFaces);
-
+  const std::vector<std::pair<int, int>>& pairs, std::vector<char>& changedFaces, int& moved);
 }
 
 #endif

@@ -223,13 +223,16 @@ void fitFrames(const Inputs& in, const Eigen::MatrixX3i& newMatching, const std:
 /// frames then turn to agree but those along the boundary and sharp edges. Returns the pairs
 /// added; frameU and matching are set when any was.
 int addConePairsForEvenScale(const Inputs& in, const FrameTopology& given, double edgeLength,
-  Eigen::MatrixX3d& frameU, Eigen::MatrixX3i& matching)
+  Eigen::MatrixX3d& frameU, Eigen::MatrixX3i& matching, int& moved)
 {
+  moved = 0;
   ConePairOptions options;
   options.minimumGain = in.options.conePairGain;
   options.numberOfThreads = in.options.numberOfThreads;
+  const std::vector<char> sharp = sharpEdges(
+    in.topo, in.geometry.bases, in.options.featureAngle, in.options.minimumFeatureLength);
   const ConePairs chosen = conePairsForEvenScale(
-    in.V, in.F, in.topo, in.geometry.defect, given.index, edgeLength, options);
+    in.V, in.F, in.topo, in.geometry.defect, given.index, edgeLength, sharp, options);
   if (chosen.pairs.empty())
   {
     return 0;
@@ -237,8 +240,8 @@ int addConePairsForEvenScale(const Inputs& in, const FrameTopology& given, doubl
   FrameTopology topology = given;
   std::vector<char> changed;
   const int added =
-    addConePairs(in.F, in.topo, in.geometry, in.frameU, topology, chosen.pairs, changed);
-  if (added == 0)
+    addConePairs(in.F, in.topo, in.geometry, in.frameU, topology, chosen.pairs, changed, moved);
+  if (added + moved == 0)
   {
     return 0;
   }
@@ -246,8 +249,6 @@ int addConePairsForEvenScale(const Inputs& in, const FrameTopology& given, doubl
   // the frames kept the pairs' turning close to them (median edge RSD of the shared meshes
   // 10.1 -> 10.5%)
   std::vector<char> held(in.F.rows(), 0);
-  const std::vector<char> sharp = sharpEdges(
-    in.topo, in.geometry.bases, in.options.featureAngle, in.options.minimumFeatureLength);
   for (int f = 0; f < in.numFaces(); ++f)
   {
     for (int k = 0; k < 3; ++k)
@@ -508,12 +509,14 @@ Parameterization computeParameterization(const Eigen::MatrixX3d& V, const Eigen:
   }
   Eigen::MatrixX3d pairedFrames;
   Eigen::MatrixX3i pairedMatching;
-  out.addedConePairs =
-    addConePairsForEvenScale(settled, field.topology, out.edgeLength, pairedFrames, pairedMatching);
-  const Inputs in = out.addedConePairs > 0
-    ? Inputs{ V, F, topo, geometry, pairedFrames, pairedMatching, options }
-    : settled;
-  if (out.addedConePairs > 0)
+  int movedByScale = 0;
+  out.addedConePairs = addConePairsForEvenScale(
+    settled, field.topology, out.edgeLength, pairedFrames, pairedMatching, movedByScale);
+  out.movedSingularities += movedByScale;
+  const bool paired = out.addedConePairs + movedByScale > 0;
+  const Inputs in =
+    paired ? Inputs{ V, F, topo, geometry, pairedFrames, pairedMatching, options } : settled;
+  if (paired)
   {
     field = evaluateField(in);
   }

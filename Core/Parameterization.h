@@ -119,7 +119,8 @@ struct ParameterizationOptions
   double minimumSingularitySeparation = 1.5;
   /// Pairs of opposite quarter cones are added where the singularities leave the quads' size
   /// uneven, each where it lowers the variance of the modelled log scale, summed over the grid's
-  /// cells, by at least this (conePairsForEvenScale, ConePairOptions::minimumGain); 0: none.
+  /// cells, by at least this, and the field's own quarters moved where that lowers it by twice
+  /// this (conePairsForEvenScale, ConePairOptions::minimumGain); 0: neither.
   double conePairGain = 13.0;
   /// Before the map, triangles with an edge longer than this many grid edges (targetEdgeLength,
   /// or the edge of targetQuadCount quads) are split, longest edge first (refineLongEdges, which
@@ -179,7 +180,8 @@ struct Parameterization
   /// pairs of opposite singularities cancelled (options.minimumSingularitySeparation)
   int cancelledPairs = 0;
   /// quarter singularities moved away from one of the same index closer than a third of
-  /// minimumSingularitySeparation grid edges (moveCloseQuartersApart), before the map is solved
+  /// minimumSingularitySeparation grid edges (moveCloseQuartersApart), and moved where the quads'
+  /// size would vary less (conePairsForEvenScale, with the cone pairs), before the map is solved
   /// (not separatedBranchPoints: branch points of one triangle the rounding put apart)
   int movedSingularities = 0;
   /// pairs of opposite quarter cones added for quads of even size (conePairGain)

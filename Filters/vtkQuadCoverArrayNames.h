@@ -138,7 +138,8 @@ constexpr const char* GridRefinedTriangles = "GridRefinedTriangles";
 /// edges that the solver cancelled (their branch points are gone from its map).
 constexpr const char* CancelledSingularityPairs = "CancelledSingularityPairs";
 /// field, 1 x int: quarter singularities closer than a third of MinimumSingularitySeparation grid
-/// edges to one of the same index that the solver moved apart.
+/// edges to one of the same index that the solver moved apart, and those it moved where the
+/// quads' size varies less (ConePairGain).
 constexpr const char* MovedSingularities = "MovedSingularities";
 /// field, 1 x int: pairs of opposite quarter cones the solver added for quads of even size
 /// (ConePairGain).

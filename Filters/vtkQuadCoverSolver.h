@@ -220,11 +220,12 @@ public:
   /** Pairs of opposite quarter cones (+1/4 and -1/4) are added where the field's singularities
    * leave the quads uneven in size, each where it lowers the variance of the log scale of the
    * flat metric with cones at the singularities (the quads' log size follows about half of
-   * it), summed over the grid's cells, by at least this, in [0, 1e6] (default 13; 0: none). The
-   * frames then turn as little as agrees with the new matchings, all but those held along the
-   * boundary and sharp edges. Meant for a field with its own singularities (the default:
-   * vtkMatchingBuilder::OptimizeBranchPoints off).
-   * Counted in AddedConePairs. */
+   * it), summed over the grid's cells, by at least this, in [0, 1e6] (default 13; 0: none); and
+   * the field's own quarter singularities, but those near sharp edges, move (three to six grid
+   * edges) where that lowers it by twice this. The frames then turn as little as agrees with
+   * the new matchings, all but those held along the boundary and sharp edges. Meant for a field
+   * with its own singularities (the default: vtkMatchingBuilder::OptimizeBranchPoints off).
+   * Counted in AddedConePairs and MovedSingularities. */
   vtkSetClampMacro(ConePairGain, double, 0.0, 1e6);
   vtkGetMacro(ConePairGain, double);
   ///@}

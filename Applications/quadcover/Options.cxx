@@ -378,7 +378,7 @@ std::vector<Option> StageOptions(Pipeline& p)
       "triangles with a longer edge (in grid edges) are split before the map, 0: none"),
     QC_NUMBER("param", solver, ConePairGain,
       "a cone pair is added where it lowers the modelled log scale's variance, summed over the "
-      "quads, by this, 0: none"),
+      "quads, by this, a singularity moved where by twice this, 0: neither"),
     QC_NUMBER("param", solver, MaximumThinStripRefinement,
       "around a strip between two boundary lines narrower than a grid edge the grid is finer, down "
       "to the strip's width but at most this many times, 1: uniform"),

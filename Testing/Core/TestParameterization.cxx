@@ -1081,7 +1081,7 @@ TEST(Parameterization, LongConePairsEvenTheWideSlopeOfABump)
   ConePairOptions options;
   options.minimumGain = ParameterizationOptions().conePairGain;
   const ConePairs chosen =
-    conePairsForEvenScale(c.s.V, c.s.F, c.topo, c.geometry.defect, c.field.index, h, options);
+    conePairsForEvenScale(c.s.V, c.s.F, c.topo, c.geometry.defect, c.field.index, h, {}, options);
   ASSERT_FALSE(chosen.pairs.empty());
   EXPECT_LT(chosen.deviationAfter, chosen.deviationBefore);
   int longPairs = 0;
@@ -1092,6 +1092,47 @@ TEST(Parameterization, LongConePairsEvenTheWideSlopeOfABump)
     longPairs += apart > 4.5;
   }
   EXPECT_GT(longPairs, 0) << chosen.pairs.size() << " pairs, none long";
+}
+
+TEST(Parameterization, QuartersCrowdedOnACapMoveApart)
+{
+  // A sphere's eight +1/4 cones all on a ring around its north pole (where a cube's corners
+  // would spread them over the whole sphere): the modelled scale is far from even, and moving
+  // cones away from the cap evens it with no new singularity. A move is a pair with one of the
+  // cones at its -1/4 end (which cancels it there); the cone goes south.
+  const Surface sphere = makeIcosphere(1.0, 5);
+  const MeshTopology topo = buildTopology(sphere.F, static_cast<int>(sphere.V.rows()));
+  const FrameGeometry geometry = computeFrameGeometry(sphere.V, sphere.F, topo);
+  const double h = edgeLengthForQuadCount(sphere.V, sphere.F, 3000);
+  Eigen::VectorXd index = Eigen::VectorXd::Zero(sphere.V.rows());
+  std::vector<int> cones;
+  for (int k = 0; k < 8; ++k)
+  {
+    const double a = 2.0 * Pi * k / 8.0;
+    const Eigen::Vector3d p(
+      std::sin(0.5) * std::cos(a), std::sin(0.5) * std::sin(a), std::cos(0.5));
+    int nearest = 0;
+    (sphere.V.rowwise() - p.transpose()).rowwise().squaredNorm().minCoeff(&nearest);
+    cones.push_back(nearest);
+    index[nearest] = 0.25;
+  }
+  ConePairOptions options;
+  options.minimumGain = ParameterizationOptions().conePairGain;
+  const ConePairs chosen =
+    conePairsForEvenScale(sphere.V, sphere.F, topo, geometry.defect, index, h, {}, options);
+  EXPECT_LT(chosen.deviationAfter, chosen.deviationBefore);
+  int moves = 0;
+  for (const auto& [plus, minus] : chosen.pairs)
+  {
+    EXPECT_FALSE(std::find(cones.begin(), cones.end(), plus) != cones.end())
+      << "a +1/4 cone cannot be the +1/4 end";
+    if (std::find(cones.begin(), cones.end(), minus) != cones.end())
+    {
+      ++moves;
+      EXPECT_LT(sphere.V(plus, 2), sphere.V(minus, 2)) << "the cone moves off the cap";
+    }
+  }
+  EXPECT_GT(moves, 0) << chosen.pairs.size() << " pairs, no cone moved";
 }
 
 TEST(Parameterization, ConePairsEvenOutTheQuadsOfATubeOfVaryingWidth)
