@@ -317,10 +317,10 @@ std::vector<Dipole> movesDownTheSlope(const EdgeDistances& distances, const Eige
   return list;
 }
 
-/// Dipoles across the steepest slopes of w (firstOrder), at least `count`: at the faces where it
-/// changes fastest (their points free, each at least `separation` from the others), for each
-/// length in `apart` (grid edges), the +1/4 that far down the slope from the -1/4; gain to first
-/// order.
+/// Dipoles across the steepest slopes of w (firstOrder), until `count` are listed (or one more:
+/// up to one of each length per face): at the faces where it changes fastest (their points free,
+/// each at least `separation` from the others), for each length in `apart` (grid edges), the +1/4
+/// that far down the slope from the -1/4; gain to first order.
 std::vector<Dipole> dipolesAcrossSlopes(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F,
   const EdgeDistances& distances, const Eigen::VectorXd& w, const std::vector<double>& blocked,
   double separation, const std::vector<double>& apart, double h, int count)
@@ -520,6 +520,7 @@ ConePairs conePairsForEvenScale(const Eigen::MatrixX3d& V, const Eigen::MatrixX3
       u += response;
       variance = after;
       result.pairs.emplace_back(dipole.plus, dipole.minus);
+      result.from.push_back(dipole.from);
       distances.spread({ dipole.plus, dipole.minus }, separation, blocked);
       if (dipole.from >= 0)
       {
@@ -547,9 +548,18 @@ ConePairs conePairsForEvenScale(const Eigen::MatrixX3d& V, const Eigen::MatrixX3
     std::sort(dipoles.begin(), dipoles.end(),
       [](const Dipole& a, const Dipole& b) { return a.gain > b.gain; });
     // the best few by the first order measured; the next few only if none of them is kept (a
-    // long dipole that looks best to first order may overshoot where a short one would not)
+    // long dipole that looks best to first order may overshoot where a short one would not),
+    // while any left could be kept: a measured gain is the first order's less the variance of
+    // the change, never more
+    std::vector<char> canFollow(dipoles.size() + 1, 0);
+    for (std::size_t i = dipoles.size(); i-- > 0;)
+    {
+      canFollow[i] = canFollow[i + 1] ||
+        dipoles[i].gain >= (dipoles[i].from >= 0 ? MoveGain : 1.0) * minimumGain;
+    }
     int kept = 0;
-    for (std::size_t first = 0; kept == 0 && first < dipoles.size(); first += MeasuredDipoles)
+    for (std::size_t first = 0; kept == 0 && first < dipoles.size() && canFollow[first];
+         first += MeasuredDipoles)
     {
       const std::size_t last = std::min(dipoles.size(), first + MeasuredDipoles);
       kept = keepMeasured(std::vector<Dipole>(dipoles.begin() + first, dipoles.begin() + last));
@@ -564,12 +574,12 @@ ConePairs conePairsForEvenScale(const Eigen::MatrixX3d& V, const Eigen::MatrixX3
 }
 
 int addConePairs(const Eigen::MatrixX3i& F, const MeshTopology& topo, const FrameGeometry& geometry,
-  const Eigen::MatrixX3d& frameU, FrameTopology& topology,
-  const std::vector<std::pair<int, int>>& pairs, std::vector<char>& changedFaces, int& moved)
+  const Eigen::MatrixX3d& frameU, FrameTopology& topology, const ConePairs& chosen,
+  std::vector<char>& changedFaces, int& moved)
 {
   moved = 0;
   changedFaces.assign(F.rows(), 0);
-  if (pairs.empty() || geometry.edgeLength.rows() == 0)
+  if (chosen.pairs.empty() || geometry.edgeLength.rows() == 0)
   {
     return 0;
   }
@@ -578,26 +588,31 @@ int addConePairs(const Eigen::MatrixX3i& F, const MeshTopology& topo, const Fram
   TwistCheck twist(o);
   DiskTest disk(F, topo, geometry.edgeLength);
   int added = 0;
-  for (const auto& [plus, minus] : pairs)
+  std::vector<char> skipped(topo.numVertices, 0);
+  for (std::size_t i = 0; i < chosen.pairs.size(); ++i)
   {
+    const auto [plus, minus] = chosen.pairs[i];
+    const int from = i < chosen.from.size() ? chosen.from[i] : -1;
     // a new pair, or a move: a -1/4 at plus or a +1/4 at minus taken to the other point
-    const bool pair = o.q[plus] == 0 && o.q[minus] == 0;
-    const bool move = (o.q[plus] == -1 && o.q[minus] == 0) || (o.q[plus] == 0 && o.q[minus] == 1);
-    if (!(pair || move) || topo.boundaryVertex[plus] || topo.boundaryVertex[minus] ||
-      !findPathTo(o, plus, minus, 1))
+    const bool pair = from < 0;
+    const bool asChosen = pair ? o.q[plus] == 0 && o.q[minus] == 0
+                               : (from == plus && o.q[plus] == -1 && o.q[minus] == 0) ||
+        (from == minus && o.q[plus] == 0 && o.q[minus] == 1);
+    if (skipped[plus] || skipped[minus] || !asChosen || topo.boundaryVertex[plus] ||
+      topo.boundaryVertex[minus] || !findPathTo(o, plus, minus, 1))
     {
+      skipped[plus] = skipped[minus] = 1;
       continue;
     }
     // with handles, only inside a disk around the path (see cancelClosePairs)
-    if (topo.components[topo.vertexComponent[plus]].genus != 0 &&
-      !disk.ballIsDisk(plus, 2.0 * o.search.dist[minus]))
+    if ((topo.components[topo.vertexComponent[plus]].genus != 0 &&
+          !disk.ballIsDisk(plus, 2.0 * o.search.dist[minus])) ||
+      !changeUntwisted(o, twist, plus, minus, 1, changedFaces))
     {
+      skipped[plus] = skipped[minus] = 1;
       continue;
     }
-    if (changeUntwisted(o, twist, plus, minus, 1, changedFaces))
-    {
-      ++(pair ? added : moved);
-    }
+    ++(pair ? added : moved);
   }
   if (added + moved > 0)
   {

@@ -17,9 +17,10 @@ namespace quadcover
 struct ConePairOptions
 {
   /// A pair is added only where it lowers the variance of the modelled log scale u, summed over
-  /// the grid's cells (conePairsForEvenScale), by at least this; 0: no pairs.
+  /// the grid's cells (conePairsForEvenScale), by at least this, a singularity moved only where
+  /// by twice this; 0: neither.
   double minimumGain = 0.0;
-  /// At most this many pairs.
+  /// At most this many pairs and moves.
   int maximumPairs = 100;
   /// A new cone stays this many grid edges away from every other singularity and the boundary.
   double separation = 3.0;
@@ -33,8 +34,10 @@ struct ConePairs
   /// field's own quarters is such a pair with that quarter at one end (a +1/4 at the -1/4 end, a
   /// -1/4 at the +1/4 end), which cancels it there
   std::vector<std::pair<int, int>> pairs;
+  /// for each of pairs, the quarter a move takes away (one of its two points), -1 for a new pair
+  std::vector<int> from;
   /// the area-weighted RMS of the modelled log scale about its mean per component, with the
-  /// field's own singularities and with the pairs added
+  /// field's own singularities and with the pairs added and the moves made
   double deviationBefore = 0.0;
   double deviationAfter = 0.0;
 };
@@ -55,11 +58,12 @@ struct ConePairs
  * singularity and the boundary) a +1/4 cone on the low side of w and a -1/4 on the high side,
  * three and six grid edges apart (a dipole across a slope lowers it between the two and hardly
  * changes u elsewhere), until six are listed; and for each of the field's own inner quarters not
- * within `separation` of a sharp edge, its move to the free point within six grid edges that
- * gains most to first order (a +1/4 moved from s to t is the dipole +1/4 at t, -1/4 at s). The
- * three best to first order are measured (two solves each), the next three only when none of
- * those is kept; a pair is kept that lowers the variance of u, summed over the grid's cells
- * (area / h^2), by `minimumGain`, a move that lowers it by twice that. Two factorizations in all.
+ * within `separation` of a sharp edge, its move to the free point within six grid edges (and
+ * not near a sharp edge either) that gains most to first order (a +1/4 moved from s to t is the
+ * dipole +1/4 at t, -1/4 at s). The three best to first order are measured (two solves each), the
+ * next three only when none of those is kept (no more); a pair is kept that lowers the variance of
+ * u, summed over the grid's cells (area / h^2), by `minimumGain`, a move that lowers it by twice
+ * that. Two factorizations in all.
  * @param[in] defect     #V angleDefects
  * @param[in] index      #V the field's index at each point (FrameTopology::index)
  * @param[in] edgeLength the grid's edge length h
@@ -72,19 +76,22 @@ ConePairs conePairsForEvenScale(const Eigen::MatrixX3d& V, const Eigen::MatrixX3
   double edgeLength, const std::vector<char>& sharp, const ConePairOptions& options);
 
 /**
- * Adds cone pairs: for each (a, b), a +1/4 singularity at a and a -1/4 at b, by a quarter turn
- * of the matchings along the shortest edge path between them over regular inner points. On a
- * component with handles only where the triangles within twice the path's length of a form a
- * disk (see cancelClosePairs). (The twist check of optimizeBranchPoints cannot object: both ends
- * stay singular.) Where a is a -1/4 or b a +1/4 of the field, and the other point regular, the
- * same change moves that quarter to the other point. Updates `topology` in place.
+ * Adds the cone pairs and makes the moves conePairsForEvenScale chose, in its order: for each
+ * (a, b) a +1/4 singularity at a and a -1/4 at b, by a quarter turn of the matchings along the
+ * shortest edge path between them over regular inner points; where `from` names a or b, that
+ * point is the field's -1/4 (a) or +1/4 (b), and the same change moves it to the other point.
+ * On a component with handles only where the triangles within twice the path's length of a form
+ * a disk (see cancelClosePairs). (The twist check of optimizeBranchPoints cannot object: a
+ * component keeps its singularities.) An entry that cannot be made (its points are not as
+ * chosen, no path) is skipped, and so is every later one that touches its points, which the
+ * choice made after it. Updates `topology` in place.
  * @param[out] changedFaces #F, 1 for the faces on both sides of a changed edge
  * @param[out] moved        the number of quarters moved
  * @return the number of pairs added
  */
 int addConePairs(const Eigen::MatrixX3i& F, const MeshTopology& topo, const FrameGeometry& geometry,
-  const Eigen::MatrixX3d& frameU, FrameTopology& topology,
-  const std::vector<std::pair<int, int>>& pairs, std::vector<char>& changedFaces, int& moved);
+  const Eigen::MatrixX3d& frameU, FrameTopology& topology, const ConePairs& chosen,
+  std::vector<char>& changedFaces, int& moved);
 }
 
 #endif

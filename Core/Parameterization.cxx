@@ -218,14 +218,19 @@ void fitFrames(const Inputs& in, const Eigen::MatrixX3i& newMatching, const std:
   matching = newMatching;
 }
 
-/// Pairs of opposite quarter cones where the field's singularities leave the quads' size uneven
-/// (conePairsForEvenScale, options.conePairGain), added along paths (addConePairs); all
-/// frames then turn to agree but those along the boundary and sharp edges. Returns the pairs
-/// added; frameU and matching are set when any was.
+/// Pairs of opposite quarter cones where the field's singularities leave the quads' size uneven,
+/// and moves of its own quarters (conePairsForEvenScale, options.conePairGain), made along paths
+/// (addConePairs); all frames then turn to agree but those along the boundary and sharp edges.
+/// Returns the pairs added and `moved` the quarters moved; frameU and matching are set when
+/// either is above 0.
 int addConePairsForEvenScale(const Inputs& in, const FrameTopology& given, double edgeLength,
   Eigen::MatrixX3d& frameU, Eigen::MatrixX3i& matching, int& moved)
 {
   moved = 0;
+  if (!(in.options.conePairGain > 0))
+  {
+    return 0;
+  }
   ConePairOptions options;
   options.minimumGain = in.options.conePairGain;
   options.numberOfThreads = in.options.numberOfThreads;
@@ -240,7 +245,7 @@ int addConePairsForEvenScale(const Inputs& in, const FrameTopology& given, doubl
   FrameTopology topology = given;
   std::vector<char> changed;
   const int added =
-    addConePairs(in.F, in.topo, in.geometry, in.frameU, topology, chosen.pairs, changed, moved);
+    addConePairs(in.F, in.topo, in.geometry, in.frameU, topology, chosen, changed, moved);
   if (added + moved == 0)
   {
     return 0;
