@@ -1142,6 +1142,55 @@ TEST(Parameterization, QuartersCrowdedOnACapMoveApart)
   EXPECT_GT(moves, 0) << chosen.pairs.size() << " pairs, no cone moved";
 }
 
+TEST(Parameterization, ConePairsAndMovesChangeTheFieldAsChosen)
+{
+  // The bumped sphere's own field, its pairs and moves made by addConePairs: each pair puts a
+  // +1/4 and a -1/4 on regular points, each move takes the quarter it names to the other point,
+  // and the indices still sum to the sphere's chi.
+  Surface bump = makeIcosphere(1.0, 5);
+  for (int v = 0; v < bump.V.rows(); ++v)
+  {
+    const Eigen::Vector3d p = bump.V.row(v).normalized();
+    bump.V.row(v) =
+      p * (1.0 + 0.5 * std::exp(-(p - Eigen::Vector3d::UnitZ()).squaredNorm() / 0.15));
+  }
+  ParameterizationOptions none;
+  none.conePairGain = 0.0;
+  const Chain c = runChain(bump, 3000, none);
+  ConePairOptions options;
+  options.minimumGain = ParameterizationOptions().conePairGain;
+  const double h = edgeLengthForQuadCount(c.s.V, c.s.F, 3000);
+  const ConePairs chosen =
+    conePairsForEvenScale(c.s.V, c.s.F, c.topo, c.geometry.defect, c.field.index, h, {}, options);
+  const long chosenMoves =
+    std::count_if(chosen.from.begin(), chosen.from.end(), [](int f) { return f >= 0; });
+  ASSERT_GT(chosenMoves, 0) << "no move chosen: the test proves nothing";
+  FrameTopology topology = c.field;
+  std::vector<char> changed;
+  int moved = 0;
+  const int added =
+    addConePairs(c.s.F, c.topo, c.geometry, c.frameU, topology, chosen, changed, moved);
+  EXPECT_EQ(added + moved, static_cast<int>(chosen.pairs.size())) << "every entry made";
+  EXPECT_EQ(moved, chosenMoves);
+  EXPECT_NEAR(topology.index.sum(), 2.0, 1e-9) << "Poincare-Hopf";
+  // replay the entries on the given indices
+  Eigen::VectorXd expected = c.field.index;
+  for (std::size_t i = 0; i < chosen.pairs.size(); ++i)
+  {
+    const auto [plus, minus] = chosen.pairs[i];
+    expected[plus] += 0.25;
+    expected[minus] -= 0.25;
+  }
+  EXPECT_LT((topology.index - expected).cwiseAbs().maxCoeff(), 1e-9);
+  int singular = 0, before = 0;
+  for (int v = 0; v < c.topo.numVertices; ++v)
+  {
+    singular += std::abs(topology.index[v]) > 0.1;
+    before += std::abs(c.field.index[v]) > 0.1;
+  }
+  EXPECT_EQ(singular, before + 2 * added) << "a move adds no singularity";
+}
+
 TEST(Parameterization, ConePairsEvenOutTheQuadsOfATubeOfVaryingWidth)
 {
   // Two bulbs joined by a neck a sixth as wide: with the field's own singularities the grid keeps
