@@ -83,8 +83,8 @@ ConePairs conePairsForEvenScale(const Eigen::MatrixX3d& V, const Eigen::MatrixX3
  * On a component with handles only where the triangles within twice the path's length of a form
  * a disk (see cancelClosePairs). (The twist check of optimizeBranchPoints cannot object: a
  * component keeps its singularities.) An entry that cannot be made (its points are not as
- * chosen, no path) is skipped, and so is every later one that touches its points, which the
- * choice made after it. Updates `topology` in place.
+ * chosen, no path) is skipped, and so is every later one that touches its points (the search
+ * chose those with it made). Updates `topology` in place.
  * @param[out] changedFaces #F, 1 for the faces on both sides of a changed edge
  * @param[out] moved        the number of quarters moved
  * @return the number of pairs added
