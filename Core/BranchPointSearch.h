@@ -27,6 +27,17 @@ using detail::Quarter;
 using detail::residual;
 using detail::turning;
 
+/// The singularities in quarter turns: 4 index at an inner point, 0 on the boundary.
+inline std::vector<int> quarterTurns(const MeshTopology& topo, const Eigen::VectorXd& index)
+{
+  std::vector<int> q(topo.numVertices, 0);
+  for (int v = 0; v < topo.numVertices; ++v)
+  {
+    q[v] = topo.boundaryVertex[v] ? 0 : static_cast<int>(std::lround(4.0 * index[v]));
+  }
+  return q;
+}
+
 /// Primal adjacency over inner edges between inner vertices. Walking an edge from u to `to` and
 /// adding `delta` to the matching from g to f (g: the face where the edge runs to -> u, f: where
 /// it runs u -> to) adds delta to the layer shift of u and takes it from `to`.
@@ -144,14 +155,9 @@ struct Optimizer
     , phi(vectorAngles(geometry_.bases, frameU))
     , steps(pathSteps(F_, topo_))
     , M(topology.matching)
-    , q(topo_.numVertices, 0)
+    , q(quarterTurns(topo_, topology.index))
     , search(topo_.numVertices)
-  {
-    for (int v = 0; v < topo.numVertices; ++v)
-    {
-      q[v] = topo.boundaryVertex[v] ? 0 : static_cast<int>(std::lround(4.0 * topology.index[v]));
-    }
-  }
+  {}
 
   /// The deviation across the step's edge with its matching changed by delta quarter turns.
   double deviationWith(const Step& s, int delta) const

@@ -378,6 +378,29 @@ std::vector<Dipole> dipolesAcrossSlopes(const Eigen::MatrixX3d& V, const Eigen::
   return list;
 }
 
+/// Per point, 1 within `radius` of an edge flagged in `edges` (#E or empty).
+std::vector<char> nearEdges(const EdgeDistances& distances, const MeshTopology& topo,
+  const std::vector<char>& edges, double radius)
+{
+  std::vector<int> sources;
+  for (int e = 0; e < static_cast<int>(edges.size()) && e < topo.numEdges(); ++e)
+  {
+    if (edges[e])
+    {
+      sources.push_back(topo.edges(e, 0));
+      sources.push_back(topo.edges(e, 1));
+    }
+  }
+  std::vector<double> distance(topo.numVertices, Infinity);
+  distances.spread(sources, radius, distance);
+  std::vector<char> near(topo.numVertices, 0);
+  for (int v = 0; v < topo.numVertices; ++v)
+  {
+    near[v] = distance[v] < radius;
+  }
+  return near;
+}
+
 /// Whether the shortest path over regular inner points from a reaches b (edge lengths; no
 /// residual wrapped past +-pi with delta quarter turns, see findMergeTarget); the path is the
 /// search's.
@@ -455,27 +478,8 @@ ConePairs conePairsForEvenScale(const Eigen::MatrixX3d& V, const Eigen::MatrixX3
   distances.spread(blocks, separation, blocked);
   // the singularities in quarter turns, as pairs and moves change them; those near a sharp edge
   // (and points there) pinned
-  std::vector<int> q(n, 0);
-  for (int v = 0; v < n; ++v)
-  {
-    q[v] = topo.boundaryVertex[v] ? 0 : static_cast<int>(std::lround(4.0 * index[v]));
-  }
-  std::vector<int> onSharp;
-  for (int e = 0; e < static_cast<int>(sharp.size()) && e < topo.numEdges(); ++e)
-  {
-    if (sharp[e])
-    {
-      onSharp.push_back(topo.edges(e, 0));
-      onSharp.push_back(topo.edges(e, 1));
-    }
-  }
-  std::vector<double> nearSharp(n, Infinity);
-  distances.spread(onSharp, separation, nearSharp);
-  std::vector<char> pinned(n, 0);
-  for (int v = 0; v < n; ++v)
-  {
-    pinned[v] = nearSharp[v] < separation;
-  }
+  std::vector<int> q = quarterTurns(topo, index);
+  const std::vector<char> pinned = nearEdges(distances, topo, sharp, separation);
   // the gain asked of a pair, as a lowered variance: minimumGain over the grid's cells
   const double minimumGain = options.minimumGain / std::max(model.totalArea() / (h * h), 1.0);
   double variance = model.variance(u);
