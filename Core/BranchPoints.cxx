@@ -86,11 +86,10 @@ void spreadLengths(const Steps& steps, const FrameGeometry& geometry, double lim
   }
 }
 
-/// Is another point with a's quarters (o.q) closer than `limit` to a along edge paths (a
-/// Dijkstra from a that stops at that length)? Edges are as long either way, so this is whether
-/// spreadLengths from those points reaches a below `limit`, up to the order the lengths are
-/// summed in.
-bool sameSignWithin(Optimizer& o, int a, double limit)
+/// Is a point where `hit` holds closer than `limit` to a along edge paths (a Dijkstra from a
+/// that stops at that length)?
+template<class Hit>
+bool pointWithin(Optimizer& o, int a, double limit, const Hit& hit)
 {
   PathSearch& S = o.search;
   S.begin(a);
@@ -102,7 +101,7 @@ bool sameSignWithin(Optimizer& o, int a, double limit)
     {
       continue;
     }
-    if (u != a && o.q[u] == o.q[a])
+    if (u != a && hit(u))
     {
       return true;
     }
@@ -117,6 +116,14 @@ bool sameSignWithin(Optimizer& o, int a, double limit)
     }
   }
   return false;
+}
+
+/// Is another point with a's quarters (o.q) closer than `limit` to a along edge paths? Edges are
+/// as long either way, so this is whether spreadLengths from those points reaches a below
+/// `limit`, up to the order the lengths are summed in.
+bool sameSignWithin(Optimizer& o, int a, double limit)
+{
+  return pointWithin(o, a, limit, [&o, a](int u) { return o.q[u] == o.q[a]; });
 }
 
 /// Where one quarter of a's index can go: the end of the cheapest path (ties: fewer edges) over
@@ -465,7 +472,7 @@ int cancelClosePairs(const Eigen::MatrixX3i& F, const MeshTopology& topo,
 
 int moveCloseQuartersApart(const Eigen::MatrixX3i& F, const MeshTopology& topo,
   const FrameGeometry& geometry, const Eigen::MatrixX3d& frameU, FrameTopology& topology,
-  double closerThan, double minLength, std::vector<char>& changedFaces)
+  double closerThan, double minLength, double boundaryCloserThan, std::vector<char>& changedFaces)
 {
   changedFaces.assign(F.rows(), 0);
   if (!(closerThan > 0) || !(minLength > 0) || topology.singularities < 2 ||
@@ -488,6 +495,21 @@ int moveCloseQuartersApart(const Eigen::MatrixX3i& F, const MeshTopology& topo,
       quarters.push_back(a);
     }
   }
+  // the inner points beside the boundary (the paths' steps leave only inner points)
+  std::vector<int> besideBoundary;
+  std::vector<char> nextToBoundary(nv, 0);
+  for (int e = 0; e < topo.numEdges(); ++e)
+  {
+    for (int j = 0; j < 2; ++j)
+    {
+      const int b = topo.edges(e, j), v = topo.edges(e, 1 - j);
+      if (topo.boundaryVertex[b] && !topo.boundaryVertex[v])
+      {
+        besideBoundary.push_back(v);
+        nextToBoundary[v] = 1;
+      }
+    }
+  }
   int moved = 0;
   for (const int a : quarters)
   {
@@ -498,7 +520,10 @@ int moveCloseQuartersApart(const Eigen::MatrixX3i& F, const MeshTopology& topo,
     // the nearest other singularity of the same sign, within closerThan; most quarters have
     // none, which a search from the quarter itself tells at the cost of its neighbourhood (with
     // a margin far above the rounding of the sums, so that the spread below decides the rest)
-    if (!sameSignWithin(o, a, closerThan * (1.0 + 1e-9)))
+    const bool byBoundary = boundaryCloserThan > 0 &&
+      (nextToBoundary[a] ||
+        pointWithin(o, a, boundaryCloserThan, [&](int u) { return nextToBoundary[u] != 0; }));
+    if (!byBoundary && !sameSignWithin(o, a, closerThan * (1.0 + 1e-9)))
     {
       continue;
     }
@@ -511,13 +536,15 @@ int moveCloseQuartersApart(const Eigen::MatrixX3i& F, const MeshTopology& topo,
       }
     }
     spreadLengths(o.steps, geometry, closerThan, others, near);
-    if (!(near[a] < closerThan) ||
-      (topo.components[topo.vertexComponent[a]].genus != 0 && !disk.ballIsDisk(a, 5.0 * minLength)))
+    const bool handles = topo.components[topo.vertexComponent[a]].genus != 0;
+    if (!(near[a] < closerThan || byBoundary) ||
+      (handles && !byBoundary && !disk.ballIsDisk(a, 5.0 * minLength)))
     {
       continue;
     }
-    // a regular point at least minLength from every other singularity, at most 4 minLength away
-    others.clear();
+    // a regular point at least minLength from every other singularity and from the boundary, at
+    // most 4 minLength away
+    others = besideBoundary;
     for (int v = 0; v < nv; ++v)
     {
       if (o.q[v] != 0 && v != a)
@@ -529,7 +556,10 @@ int moveCloseQuartersApart(const Eigen::MatrixX3i& F, const MeshTopology& topo,
     const int delta = -o.q[a];
     const int target =
       findSplitTarget(o, a, 1, minLength, anyHops, near, pathHops, pathLength, delta);
-    if (target < 0 || pathLength[target] > 4.0 * minLength)
+    // beside a boundary the ball around the quarter holds the boundary's loop where it is short
+    // (a spout's opening): the ball that must be a disk is the one the path stays in
+    if (target < 0 || pathLength[target] > 4.0 * minLength ||
+      (handles && byBoundary && !disk.ballIsDisk(a, 1.25 * pathLength[target])))
     {
       continue;
     }

@@ -175,12 +175,16 @@ int cancelClosePairs(const Eigen::MatrixX3i& F, const MeshTopology& topo,
 
 /**
  * Moves inner quarter singularities that lie closer than `closerThan` (along edge paths) to one
- * of the same index apart: each such quarter goes along the cheapest path over regular points to
- * one at least minLength from every other singularity, at most 4 minLength away (no grid can put
+ * of the same index, or closer than `boundaryCloserThan` to the boundary (0: never), apart: each
+ * such quarter goes along the cheapest path over regular points to one at least minLength from
+ * every other singularity and from the boundary, at most 4 minLength away (no grid can put
  * two singularities much less than one of its edges apart on grid points; three +1/4 within half
  * a grid edge of each other on cheburashka at 3,000 quads left triangles flipped, while the
- * corners of a plate thinner than a grid edge, 0.8 of one apart, stay best where they are).
- * Changes on a component with handles only inside a disk around the quarter (5 minLength); the
+ * corners of a plate thinner than a grid edge, 0.8 of one apart, stay best where they are; a
+ * -1/4 one triangle from the teapot's spout opening, with the boundary on grid lines through its
+ * grid point, left a triangle collapsed onto that point at most densities).
+ * Changes on a component with handles only inside a disk around the quarter (5 minLength; for a
+ * quarter beside the boundary, whose short loop may lie in that ball, 1.25 times its path); the
  * tube check of cancelClosePairs cannot object (the moved quarter stays a singularity of its
  * component). Updates `topology` in place.
  * @param[out] changedFaces #F, 1 for the faces on both sides of a changed edge
@@ -188,7 +192,7 @@ int cancelClosePairs(const Eigen::MatrixX3i& F, const MeshTopology& topo,
  */
 int moveCloseQuartersApart(const Eigen::MatrixX3i& F, const MeshTopology& topo,
   const FrameGeometry& geometry, const Eigen::MatrixX3d& frameU, FrameTopology& topology,
-  double closerThan, double minLength, std::vector<char>& changedFaces);
+  double closerThan, double minLength, double boundaryCloserThan, std::vector<char>& changedFaces);
 
 /**
  * Turns the frames so that they agree with given matchings: the angles alpha minimizing

@@ -288,8 +288,8 @@ int settleSingularitiesCloserThanGrid(const Inputs& in, const FrameTopology& giv
   const int cancelled =
     cancelClosePairs(in.F, in.topo, in.geometry, in.frameU, topology, separation, changed);
   std::vector<char> movedFaces;
-  moved = moveCloseQuartersApart(
-    in.F, in.topo, in.geometry, in.frameU, topology, separation / 3.0, separation, movedFaces);
+  moved = moveCloseQuartersApart(in.F, in.topo, in.geometry, in.frameU, topology, separation / 3.0,
+    separation, edgeLength, movedFaces);
   if (cancelled == 0 && moved == 0)
   {
     return 0;

@@ -113,9 +113,10 @@ struct ParameterizationOptions
   double maximumRegridQuadCount = 1000;
   /// Opposite quarter singularities (+1/4 and -1/4) closer than this many grid edges along the
   /// surface cancel before the map is cut (cancelClosePairs), and a quarter closer than a third of
-  /// it to one of the same index moves apart to it (moveCloseQuartersApart); the frames around the
-  /// changed edges turn to agree; 0 keeps every one where it is. Both would have to lie on grid
-  /// points: a pair closer than a grid edge folds the map or stretches the quads between them.
+  /// it to one of the same index, or closer than a grid edge to the boundary, moves apart to it
+  /// (moveCloseQuartersApart); the frames around the changed edges turn to agree; 0 keeps every
+  /// one where it is. Both would have to lie on grid points (the boundary on grid lines): a pair
+  /// closer than a grid edge folds the map or stretches the quads between them.
   double minimumSingularitySeparation = 1.5;
   /// Pairs of opposite quarter cones are added where the singularities leave the quads' size
   /// uneven, each where it lowers the variance of the modelled log scale, summed over the grid's
