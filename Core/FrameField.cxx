@@ -7,6 +7,7 @@
 #include <Eigen/Dense>
 #include <Eigen/Geometry>
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -227,31 +228,88 @@ std::vector<int> edgeNetworks(const MeshTopology& topo, const std::vector<char>&
   return parent;
 }
 
-std::vector<char> sharpEdges(
-  const MeshTopology& topo, const FaceBases& bases, double featureAngle, int minimumLength)
+namespace
 {
-  const double cosFeature = std::cos(featureAngle * 3.14159265358979323846 / 180.0);
-  const int ne = topo.numEdges();
-  std::vector<char> sharp(ne, 0);
-  for (int e = 0; e < ne; ++e)
+
+/// Per edge, the angle between its two triangles' normals (0 on a boundary or non-manifold edge).
+std::vector<double> edgeBends(const MeshTopology& topo, const FaceBases& bases)
+{
+  std::vector<double> bend(topo.numEdges(), 0.0);
+  for (int e = 0; e < topo.numEdges(); ++e)
   {
     if (topo.edgeFaceCount[e] == 2)
     {
-      const int f = topo.edgeFaces(e, 0), g = topo.edgeFaces(e, 1);
-      sharp[e] = bases.normal.row(f).dot(bases.normal.row(g)) < cosFeature;
+      const double c =
+        bases.normal.row(topo.edgeFaces(e, 0)).dot(bases.normal.row(topo.edgeFaces(e, 1)));
+      bend[e] = std::acos(std::clamp(c, -1.0, 1.0));
     }
   }
+  return bend;
+}
+
+/// How much the surface beside a sharp edge e bends across it: over the other edges of e's two
+/// triangles that are not sharp themselves, the largest angle between the normals on either side
+/// of them, seen along e (both normals projected onto the plane normal to e, so that a crease
+/// that curves, like the rim of a faceted cylinder, has smooth sides).
+double sideBend(const MeshTopology& topo, const FaceBases& bases, const std::vector<double>& bend,
+  double feature, int e)
+{
+  const Eigen::Vector3d cross =
+    bases.normal.row(topo.edgeFaces(e, 0)).cross(bases.normal.row(topo.edgeFaces(e, 1)));
+  if (cross.norm() < 1e-12)
+  {
+    return 0.0; // folded flat: a fin's edge is a crease
+  }
+  const Eigen::Vector3d t = cross.normalized();
+  double side = 0.0;
+  for (int i = 0; i < 2; ++i)
+  {
+    const int f = topo.edgeFaces(e, i);
+    for (int k = 0; k < 3; ++k)
+    {
+      const int o = topo.faceEdges(f, k);
+      if (o < 0 || o == e || bend[o] > feature || topo.edgeFaceCount[o] != 2)
+      {
+        continue;
+      }
+      const int g = topo.edgeFaces(o, 0) == f ? topo.edgeFaces(o, 1) : topo.edgeFaces(o, 0);
+      const Eigen::Vector3d nf = bases.normal.row(f), ng = bases.normal.row(g);
+      const Eigen::Vector3d a = nf - nf.dot(t) * t, b = ng - ng.dot(t) * t;
+      side = std::max(side, std::atan2(a.cross(b).norm(), a.dot(b)));
+    }
+  }
+  return side;
+}
+
+}
+
+std::vector<char> sharpEdges(const MeshTopology& topo, const FaceBases& bases, double featureAngle,
+  int minimumLength, double smoothSideFraction)
+{
+  const double feature = featureAngle * 3.14159265358979323846 / 180.0;
+  const int ne = topo.numEdges();
+  const std::vector<double> bend = edgeBends(topo, bases);
+  std::vector<char> sharp(ne, 0), smoothSides(ne, 0);
+  for (int e = 0; e < ne; ++e)
+  {
+    sharp[e] = bend[e] > feature;
+    smoothSides[e] =
+      sharp[e] && sideBend(topo, bases, bend, feature, e) <= smoothSideFraction * bend[e];
+  }
+  // A network is a crease where it is long enough and at least half of its edges have smooth
+  // sides; decided per network, so that a corner's few rough edges do not cut a crease apart.
   const std::vector<int> network = edgeNetworks(topo, sharp);
-  std::vector<int> size(ne, 0);
+  std::vector<int> size(ne, 0), smooth(ne, 0);
   for (int e = 0; e < ne; ++e)
   {
     size[network[e]] += sharp[e];
+    smooth[network[e]] += smoothSides[e];
   }
   for (int e = 0; e < ne; ++e)
   {
-    sharp[e] = sharp[e] && size[network[e]] >= minimumLength;
+    const int n = network[e];
+    sharp[e] = sharp[e] && size[n] >= minimumLength && 2 * smooth[n] >= size[n];
   }
   return sharp;
 }
-
 }

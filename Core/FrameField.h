@@ -95,14 +95,21 @@ std::vector<double> componentAreas(
 /// edges joined to it through shared points, the same for all of them (an unflagged edge: itself).
 std::vector<int> edgeNetworks(const MeshTopology& topo, const std::vector<char>& flagged);
 
+/// A sharp edge has smooth sides where the surface beside it bends across it by at most this
+/// share of the edge's own bend (the normals seen along the edge).
+constexpr double SmoothSideFraction = 0.15;
+
 /**
- * Sharp inner edges: the two triangles' normals more than featureAngle degrees apart, kept only in
- * chains of at least minimumLength sharp edges joined end to end (isolated sharp edges are noise).
+ * Sharp inner edges, the creases: the two triangles' normals more than featureAngle degrees apart,
+ * in networks (sharp edges joined through shared points) of at least minimumLength edges of which
+ * at least half have smooth sides (SmoothSideFraction). Isolated sharp edges are noise; so is a
+ * network whose sides bend as much as it does, as where a smooth surface is sampled coarsely (a
+ * decimated scan, a thin tube of few triangles around), while a crease of a CAD part, even a
+ * faceted one, has flat or gently curved sides.
  * @return #E, 1 on a sharp edge
  */
-std::vector<char> sharpEdges(
-  const MeshTopology& topo, const FaceBases& bases, double featureAngle, int minimumLength);
-
+std::vector<char> sharpEdges(const MeshTopology& topo, const FaceBases& bases, double featureAngle,
+  int minimumLength, double smoothSideFraction = SmoothSideFraction);
 }
 
 #endif

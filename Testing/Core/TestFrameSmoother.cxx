@@ -1,5 +1,5 @@
 // The frame smoother: descent, lambda = 0, singularities of smoothed curvature fields, recovery
-// of a known field from noise, constraints along features and boundaries.
+// of a known field from noise, constraints along features and boundaries, which edges are creases.
 #include "CurvatureFrames.h"
 #include "FrameField.h"
 #include "FrameSmoother.h"
@@ -263,6 +263,80 @@ TEST(FrameSmoother, SharpCubeGetsItsEightCornerBranchPoints)
     const bool corner = c.s.V.row(v).cwiseAbs().minCoeff() > 1.0 - 1e-12;
     EXPECT_EQ(t.layerShift[v], corner ? 1 : 0) << v;
   }
+}
+
+namespace
+{
+/// A closed prism over a regular n-gon (radius 1, height 2, rings + 1 rings of points), its caps
+/// fans around their centres: a faceted cylinder, the rims its only creases.
+Surface cappedPrism(int n, int rings)
+{
+  Surface s;
+  s.V.resize(n * (rings + 1) + 2, 3);
+  for (int j = 0; j <= rings; ++j)
+  {
+    for (int i = 0; i < n; ++i)
+    {
+      const double a = 2.0 * Pi * i / n;
+      s.V.row(j * n + i) << std::cos(a), std::sin(a), 2.0 * j / rings;
+    }
+  }
+  const int bottom = n * (rings + 1), top = bottom + 1;
+  s.V.row(bottom) << 0.0, 0.0, 0.0;
+  s.V.row(top) << 0.0, 0.0, 2.0;
+  std::vector<Eigen::Vector3i> faces;
+  for (int j = 0; j < rings; ++j)
+  {
+    for (int i = 0; i < n; ++i)
+    {
+      const int a = j * n + i, b = j * n + (i + 1) % n;
+      faces.emplace_back(a, b, b + n);
+      faces.emplace_back(a, b + n, a + n);
+    }
+  }
+  for (int i = 0; i < n; ++i)
+  {
+    faces.emplace_back(bottom, (i + 1) % n, i);
+    faces.emplace_back(top, rings * n + i, rings * n + (i + 1) % n);
+  }
+  s.F.resize(static_cast<int>(faces.size()), 3);
+  for (int f = 0; f < s.F.rows(); ++f)
+  {
+    s.F.row(f) = faces[f].transpose();
+  }
+  return s;
+}
+
+int countSharp(const Surface& s, double smoothSideFraction)
+{
+  const MeshTopology topo = buildTopology(s.F, static_cast<int>(s.V.rows()));
+  const FrameGeometry g = computeFrameGeometry(s.V, s.F, topo);
+  const std::vector<char> sharp = sharpEdges(topo, g.bases, SmootherOptions().featureAngle,
+    SmootherOptions().minimumFeatureLength, smoothSideFraction);
+  return static_cast<int>(std::count(sharp.begin(), sharp.end(), 1));
+}
+}
+
+TEST(FrameSmoother, CreasesNeedSmoothSides)
+{
+  // A faceted cylinder of 8 and of 12 sides: its two rims (90 degrees) are creases, though the
+  // faces beside them meet at 45 or 30 degrees along them; the 45 degrees between sides are not.
+  for (const int n : { 8, 12 })
+  {
+    EXPECT_EQ(countSharp(cappedPrism(n, 3), SmoothSideFraction), 2 * n) << n;
+  }
+  // A sphere of a few hundred triangles, its points moved in and out at random: a coarse smooth
+  // surface. Its edges bent past the feature angle form networks long enough to pass as creases
+  // by their bend alone, but the surface beside them bends as much, so none is a crease.
+  Surface bumpy = makeIcosphere(1.0, 2);
+  std::mt19937 random(7);
+  std::uniform_real_distribution<double> radius(0.75, 1.25);
+  for (int v = 0; v < bumpy.V.rows(); ++v)
+  {
+    bumpy.V.row(v) *= radius(random);
+  }
+  EXPECT_GE(countSharp(bumpy, 1e9), 20);
+  EXPECT_EQ(countSharp(bumpy, SmoothSideFraction), 0);
 }
 
 TEST(FrameSmoother, ReportsProgressAndStopsWhenAsked)
