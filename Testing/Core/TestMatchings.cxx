@@ -358,6 +358,41 @@ TEST(Matchings, CloseOppositeQuartersCancelAndNothingElseChanges)
 
 namespace
 {
+/// Per point, the length of the shortest edge path from the sources, spread below `limit`
+/// (infinity beyond).
+std::vector<double> edgePathLengths(const Mesh& m, const std::vector<int>& sources, double limit)
+{
+  std::vector<double> d(m.topo.numVertices, std::numeric_limits<double>::infinity());
+  using Item = std::pair<double, int>;
+  std::priority_queue<Item, std::vector<Item>, std::greater<Item>> queue;
+  for (const int a : sources)
+  {
+    d[a] = 0.0;
+    queue.push({ 0.0, a });
+  }
+  while (!queue.empty())
+  {
+    const auto [du, u] = queue.top();
+    queue.pop();
+    if (du > d[u])
+      continue;
+    for (int i = m.topo.ringOffsets[u]; i < m.topo.ringOffsets[u + 1]; ++i)
+    {
+      for (int k = 0; k < 3; ++k)
+      {
+        const int w = m.s.F(m.topo.ringFaces[i], k);
+        const double nd = du + (m.s.V.row(w) - m.s.V.row(u)).norm();
+        if (nd < limit && nd < d[w])
+        {
+          d[w] = nd;
+          queue.push({ nd, w });
+        }
+      }
+    }
+  }
+  return d;
+}
+
 /// Pairs of inner quarters of the same index closer than `length` along edges.
 int closeLikePairs(const Mesh& m, const FrameTopology& t, double length)
 {
@@ -368,34 +403,10 @@ int closeLikePairs(const Mesh& m, const FrameTopology& t, double length)
     {
       continue;
     }
-    // Dijkstra over the edges, from a
-    std::vector<double> d(m.topo.numVertices, std::numeric_limits<double>::infinity());
-    std::priority_queue<std::pair<double, int>, std::vector<std::pair<double, int>>,
-      std::greater<std::pair<double, int>>>
-      queue;
-    d[a] = 0.0;
-    queue.push({ 0.0, a });
-    while (!queue.empty())
+    const std::vector<double> d = edgePathLengths(m, { a }, length);
+    for (int u = a + 1; u < m.topo.numVertices; ++u)
     {
-      const auto [du, u] = queue.top();
-      queue.pop();
-      if (du > d[u])
-        continue;
-      if (u > a && t.index[u] == t.index[a])
-        ++pairs;
-      for (int i = m.topo.ringOffsets[u]; i < m.topo.ringOffsets[u + 1]; ++i)
-      {
-        for (int k = 0; k < 3; ++k)
-        {
-          const int w = m.s.F(m.topo.ringFaces[i], k);
-          const double nd = du + (m.s.V.row(w) - m.s.V.row(u)).norm();
-          if (nd < length && nd < d[w])
-          {
-            d[w] = nd;
-            queue.push({ nd, w });
-          }
-        }
-      }
+      pairs += d[u] < length && t.index[u] == t.index[a];
     }
   }
   return pairs;
@@ -407,42 +418,17 @@ namespace
 /// Quarter singularities of t closer than `length` to the boundary along edge paths.
 int quartersNearBoundary(const Mesh& m, const FrameTopology& t, double length)
 {
-  const int nv = m.topo.numVertices;
-  std::vector<double> d(nv, std::numeric_limits<double>::infinity());
-  using Item = std::pair<double, int>;
-  std::priority_queue<Item, std::vector<Item>, std::greater<Item>> queue;
-  for (int v = 0; v < nv; ++v)
+  std::vector<int> boundary;
+  for (int v = 0; v < m.topo.numVertices; ++v)
   {
     if (m.topo.boundaryVertex[v])
     {
-      d[v] = 0.0;
-      queue.push({ 0.0, v });
+      boundary.push_back(v);
     }
   }
-  while (!queue.empty())
-  {
-    const auto [du, u] = queue.top();
-    queue.pop();
-    if (du > d[u])
-    {
-      continue;
-    }
-    for (int i = m.topo.ringOffsets[u]; i < m.topo.ringOffsets[u + 1]; ++i)
-    {
-      for (int k = 0; k < 3; ++k)
-      {
-        const int w = m.s.F(m.topo.ringFaces[i], k);
-        const double nd = du + (m.s.V.row(w) - m.s.V.row(u)).norm();
-        if (nd < length && nd < d[w])
-        {
-          d[w] = nd;
-          queue.push({ nd, w });
-        }
-      }
-    }
-  }
+  const std::vector<double> d = edgePathLengths(m, boundary, length);
   int near = 0;
-  for (int v = 0; v < nv; ++v)
+  for (int v = 0; v < m.topo.numVertices; ++v)
   {
     near += std::abs(std::abs(t.index[v]) - 0.25) < 1e-9 && d[v] < length;
   }
@@ -456,7 +442,7 @@ TEST(Matchings, QuartersBesideTheBoundaryMoveInward)
   // grid edge of the boundary leaves the triangles between them no room (the teapot's spout
   // kept a triangle collapsed onto a grid point at most densities). The noisy field crowds
   // quarters everywhere, so that only some find a free point inside the saddle.
-  for (const char* name : { "saddle" })
+  const char* name = "saddle";
   {
     const Mesh m = prepare(testSurface(name));
     const Eigen::MatrixX3d U = noisyFrames(m);
@@ -668,33 +654,7 @@ TEST(Matchings, QuartersOfASplitPoleOfSliversGoAsFarAsOnACoarseMesh)
   const double length = opt.splitDistance * m.geometry.referenceLength;
   // shortest edge path between points, by length
   auto pathLength = [&](int from, int to) {
-    std::vector<double> d(m.s.V.rows(), std::numeric_limits<double>::infinity());
-    using Item = std::pair<double, int>;
-    std::priority_queue<Item, std::vector<Item>, std::greater<Item>> queue;
-    d[from] = 0.0;
-    queue.push({ 0.0, from });
-    while (!queue.empty())
-    {
-      const auto [du, u] = queue.top();
-      queue.pop();
-      if (du > d[u])
-        continue;
-      for (int j = m.topo.ringOffsets[u]; j < m.topo.ringOffsets[u + 1]; ++j)
-      {
-        const int f = m.topo.ringFaces[j];
-        for (int k = 0; k < 3; ++k)
-        {
-          const int w = m.s.F(f, k);
-          const double dw = du + (m.s.V.row(w) - m.s.V.row(u)).norm();
-          if (dw < d[w])
-          {
-            d[w] = dw;
-            queue.push({ dw, w });
-          }
-        }
-      }
-    }
-    return d[to];
+    return edgePathLengths(m, { from }, std::numeric_limits<double>::infinity())[to];
   };
   std::vector<int> quarters;
   for (int v = 0; v < m.topo.numVertices; ++v)
