@@ -24,7 +24,11 @@
  * borders and creases. A triangle on two such edges follows the longer one (at the usual
  * right-angled corner the cross fits both). Sharp edges count only in chains of at least
  * MinimumFeatureLength edges, so that isolated sharp edges of a noisy scan pin nothing; the
- * default FeatureAngle is 60 rather than vtkFeatureEdges' 30 for the same reason.
+ * default FeatureAngle is 60 rather than vtkFeatureEdges' 30 for the same reason. A chain counts
+ * only where at least half of its edges have smooth sides (the surface beside them bending
+ * across them by at most 0.15 of their own bend): a coarsely sampled smooth surface, such as a
+ * decimated scan, bends as much beside its sharp edges as at them, while a CAD part's creases,
+ * even a faceted cylinder's rims, have flat or gently curved sides.
  *
  * Input: a triangle surface with cell arrays FrameU (required), FrameV (if absent, n x FrameU)
  * and FrameWeight (if absent, 1 everywhere), by default the names vtkCurvatureFrames writes;

@@ -197,10 +197,11 @@ public:
   ///@{
   /** Opposite quarter singularities (+1/4 and -1/4) closer than this many grid edges along the
    * surface cancel before the surface is cut, and a quarter closer than a third of it to one of
-   * the same index moves apart to it (on components with handles only within a disk of the
-   * surface), the frames around them turned to agree, in [0, 100] (default 1.5); 0 keeps every
-   * one where it is. Both would have to lie on grid points: so close, the map folds or the quads
-   * between them stretch. Counted in CancelledSingularityPairs and MovedSingularities. */
+   * the same index, or closer than a grid edge to the boundary, moves apart to it (on components
+   * with handles only within a disk of the surface), the frames around them turned to agree, in
+   * [0, 100] (default 1.5); 0 keeps every one where it is. Both would have to lie on grid points
+   * (the boundary on grid lines): so close, the map folds or the quads between them stretch.
+   * Counted in CancelledSingularityPairs and MovedSingularities. */
   vtkSetClampMacro(MinimumSingularitySeparation, double, 0.0, 100.0);
   vtkGetMacro(MinimumSingularitySeparation, double);
   ///@}
