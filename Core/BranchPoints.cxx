@@ -53,18 +53,22 @@ void spreadHops(const Steps& steps, int limit, std::vector<int> front, std::vect
   }
 }
 
-/// Length of the shortest edge path from the points in front (0 there), spread while shorter
-/// than `limit`; the points beyond get infinity.
+/// Length of the shortest edge path from the points in front (0 there, or start[i] for front[i]
+/// where start is given), spread while shorter than `limit`; the points beyond get infinity.
 void spreadLengths(const Steps& steps, const FrameGeometry& geometry, double limit,
-  const std::vector<int>& front, std::vector<double>& length)
+  const std::vector<int>& front, std::vector<double>& length, const std::vector<double>& start = {})
 {
   std::fill(length.begin(), length.end(), std::numeric_limits<double>::infinity());
   using Item = std::pair<double, int>;
   std::priority_queue<Item, std::vector<Item>, std::greater<Item>> queue;
-  for (const int v : front)
+  for (std::size_t i = 0; i < front.size(); ++i)
   {
-    length[v] = 0.0;
-    queue.push({ 0.0, v });
+    const double d = start.empty() ? 0.0 : start[i];
+    if (d < length[front[i]])
+    {
+      length[front[i]] = d;
+      queue.push({ d, front[i] });
+    }
   }
   while (!queue.empty())
   {
@@ -86,10 +90,11 @@ void spreadLengths(const Steps& steps, const FrameGeometry& geometry, double lim
   }
 }
 
-/// Is a point where `hit` holds closer than `limit` to a along edge paths (a Dijkstra from a
-/// that stops at that length)?
-template<class Hit>
-bool pointWithin(Optimizer& o, int a, double limit, const Hit& hit)
+/// Is another point with a's quarters (o.q) closer than `limit` to a along edge paths (a
+/// Dijkstra from a that stops at that length)? Edges are as long either way, so this is whether
+/// spreadLengths from those points reaches a below `limit`, up to the order the lengths are
+/// summed in.
+bool sameSignWithin(Optimizer& o, int a, double limit)
 {
   PathSearch& S = o.search;
   S.begin(a);
@@ -101,7 +106,7 @@ bool pointWithin(Optimizer& o, int a, double limit, const Hit& hit)
     {
       continue;
     }
-    if (u != a && hit(u))
+    if (u != a && o.q[u] == o.q[a])
     {
       return true;
     }
@@ -116,14 +121,6 @@ bool pointWithin(Optimizer& o, int a, double limit, const Hit& hit)
     }
   }
   return false;
-}
-
-/// Is another point with a's quarters (o.q) closer than `limit` to a along edge paths? Edges are
-/// as long either way, so this is whether spreadLengths from those points reaches a below
-/// `limit`, up to the order the lengths are summed in.
-bool sameSignWithin(Optimizer& o, int a, double limit)
-{
-  return pointWithin(o, a, limit, [&o, a](int u) { return o.q[u] == o.q[a]; });
 }
 
 /// Where one quarter of a's index can go: the end of the cheapest path (ties: fewer edges) over
@@ -470,12 +467,51 @@ int cancelClosePairs(const Eigen::MatrixX3i& F, const MeshTopology& topo,
   return cancelled;
 }
 
+namespace
+{
+/// Per point, the length of the shortest edge path to the boundary, spread while shorter than
+/// `limit` (infinity beyond): the paths' steps join inner points only, so each inner point
+/// beside the boundary starts at its shortest edge to it.
+std::vector<double> boundaryLengths(
+  const MeshTopology& topo, const FrameGeometry& geometry, const Steps& steps, double limit)
+{
+  std::vector<double> start(topo.numVertices, std::numeric_limits<double>::infinity());
+  for (int f = 0; f < static_cast<int>(topo.faceEdges.rows()); ++f)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      const int e = topo.faceEdges(f, k);
+      const int a = e >= 0 ? topo.edges(e, 0) : 0, b = e >= 0 ? topo.edges(e, 1) : 0;
+      if (e >= 0 && topo.boundaryVertex[a] != topo.boundaryVertex[b])
+      {
+        const int inner = topo.boundaryVertex[a] ? b : a;
+        start[inner] = std::min(start[inner], geometry.edgeLength(f, k));
+      }
+    }
+  }
+  std::vector<int> front;
+  std::vector<double> lengths;
+  for (int v = 0; v < topo.numVertices; ++v)
+  {
+    if (start[v] < limit)
+    {
+      front.push_back(v);
+      lengths.push_back(start[v]);
+    }
+  }
+  std::vector<double> length(topo.numVertices);
+  spreadLengths(steps, geometry, limit, front, length, lengths);
+  return length;
+}
+}
+
 int moveCloseQuartersApart(const Eigen::MatrixX3i& F, const MeshTopology& topo,
   const FrameGeometry& geometry, const Eigen::MatrixX3d& frameU, FrameTopology& topology,
   double closerThan, double minLength, double boundaryCloserThan, std::vector<char>& changedFaces)
 {
   changedFaces.assign(F.rows(), 0);
-  if (!(closerThan > 0) || !(minLength > 0) || topology.singularities < 2 ||
+  const bool boundary = boundaryCloserThan > 0;
+  if (!(closerThan > 0) || !(minLength > 0) || topology.singularities < (boundary ? 1 : 2) ||
     geometry.edgeLength.rows() == 0)
   {
     return 0;
@@ -495,21 +531,9 @@ int moveCloseQuartersApart(const Eigen::MatrixX3i& F, const MeshTopology& topo,
       quarters.push_back(a);
     }
   }
-  // the inner points beside the boundary (the paths' steps leave only inner points)
-  std::vector<int> besideBoundary;
-  std::vector<char> nextToBoundary(nv, 0);
-  for (int e = 0; e < topo.numEdges(); ++e)
-  {
-    for (int j = 0; j < 2; ++j)
-    {
-      const int b = topo.edges(e, j), v = topo.edges(e, 1 - j);
-      if (topo.boundaryVertex[b] && !topo.boundaryVertex[v])
-      {
-        besideBoundary.push_back(v);
-        nextToBoundary[v] = 1;
-      }
-    }
-  }
+  // the boundary, which moved quarters keep the larger of minLength and boundaryCloserThan from
+  const double fromBoundary = std::max(minLength, boundaryCloserThan);
+  const std::vector<double> toBoundary = boundaryLengths(topo, geometry, o.steps, fromBoundary);
   int moved = 0;
   for (const int a : quarters)
   {
@@ -517,12 +541,11 @@ int moveCloseQuartersApart(const Eigen::MatrixX3i& F, const MeshTopology& topo,
     {
       continue;
     }
-    // the nearest other singularity of the same sign, within closerThan; most quarters have
-    // none, which a search from the quarter itself tells at the cost of its neighbourhood (with
-    // a margin far above the rounding of the sums, so that the spread below decides the rest)
-    const bool byBoundary = boundaryCloserThan > 0 &&
-      (nextToBoundary[a] ||
-        pointWithin(o, a, boundaryCloserThan, [&](int u) { return nextToBoundary[u] != 0; }));
+    // closer than boundaryCloserThan to the boundary, or to another singularity of the same sign
+    // within closerThan; most quarters have none, which a search from the quarter itself tells
+    // at the cost of its neighbourhood (with a margin far above the rounding of the sums, so that
+    // the spread below decides the rest)
+    const bool byBoundary = boundary && toBoundary[a] < boundaryCloserThan;
     if (!byBoundary && !sameSignWithin(o, a, closerThan * (1.0 + 1e-9)))
     {
       continue;
@@ -542,9 +565,9 @@ int moveCloseQuartersApart(const Eigen::MatrixX3i& F, const MeshTopology& topo,
     {
       continue;
     }
-    // a regular point at least minLength from every other singularity and from the boundary, at
-    // most 4 minLength away
-    others = besideBoundary;
+    // a regular point at least minLength from every other singularity and fromBoundary from the
+    // boundary, at most 4 minLength away
+    others.clear();
     for (int v = 0; v < nv; ++v)
     {
       if (o.q[v] != 0 && v != a)
@@ -553,6 +576,10 @@ int moveCloseQuartersApart(const Eigen::MatrixX3i& F, const MeshTopology& topo,
       }
     }
     spreadLengths(o.steps, geometry, minLength, others, near);
+    for (int v = 0; v < nv; ++v)
+    {
+      near[v] = toBoundary[v] < fromBoundary ? 0.0 : near[v];
+    }
     const int delta = -o.q[a];
     const int target =
       findSplitTarget(o, a, 1, minLength, anyHops, near, pathHops, pathLength, delta);

@@ -104,8 +104,9 @@ constexpr double SmoothSideFraction = 0.15;
  * in networks (sharp edges joined through shared points) of at least minimumLength edges of which
  * at least half have smooth sides (SmoothSideFraction). Isolated sharp edges are noise; so is a
  * network whose sides bend as much as it does, as where a smooth surface is sampled coarsely (a
- * decimated scan, a thin tube of few triangles around), while a crease of a CAD part, even a
- * faceted one, has flat or gently curved sides.
+ * decimated scan, an irregularly triangulated thin tube), while a crease of a CAD part, even a
+ * faceted one, has flat or gently curved sides (so has a regularly triangulated tube of few
+ * sides: a faceted prism, whose creases stay).
  * @return #E, 1 on a sharp edge
  */
 std::vector<char> sharpEdges(const MeshTopology& topo, const FaceBases& bases, double featureAngle,

@@ -27,7 +27,9 @@ struct SmootherOptions
   bool alignToFeatures = true;
   double featureAngle = 60.0;
   /// Sharp edges count only in chains of at least this many edges joined end to end, so
-  /// isolated sharp edges (noise) do not pin frames.
+  /// isolated sharp edges (noise) do not pin frames, and only where at least half of a chain's
+  /// edges have smooth sides (sharpEdges, SmoothSideFraction), so that the sharp edges of a
+  /// coarsely sampled smooth surface pin nothing either.
   int minimumFeatureLength = 3;
   /// Hold the frames of triangles along the boundary aligned to it.
   bool alignToBoundary = true;

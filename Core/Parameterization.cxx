@@ -269,11 +269,11 @@ int addConePairsForEvenScale(const Inputs& in, const FrameTopology& given, doubl
 /// cancelled (cancelClosePairs): no grid can put both on grid points without stretching the
 /// quads between them (armadillo's smoothest field at 1,000 quads: 180 singularities, dozens of
 /// pairs within a grid edge, and a map that folds). Then quarters closer than a third of the
-/// separation to one of the same index move apart, to the separation (moveCloseQuartersApart),
-/// their number in `moved`. The frames within a few grid edges of the changed edges turn to
-/// agree with the new matchings (fitFramesToMatchings), the rest held. `given` is the field of in's
-/// matchings (evaluateField). Returns the pairs cancelled; frameU and matching are set when any
-/// changed.
+/// separation to one of the same index, or closer than a grid edge to the boundary, move apart,
+/// to the separation (moveCloseQuartersApart), their number in `moved`. The frames within a few
+/// grid edges of the changed edges turn to agree with the new matchings (fitFramesToMatchings), the
+/// rest held. `given` is the field of in's matchings (evaluateField). Returns the pairs cancelled;
+/// frameU and matching are set when any changed.
 int settleSingularitiesCloserThanGrid(const Inputs& in, const FrameTopology& given,
   double edgeLength, Eigen::MatrixX3d& frameU, Eigen::MatrixX3i& matching, int& moved)
 {

@@ -58,12 +58,12 @@ struct ParameterizationOptions
   bool alignToBoundary = SmootherOptions().alignToBoundary;
   /// The same concept as BranchPointOptions::boundaryTolerance, and its default.
   double boundaryTolerance = BranchPointOptions().boundaryTolerance;
-  /// Sharp edges (featureAngle, in chains of minimumFeatureLength, on crease networks at least
-  /// four grid edges long) along a frame direction in both their triangles (within
-  /// boundaryTolerance degrees) lie on an integer grid line, as boundary edges do, so that quad
-  /// edges run along the creases and quad vertices sit on them (fandisk at 6,500 quads: 33% of its
-  /// crease points kept, 80% with it). Off by default: on scans it puts noisy sharp edges on lines
-  /// at a cost in time and evenness (cheburashka: 300 times the untangling, 0.5 -> 1.8 s).
+  /// Sharp edges (sharpEdges: featureAngle, in chains of minimumFeatureLength with smooth sides, on
+  /// crease networks at least four grid edges long) along a frame direction in both their triangles
+  /// (within boundaryTolerance degrees) lie on an integer grid line, as boundary edges do, so that
+  /// quad edges run along the creases and quad vertices sit on them (fandisk at 6,500 quads: 33% of
+  /// its crease points kept, 80% with it). Off by default: on scans it puts noisy sharp edges on
+  /// lines at a cost in time and evenness (cheburashka: 300 times the untangling, 0.5 -> 1.8 s).
   bool featureLines = false;
   /// The same concepts as SmootherOptions::featureAngle and minimumFeatureLength, and their
   /// defaults.
