@@ -53,22 +53,18 @@ void spreadHops(const Steps& steps, int limit, std::vector<int> front, std::vect
   }
 }
 
-/// Length of the shortest edge path from the points in front (0 there, or start[i] for front[i]
-/// where start is given), spread while shorter than `limit`; the points beyond get infinity.
+/// Length of the shortest edge path from the points in front (0 there), spread while shorter
+/// than `limit`; the points beyond get infinity.
 void spreadLengths(const Steps& steps, const FrameGeometry& geometry, double limit,
-  const std::vector<int>& front, std::vector<double>& length, const std::vector<double>& start = {})
+  const std::vector<int>& front, std::vector<double>& length)
 {
   std::fill(length.begin(), length.end(), std::numeric_limits<double>::infinity());
   using Item = std::pair<double, int>;
   std::priority_queue<Item, std::vector<Item>, std::greater<Item>> queue;
-  for (std::size_t i = 0; i < front.size(); ++i)
+  for (const int v : front)
   {
-    const double d = start.empty() ? 0.0 : start[i];
-    if (d < length[front[i]])
-    {
-      length[front[i]] = d;
-      queue.push({ d, front[i] });
-    }
+    length[v] = 0.0;
+    queue.push({ 0.0, v });
   }
   while (!queue.empty())
   {
@@ -469,38 +465,31 @@ int cancelClosePairs(const Eigen::MatrixX3i& F, const MeshTopology& topo,
 
 namespace
 {
-/// Per point, the length of the shortest edge path to the boundary, spread while shorter than
-/// `limit` (infinity beyond): the paths' steps join inner points only, so each inner point
-/// beside the boundary starts at its shortest edge to it.
-std::vector<double> boundaryLengths(
+/// Per point, the length of the shortest edge path from the inner points beside the boundary
+/// (those joined to a boundary point by an edge; the paths' steps join inner points only),
+/// spread while shorter than `limit` (infinity beyond).
+std::vector<double> besideBoundaryLengths(
   const MeshTopology& topo, const FrameGeometry& geometry, const Steps& steps, double limit)
 {
-  std::vector<double> start(topo.numVertices, std::numeric_limits<double>::infinity());
-  for (int f = 0; f < static_cast<int>(topo.faceEdges.rows()); ++f)
+  std::vector<char> beside(topo.numVertices, 0);
+  for (int e = 0; e < topo.numEdges(); ++e)
   {
-    for (int k = 0; k < 3; ++k)
+    const int a = topo.edges(e, 0), b = topo.edges(e, 1);
+    if (topo.boundaryVertex[a] != topo.boundaryVertex[b])
     {
-      const int e = topo.faceEdges(f, k);
-      const int a = e >= 0 ? topo.edges(e, 0) : 0, b = e >= 0 ? topo.edges(e, 1) : 0;
-      if (e >= 0 && topo.boundaryVertex[a] != topo.boundaryVertex[b])
-      {
-        const int inner = topo.boundaryVertex[a] ? b : a;
-        start[inner] = std::min(start[inner], geometry.edgeLength(f, k));
-      }
+      beside[topo.boundaryVertex[a] ? b : a] = 1;
     }
   }
   std::vector<int> front;
-  std::vector<double> lengths;
   for (int v = 0; v < topo.numVertices; ++v)
   {
-    if (start[v] < limit)
+    if (beside[v])
     {
       front.push_back(v);
-      lengths.push_back(start[v]);
     }
   }
   std::vector<double> length(topo.numVertices);
-  spreadLengths(steps, geometry, limit, front, length, lengths);
+  spreadLengths(steps, geometry, limit, front, length);
   return length;
 }
 }
@@ -511,7 +500,7 @@ int moveCloseQuartersApart(const Eigen::MatrixX3i& F, const MeshTopology& topo,
 {
   changedFaces.assign(F.rows(), 0);
   const bool boundary = boundaryCloserThan > 0;
-  if (!(closerThan > 0) || !(minLength > 0) || topology.singularities < (boundary ? 1 : 2) ||
+  if (!(closerThan > 0) || !(minLength > 0) || topology.singularities < 2 ||
     geometry.edgeLength.rows() == 0)
   {
     return 0;
@@ -531,9 +520,10 @@ int moveCloseQuartersApart(const Eigen::MatrixX3i& F, const MeshTopology& topo,
       quarters.push_back(a);
     }
   }
-  // the boundary, which moved quarters keep the larger of minLength and boundaryCloserThan from
-  const double fromBoundary = std::max(minLength, boundaryCloserThan);
-  const std::vector<double> toBoundary = boundaryLengths(topo, geometry, o.steps, fromBoundary);
+  // the inner points beside the boundary: a quarter closer than boundaryCloserThan to them moves,
+  // and a moved quarter keeps minLength from them (a mesh edge more from the boundary)
+  const std::vector<double> toBoundary =
+    besideBoundaryLengths(topo, geometry, o.steps, std::max(minLength, boundaryCloserThan));
   int moved = 0;
   for (const int a : quarters)
   {
@@ -565,8 +555,8 @@ int moveCloseQuartersApart(const Eigen::MatrixX3i& F, const MeshTopology& topo,
     {
       continue;
     }
-    // a regular point at least minLength from every other singularity and fromBoundary from the
-    // boundary, at most 4 minLength away
+    // a regular point at least minLength from every other singularity and from the inner points
+    // beside the boundary, at most 4 minLength away
     others.clear();
     for (int v = 0; v < nv; ++v)
     {
@@ -578,7 +568,7 @@ int moveCloseQuartersApart(const Eigen::MatrixX3i& F, const MeshTopology& topo,
     spreadLengths(o.steps, geometry, minLength, others, near);
     for (int v = 0; v < nv; ++v)
     {
-      near[v] = toBoundary[v] < fromBoundary ? 0.0 : near[v];
+      near[v] = std::min(near[v], toBoundary[v]);
     }
     const int delta = -o.q[a];
     const int target =

@@ -175,11 +175,12 @@ int cancelClosePairs(const Eigen::MatrixX3i& F, const MeshTopology& topo,
 
 /**
  * Moves inner quarter singularities that lie closer than `closerThan` (along edge paths) to one
- * of the same index, or closer than `boundaryCloserThan` to the boundary (0: never), apart: each
- * such quarter goes along the cheapest path over regular points to one at least minLength from
- * every other singularity and from the boundary, at most 4 minLength away (no grid can put
- * two singularities much less than one of its edges apart on grid points; three +1/4 within half
- * a grid edge of each other on cheburashka at 3,000 quads left triangles flipped, while the
+ * of the same index, or closer than `boundaryCloserThan` to the inner points beside the boundary
+ * (joined to it by an edge; 0: never), apart: each such quarter goes along the cheapest path over
+ * regular points to one at least minLength from every other singularity and from the inner
+ * points beside the boundary (whatever boundaryCloserThan), at most 4 minLength away (no grid can
+ * put two singularities much less than one of its edges apart on grid points; three +1/4 within
+ * half a grid edge of each other on cheburashka at 3,000 quads left triangles flipped, while the
  * corners of a plate thinner than a grid edge, 0.8 of one apart, stay best where they are; a
  * -1/4 one triangle from the teapot's spout opening, with the boundary on grid lines through its
  * grid point, left a triangle collapsed onto that point at most densities).
