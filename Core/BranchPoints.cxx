@@ -531,10 +531,10 @@ int moveCloseQuartersApart(const Eigen::MatrixX3i& F, const MeshTopology& topo,
     {
       continue;
     }
-    // closer than boundaryCloserThan to the boundary, or to another singularity of the same sign
-    // within closerThan; most quarters have none, which a search from the quarter itself tells
-    // at the cost of its neighbourhood (with a margin far above the rounding of the sums, so that
-    // the spread below decides the rest)
+    // closer than boundaryCloserThan to the inner points beside the boundary, or to another
+    // singularity of the same sign within closerThan; most quarters have none, which a search from
+    // the quarter itself tells at the cost of its neighbourhood (with a margin far above the
+    // rounding of the sums, so that the spread below decides the rest)
     const bool byBoundary = boundary && toBoundary[a] < boundaryCloserThan;
     if (!byBoundary && !sameSignWithin(o, a, closerThan * (1.0 + 1e-9)))
     {
