@@ -499,7 +499,6 @@ int moveCloseQuartersApart(const Eigen::MatrixX3i& F, const MeshTopology& topo,
   double closerThan, double minLength, double boundaryCloserThan, std::vector<char>& changedFaces)
 {
   changedFaces.assign(F.rows(), 0);
-  const bool boundary = boundaryCloserThan > 0;
   if (!(closerThan > 0) || !(minLength > 0) || topology.singularities < 2 ||
     geometry.edgeLength.rows() == 0)
   {
@@ -535,7 +534,7 @@ int moveCloseQuartersApart(const Eigen::MatrixX3i& F, const MeshTopology& topo,
     // singularity of the same sign within closerThan; most quarters have none, which a search from
     // the quarter itself tells at the cost of its neighbourhood (with a margin far above the
     // rounding of the sums, so that the spread below decides the rest)
-    const bool byBoundary = boundary && toBoundary[a] < boundaryCloserThan;
+    const bool byBoundary = toBoundary[a] < boundaryCloserThan; // never when it is 0
     if (!byBoundary && !sameSignWithin(o, a, closerThan * (1.0 + 1e-9)))
     {
       continue;
