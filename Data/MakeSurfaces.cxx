@@ -64,7 +64,11 @@ int main(int argc, char* argv[])
     { "plate.obj", quadcover::makeThinPlate(2.0, 1.0, 0.02, 0.025),
       "a box 2 x 1 x 0.02 with sharp edges (a part thinner than the quads)" },
     { "bracket.obj", quadcover::makeBracket(0.05),
-      "a square frame with a hole, a wall and a tab, sharp right-angle creases (CAD-like, genus 1)" },
+      "a square frame with a hole, a wall and a tab, sharp right-angle creases (CAD-like, genus "
+      "1)" },
+    { "shaft.obj", quadcover::makeSteppedShaft(0.04),
+      "a turned shaft of three steps, radii 1, 0.7, 0.4: creases on circles, annular steps "
+      "(CAD-like, curved creases)" },
   };
   for (const Item& item : items)
   {

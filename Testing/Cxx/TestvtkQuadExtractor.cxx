@@ -333,7 +333,7 @@ TEST_P(QuadsOn, ManifoldAllQuadMeshWithTheInputsTopology)
 
 INSTANTIATE_TEST_SUITE_P(Surfaces, QuadsOn,
   ::testing::Values("sphere", "torus", "knot", "cylinder", "roundedcube", "bunny-lowres", "spot",
-    "fandisk", "rocker-arm", "cheburashka", "teapot", "lion", "plate", "bracket"));
+    "fandisk", "rocker-arm", "cheburashka", "teapot", "lion", "plate", "bracket", "shaft"));
 
 TEST(vtkQuadExtractor, NoQuadFacesAgainstACoarseInput)
 {

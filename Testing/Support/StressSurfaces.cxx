@@ -1,7 +1,9 @@
 // StressSurfaces.cxx: the generated surfaces that stress the remesher where real inputs do: a
-// tube whose width varies six-fold, parts thinner than a quad, CAD-like blocks with sharp creases.
+// tube whose width varies six-fold, parts thinner than a quad, CAD-like blocks with sharp creases,
+// turned parts whose creases are circles.
 #include "Surfaces.h"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <map>
@@ -173,4 +175,119 @@ Surface makeBracket(double edge)
   return s;
 }
 
+namespace
+{
+/// Triangles between two rings of points spread evenly around z from angle 0 (a ring of one point
+/// is a pole), in the profile's order: a before b.
+void zipRings(
+  const std::vector<int>& a, const std::vector<int>& b, std::vector<Eigen::Vector3i>& faces)
+{
+  const int na = static_cast<int>(a.size()), nb = static_cast<int>(b.size());
+  if (na == 1 || nb == 1)
+  {
+    const bool poleFirst = na == 1;
+    const std::vector<int>& ring = poleFirst ? b : a;
+    const int pole = poleFirst ? a[0] : b[0];
+    const int n = static_cast<int>(ring.size());
+    for (int i = 0; i < n; ++i)
+    {
+      if (poleFirst)
+      {
+        faces.emplace_back(pole, ring[(i + 1) % n], ring[i]);
+      }
+      else
+      {
+        faces.emplace_back(ring[i], ring[(i + 1) % n], pole);
+      }
+    }
+    return;
+  }
+  int i = 0, j = 0;
+  while (i < na || j < nb)
+  {
+    // the next point around: a's (i + 1) / na against b's (j + 1) / nb, in exact integers
+    const bool advanceA =
+      i < na && (j == nb || (i + 1) * static_cast<long>(nb) <= (j + 1) * static_cast<long>(na));
+    if (advanceA)
+    {
+      faces.emplace_back(a[i], a[(i + 1) % na], b[j % nb]);
+      ++i;
+    }
+    else
+    {
+      faces.emplace_back(a[i % na], b[(j + 1) % nb], b[j]);
+      ++j;
+    }
+  }
+}
+}
+
+Surface makeTurnedPart(const std::vector<Eigen::Vector2d>& profile, double edge)
+{
+  const int np = static_cast<int>(profile.size());
+  bool valid = np >= 3 && edge > 0 && profile.front().x() == 0.0 && profile.back().x() == 0.0;
+  for (int k = 1; valid && k + 1 < np; ++k)
+  {
+    valid = profile[k].x() > 0.0 && (profile[k] - profile[k - 1]).norm() > 0.0;
+  }
+  if (!valid)
+  {
+    throw std::invalid_argument(
+      "makeTurnedPart: need 3 or more distinct profile points, r = 0 at the ends only, edge > 0");
+  }
+  // the points along the profile: every profile point, and about `edge` apart between them
+  std::vector<Eigen::Vector2d> along;
+  for (int k = 0; k + 1 < np; ++k)
+  {
+    const Eigen::Vector2d d = profile[k + 1] - profile[k];
+    const int steps = std::max(1, static_cast<int>(std::lround(d.norm() / edge)));
+    for (int t = 0; t < steps; ++t)
+    {
+      along.push_back(profile[k] + d * (static_cast<double>(t) / steps));
+    }
+  }
+  along.push_back(profile.back());
+  Surface s;
+  s.name = "turned part";
+  std::vector<Eigen::Vector3d> points;
+  std::vector<Eigen::Vector3i> faces;
+  std::vector<int> last;
+  for (const Eigen::Vector2d& p : along)
+  {
+    const int n =
+      p.x() > 0.0 ? std::max(8, static_cast<int>(std::lround(2.0 * Pi * p.x() / edge))) : 1;
+    std::vector<int> ring(n);
+    for (int i = 0; i < n; ++i)
+    {
+      const double a = 2.0 * Pi * i / n;
+      ring[i] = static_cast<int>(points.size());
+      points.emplace_back(p.x() * std::cos(a), p.x() * std::sin(a), p.y());
+    }
+    if (!last.empty())
+    {
+      zipRings(last, ring, faces);
+    }
+    last.swap(ring);
+  }
+  s.V.resize(static_cast<Eigen::Index>(points.size()), 3);
+  for (std::size_t v = 0; v < points.size(); ++v)
+  {
+    s.V.row(static_cast<Eigen::Index>(v)) = points[v].transpose();
+  }
+  s.F.resize(static_cast<Eigen::Index>(faces.size()), 3);
+  for (std::size_t f = 0; f < faces.size(); ++f)
+  {
+    s.F.row(static_cast<Eigen::Index>(f)) = faces[f].transpose();
+  }
+  return s;
+}
+
+Surface makeSteppedShaft(double edge)
+{
+  Surface s = makeTurnedPart({ { 0.0, 0.0 }, { 1.0, 0.0 }, { 1.0, 0.5 }, { 0.7, 0.5 }, { 0.7, 1.0 },
+                               { 0.4, 1.0 }, { 0.4, 1.6 }, { 0.0, 1.6 } },
+    edge);
+  s.name = "stepped shaft";
+  return s;
+}
 }

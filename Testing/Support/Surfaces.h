@@ -72,6 +72,15 @@ Surface makeThinPlate(double width, double depth, double thickness, double edge)
 /// A square frame with a hole, a wall along one side and a tab on it (makeBlocks; genus 1).
 Surface makeBracket(double edge);
 
+/// A turned part: the closed surface of revolution around z of a profile of points (r, z) from
+/// the axis back to the axis (r = 0 at the first and last point only), sharp at every point of
+/// the profile, so that its creases are circles and its flat steps annuli (curved creases, as on
+/// a CAD part's turned features). Rings about `edge` apart along the profile, each of about
+/// 2 pi r / edge points (at least 8), neighbouring rings zipped by angle.
+Surface makeTurnedPart(const std::vector<Eigen::Vector2d>& profile, double edge);
+
+/// A shaft of three steps (radii 1, 0.7, 0.4; makeTurnedPart).
+Surface makeSteppedShaft(double edge);
 }
 
 #endif
