@@ -200,6 +200,8 @@ constexpr const char* SplitQuadVertices = "SplitQuadVertices";
 /// field, 1 x int: quads removed as fragments of a component's quads (a quad or two that touched
 /// the rest of their component's quads, four times as many or more, at a corner only).
 constexpr const char* FragmentQuads = "FragmentQuads";
+/// field, 1 x int: quad vertices moved onto a sharp edge of the input (SnapToCreases).
+constexpr const char* SnappedVertices = "SnappedVertices";
 }
 
 #endif

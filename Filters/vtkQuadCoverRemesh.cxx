@@ -88,6 +88,7 @@ void vtkQuadCoverRemesh::SetFeatureAngle(double degrees)
 {
   this->Smoother->SetFeatureAngle(degrees);
   this->Solver->SetFeatureAngle(degrees);
+  this->Extractor->SetFeatureAngle(degrees);
 }
 double vtkQuadCoverRemesh::GetFeatureAngle()
 {

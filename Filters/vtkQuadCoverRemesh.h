@@ -8,8 +8,8 @@
  *
  * The properties are the command line's main options and set the stages that use them:
  * TargetQuadCount or TargetEdgeLength (the solver), FeatureLines (the solver), FeatureAngle (the
- * smoother and the solver), NumberOfThreads (the curvature estimate, the smoother and the
- * solver). Every other option is reached through the stage itself, e.g.
+ * smoother, the solver and the quad extractor), NumberOfThreads (the curvature estimate, the
+ * smoother and the solver). Every other option is reached through the stage itself, e.g.
  * GetFrameSmoother()->SetSmoothingWeight(1); a change there re-runs the chain (GetMTime includes
  * the stages').
  *

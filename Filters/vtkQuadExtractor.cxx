@@ -114,6 +114,7 @@ void AddFigures(vtkFieldData* fd, const quadcover::QuadMeshResult& r)
     fd, names::TurnedQuads, { double(r.turnedExtracted), double(r.turnedQuads) });
   AddField<vtkIntArray>(fd, names::SplitQuadVertices, { double(r.splitVertices) });
   AddField<vtkIntArray>(fd, names::FragmentQuads, { double(r.fragmentQuads) });
+  AddField<vtkIntArray>(fd, names::SnappedVertices, { double(r.snappedVertices) });
 }
 
 /// Field data HausdorffDistance: two-sided, surface to quads, quads to surface, in % of the
@@ -143,6 +144,9 @@ vtkQuadExtractor::vtkQuadExtractor()
   this->RelaxationIterations = defaults.relaxationIterations;
   this->RepairInvertedQuads = defaults.repairInvertedQuads;
   this->FillHoles = defaults.fillHoles;
+  this->SnapToCreases = defaults.snapToCreases;
+  this->FeatureAngle = defaults.featureAngle;
+  this->MinimumFeatureLength = defaults.minimumFeatureLength;
   this->SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_CELLS, names::CornerUV);
 }
 
@@ -167,6 +171,9 @@ void vtkQuadExtractor::Execute(vtkQuadCoverSurface& in, vtkInformationVector* ou
   options.repairInvertedQuads = this->RepairInvertedQuads;
   options.fillHoles = this->FillHoles;
   options.relaxationIterations = this->RelaxationIterations;
+  options.snapToCreases = this->SnapToCreases;
+  options.featureAngle = this->FeatureAngle;
+  options.minimumFeatureLength = this->MinimumFeatureLength;
   const quadcover::QuadMeshResult r = quadcover::buildQuadMesh(
     in.V, in.F, in.topo, uv, options, vtkQuadCoverEigen::CoreProgress(this, 0.1, 0.7));
   const quadcover::QuadMesh& quads = r.mesh;
@@ -218,6 +225,9 @@ void vtkQuadExtractor::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "RelaxationIterations: " << this->RelaxationIterations << "\n";
   os << indent << "RepairInvertedQuads: " << (this->RepairInvertedQuads ? "On" : "Off") << "\n";
   os << indent << "FillHoles: " << (this->FillHoles ? "On" : "Off") << "\n";
+  os << indent << "SnapToCreases: " << (this->SnapToCreases ? "On" : "Off") << "\n";
+  os << indent << "FeatureAngle: " << this->FeatureAngle << "\n";
+  os << indent << "MinimumFeatureLength: " << this->MinimumFeatureLength << "\n";
   os << indent << "ComputeHausdorffDistance: " << (this->ComputeHausdorffDistance ? "On" : "Off")
      << "\n";
 }

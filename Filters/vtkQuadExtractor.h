@@ -80,6 +80,34 @@ public:
   ///@}
 
   ///@{
+  /** Move the quad vertices beside the input's sharp edges onto them before the relaxation
+   * (default on; quadcover::snapToCreases), so that quad edges follow the creases: where a quad
+   * edge crosses a sharp edge, its end nearer the crease moves to the closest point of it. The
+   * frames are held along the sharp edges, so the map's grid lines run beside them and the ends
+   * moved form rows of quad edges on the creases; the quads beside a crease grow or shrink by the
+   * grid line's distance from it (at most half a quad). A move that turns a quad against the
+   * input or leaves it a corner's scaled Jacobian below 0.05 is undone. SnappedVertices counts
+   * the vertices moved. Sharp: as vtkFrameSmoother's, FeatureAngle and MinimumFeatureLength. */
+  vtkSetMacro(SnapToCreases, bool);
+  vtkGetMacro(SnapToCreases, bool);
+  vtkBooleanMacro(SnapToCreases, bool);
+  ///@}
+
+  ///@{
+  /** Sharp edges for SnapToCreases: the normals more than this many degrees apart, in [0, 180]
+   * (default 60), whose sides are smooth; the same as vtkFrameSmoother's FeatureAngle. */
+  vtkSetClampMacro(FeatureAngle, double, 0.0, 180.0);
+  vtkGetMacro(FeatureAngle, double);
+  ///@}
+
+  ///@{
+  /** Sharp edges count for SnapToCreases only in chains of at least this many, in [1, 10000]
+   * (default 3); the same as vtkFrameSmoother's MinimumFeatureLength. */
+  vtkSetClampMacro(MinimumFeatureLength, int, 1, 10000);
+  vtkGetMacro(MinimumFeatureLength, int);
+  ///@}
+
+  ///@{
   /** Sweeps of tangential relaxation after extraction, in [0, 1000] (default 3; 0: the quads as
    * the map cuts them). Each free vertex moves halfway towards the area-weighted mean of its
    * quads' centres, in the input's tangent plane, and back onto the input surface; vertices on
@@ -106,6 +134,9 @@ protected:
   int RelaxationIterations;
   bool RepairInvertedQuads;
   bool FillHoles;
+  bool SnapToCreases;
+  double FeatureAngle;
+  int MinimumFeatureLength;
 
 private:
   vtkQuadExtractor(const vtkQuadExtractor&) = delete;

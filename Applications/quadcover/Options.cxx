@@ -56,7 +56,7 @@ Option Ranged(Option o, double low, double high)
 
 // Each option is bound by the property's own name, so its flag, its setter, its range and its
 // default cannot drift apart. Options of two filters (one concept both need) set both and take
-// the first one's range; their value is NaN while the two filters disagree.
+// the first one's range; their value is NaN while the filters disagree (three: the same).
 #define QC_KIND(f, Property)                                                                       \
   (std::is_same<decltype(f->Get##Property()), bool>::value                                         \
       ? Option::Kind::Switch                                                                       \
@@ -89,6 +89,21 @@ Option Ranged(Option o, double low, double high)
            [f, g](double x) {                                                                      \
              QC_SET(f, Property, x);                                                               \
              QC_SET(g, Property, x);                                                               \
+           }),                                                                                     \
+    double(f->Get##Property##MinValue()), double(f->Get##Property##MaxValue()))
+#define QC_NUMBER3(stage, f, g, h, Property, meaning)                                              \
+  Ranged(Bind(                                                                                     \
+           stage, #Property, meaning, QC_KIND(f, Property),                                        \
+           [f, g, h]() {                                                                           \
+             return f->Get##Property() == g->Get##Property() &&                                    \
+                 f->Get##Property() == h->Get##Property()                                          \
+               ? double(f->Get##Property())                                                        \
+               : std::numeric_limits<double>::quiet_NaN();                                         \
+           },                                                                                      \
+           [f, g, h](double x) {                                                                   \
+             QC_SET(f, Property, x);                                                               \
+             QC_SET(g, Property, x);                                                               \
+             QC_SET(h, Property, x);                                                               \
            }),                                                                                     \
     double(f->Get##Property##MinValue()), double(f->Get##Property##MaxValue()))
 
@@ -327,9 +342,10 @@ std::vector<Option> StageOptions(Pipeline& p)
     QC_NUMBER("smooth", smoother, MaximumNumberOfIterations, "iterations at most per run"),
     QC_NUMBER("smooth", smoother, ConvergenceTolerance,
       "stop when an iteration lowers the energy by less than this fraction"),
-    QC_NUMBER2("smooth", smoother, solver, FeatureAngle,
-      "edges sharper than this (degrees) are features (held frames, feature lines)"),
-    QC_NUMBER2("smooth", smoother, solver, MinimumFeatureLength,
+    QC_NUMBER3("smooth", smoother, solver, extractor, FeatureAngle,
+      "edges sharper than this (degrees) are features (held frames, feature lines, quad vertices "
+      "snapped onto them)"),
+    QC_NUMBER3("smooth", smoother, solver, extractor, MinimumFeatureLength,
       "shortest chain of sharp edges that is a feature"),
     QC_SWITCH("smooth", smoother, AlignToFeatures, "hold frames along sharp edges"),
     QC_SWITCH2("smooth", smoother, solver, AlignToBoundary,
@@ -394,6 +410,8 @@ std::vector<Option> StageOptions(Pipeline& p)
       "move the corners of quads turned inside out or facing against the input"),
     QC_SWITCH(
       "quads", extractor, FillHoles, "fill holes the map leaves inside the surface with quads"),
+    QC_SWITCH("quads", extractor, SnapToCreases,
+      "move the quad vertices beside sharp edges onto them, so that quad edges follow creases"),
     QC_NUMBER(
       "quads", extractor, RelaxationIterations, "sweeps of tangential relaxation of all quads"),
     QC_SWITCH(

@@ -85,8 +85,10 @@ class Contract(unittest.TestCase):
     def test_options_of_two_filters_start_alike(self):
         for prop, classes in {"AlignToBoundary": ("vtkFrameSmoother", "vtkQuadCoverSolver"),
                               "BoundaryTolerance": ("vtkMatchingBuilder", "vtkQuadCoverSolver"),
-                              "FeatureAngle": ("vtkFrameSmoother", "vtkQuadCoverSolver"),
-                              "MinimumFeatureLength": ("vtkFrameSmoother", "vtkQuadCoverSolver")
+                              "FeatureAngle": ("vtkFrameSmoother", "vtkQuadCoverSolver",
+                                               "vtkQuadExtractor"),
+                              "MinimumFeatureLength": ("vtkFrameSmoother", "vtkQuadCoverSolver",
+                                                       "vtkQuadExtractor")
                               }.items():
             values = {getattr(getattr(quadcover, c)(), "Get" + prop)() for c in classes}
             self.assertEqual(len(values), 1, prop)

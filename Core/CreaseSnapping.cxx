@@ -1,0 +1,335 @@
+// CreaseSnapping.cxx: snapToCreases.
+#include "CreaseSnapping.h"
+
+#include "QuadFacing.h"
+#include "QuadMeshAdjacency.h"
+
+#include <Eigen/Geometry>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <vector>
+
+namespace quadcover
+{
+namespace
+{
+/// The closest point of a crease to a quad vertex: on edge e at e's start + t (end - start).
+struct CreasePoint
+{
+  double distance = std::numeric_limits<double>::infinity();
+  int edge = -1;
+  double t = 0.0;
+};
+
+class Snapper
+{
+public:
+  Snapper(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F, const MeshTopology& topo,
+    const std::vector<char>& sharp, const SurfaceLocator& surface, QuadMesh& mesh)
+    : V_(V)
+    , F_(F)
+    , topo_(topo)
+    , sharp_(sharp)
+    , surface_(surface)
+    , mesh_(mesh)
+    , visited_(F.rows(), 0)
+  {
+    meanEdge_ = meanQuadEdge();
+    findReach();
+  }
+
+  /// Each quad edge whose ends lie on the two sides of the crease nearest to its nearer end
+  /// moves that end onto it (where a vertex has several, the closest).
+  std::vector<int> run()
+  {
+    const int nV = static_cast<int>(mesh_.V.rows());
+    std::vector<CreasePoint> closest(nV), target(nV);
+    for (int v = 0; v < nV; ++v)
+    {
+      if (!liesOnCrease(v))
+      {
+        closest[v] = closestCrease(v);
+      }
+    }
+    for (int i = 0; i < static_cast<int>(mesh_.Q.rows()); ++i)
+    {
+      for (int k = 0; k < 4; ++k)
+      {
+        const int a = mesh_.Q(i, k), b = mesh_.Q(i, (k + 1) % 4);
+        if (closest[a].edge < 0 || closest[b].edge < 0)
+        {
+          continue;
+        }
+        const int near = closest[a].distance <= closest[b].distance ? a : b;
+        const CreasePoint& p = closest[near];
+        if (side(a, p) != side(b, p))
+        {
+          if (p.distance < target[near].distance)
+          {
+            target[near] = p;
+          }
+        }
+      }
+    }
+    return apply(target);
+  }
+
+private:
+  /// Which of the two triangles of p's crease edge quad vertex v lies towards (0 or 1): the one
+  /// whose direction into it from the edge (in its plane, across the edge) v is further along.
+  int side(int v, const CreasePoint& p) const
+  {
+    const int e = p.edge;
+    if (topo_.edgeFaceCount[e] != 2)
+    {
+      return 0;
+    }
+    const Eigen::Vector3d a = V_.row(topo_.edges(e, 0)), b = V_.row(topo_.edges(e, 1));
+    const Eigen::Vector3d c = a + p.t * (b - a);
+    const Eigen::Vector3d x = Eigen::Vector3d(mesh_.V.row(v)) - c;
+    double along[2];
+    for (int i = 0; i < 2; ++i)
+    {
+      const int f = topo_.edgeFaces(e, i);
+      Eigen::Vector3d centre = Eigen::Vector3d::Zero();
+      for (int k = 0; k < 3; ++k)
+      {
+        centre += V_.row(F_(f, k)).transpose() / 3.0;
+      }
+      Eigen::Vector3d inward = centre - a;
+      const Eigen::Vector3d t = (b - a).normalized();
+      inward -= inward.dot(t) * t;
+      along[i] = inward.norm() > 0 ? x.dot(inward.normalized()) : 0.0;
+    }
+    return along[1] > along[0] ? 1 : 0;
+  }
+
+  double meanQuadEdge() const
+  {
+    double sum = 0.0;
+    for (int i = 0; i < static_cast<int>(mesh_.Q.rows()); ++i)
+    {
+      for (int k = 0; k < 4; ++k)
+      {
+        sum += (mesh_.V.row(mesh_.Q(i, k)) - mesh_.V.row(mesh_.Q(i, (k + 1) % 4))).norm();
+      }
+    }
+    return mesh_.Q.rows() > 0 ? sum / (4.0 * mesh_.Q.rows()) : 0.0;
+  }
+
+  /// Per vertex, its longest quad edge (at most 3 mean edges): how far a crease its edges cross
+  /// can be from it.
+  void findReach()
+  {
+    reach_.assign(mesh_.V.rows(), 0.0);
+    for (int i = 0; i < static_cast<int>(mesh_.Q.rows()); ++i)
+    {
+      for (int k = 0; k < 4; ++k)
+      {
+        const int a = mesh_.Q(i, k), b = mesh_.Q(i, (k + 1) % 4);
+        const double length = std::min((mesh_.V.row(a) - mesh_.V.row(b)).norm(), 3.0 * meanEdge_);
+        reach_[a] = std::max(reach_[a], length);
+        reach_[b] = std::max(reach_[b], length);
+      }
+    }
+  }
+
+  /// Is v on a sharp edge: its input point an end of one, or on a sharp edge of its triangle?
+  bool liesOnCrease(int v) const
+  {
+    const int f = mesh_.vertexTriangle[v];
+    const Eigen::Vector3d p = mesh_.V.row(v);
+    for (int k = 0; k < 3; ++k)
+    {
+      const int e = topo_.faceEdges(f, k);
+      if (!sharp_[e])
+      {
+        continue;
+      }
+      const Eigen::Vector3d a = V_.row(F_(f, k)), b = V_.row(F_(f, (k + 1) % 3));
+      const double length = (b - a).norm();
+      if (mesh_.vertexPoint[v] == F_(f, k) || mesh_.vertexPoint[v] == F_(f, (k + 1) % 3) ||
+        (length > 0 && (p - a).cross(b - a).norm() <= 1e-6 * length * length))
+      {
+        return true;
+      }
+    }
+    return false;
+  }
+
+  /// The closest point of a sharp edge within v's reach (its longest quad edge): a walk over the
+  /// triangles near v (within that distance of their bounding spheres), across any edge.
+  CreasePoint closestCrease(int v)
+  {
+    const Eigen::Vector3d p = mesh_.V.row(v);
+    CreasePoint best;
+    std::vector<int> stack{ mesh_.vertexTriangle[v] }, seen;
+    visited_[stack.back()] = 1;
+    seen.push_back(stack.back());
+    while (!stack.empty())
+    {
+      const int f = stack.back();
+      stack.pop_back();
+      for (int k = 0; k < 3; ++k)
+      {
+        const int e = topo_.faceEdges(f, k);
+        if (sharp_[e])
+        {
+          closestOnEdge(p, e, best);
+        }
+        const int g = topo_.faceNeighbors(f, k);
+        if (g >= 0 && !visited_[g] && near(p, g, reach_[v]))
+        {
+          visited_[g] = 1;
+          seen.push_back(g);
+          stack.push_back(g);
+        }
+      }
+    }
+    for (const int f : seen)
+    {
+      visited_[f] = 0;
+    }
+    if (!(best.distance < reach_[v]))
+    {
+      best = CreasePoint();
+    }
+    return best;
+  }
+
+  /// Is triangle f's bounding sphere within `within` of p?
+  bool near(const Eigen::Vector3d& p, int f, double within) const
+  {
+    const Eigen::Vector3d a = V_.row(F_(f, 0)), b = V_.row(F_(f, 1)), c = V_.row(F_(f, 2));
+    const Eigen::Vector3d centre = (a + b + c) / 3.0;
+    const double radius =
+      std::max({ (a - centre).norm(), (b - centre).norm(), (c - centre).norm() });
+    return (p - centre).norm() - radius < within;
+  }
+
+  /// best, or the closest point of edge e to p where it is closer.
+  void closestOnEdge(const Eigen::Vector3d& p, int e, CreasePoint& best) const
+  {
+    const Eigen::Vector3d a = V_.row(topo_.edges(e, 0)), b = V_.row(topo_.edges(e, 1));
+    const double length2 = (b - a).squaredNorm();
+    const double t = length2 > 0 ? std::clamp((p - a).dot(b - a) / length2, 0.0, 1.0) : 0.0;
+    const double distance = (a + t * (b - a) - p).norm();
+    if (distance < best.distance)
+    {
+      best = { distance, e, t };
+    }
+  }
+
+  /// Moves the vertices onto their targets; undoes, longest first, the moves that leave a quad
+  /// facing against the surface or with a corner below 0.05 (quadWorstOf; and worse than it
+  /// was). Returns the vertices moved, in order.
+  std::vector<int> apply(const std::vector<CreasePoint>& target)
+  {
+    const int nV = static_cast<int>(mesh_.V.rows());
+    const VertexQuads around = vertexQuads(mesh_);
+    std::vector<double> before(mesh_.Q.rows(), 1.0);
+    std::vector<char> touched(mesh_.Q.rows(), 0);
+    const Eigen::MatrixX3d oldV = mesh_.V;
+    const std::vector<int> oldTriangle = mesh_.vertexTriangle, oldPoint = mesh_.vertexPoint;
+    std::vector<char> moved(nV, 0);
+    for (int v = 0; v < nV; ++v)
+    {
+      if (target[v].edge < 0)
+      {
+        continue;
+      }
+      for (int j = around.offsets[v]; j < around.offsets[v + 1]; ++j)
+      {
+        touched[around.quads[j]] = 1;
+        before[around.quads[j]] = quadWorstOf(surface_, mesh_, around.quads[j]);
+      }
+    }
+    for (int v = 0; v < nV; ++v)
+    {
+      if (target[v].edge >= 0)
+      {
+        moveOnto(v, target[v]);
+        moved[v] = 1;
+      }
+    }
+    constexpr double Worst = 0.05;
+    for (bool changed = true; changed;)
+    {
+      changed = false;
+      for (int i = 0; i < static_cast<int>(mesh_.Q.rows()); ++i)
+      {
+        if (!touched[i])
+        {
+          continue;
+        }
+        const double now = quadWorstOf(surface_, mesh_, i);
+        if (!(now < Worst && now < before[i]))
+        {
+          continue;
+        }
+        int undo = -1;
+        for (int k = 0; k < 4; ++k)
+        {
+          const int v = mesh_.Q(i, k);
+          if (moved[v] && (undo < 0 || target[v].distance > target[undo].distance))
+          {
+            undo = v;
+          }
+        }
+        if (undo >= 0)
+        {
+          mesh_.V.row(undo) = oldV.row(undo);
+          mesh_.vertexTriangle[undo] = oldTriangle[undo];
+          mesh_.vertexPoint[undo] = oldPoint[undo];
+          moved[undo] = 0;
+          changed = true;
+        }
+      }
+    }
+    std::vector<int> list;
+    for (int v = 0; v < nV; ++v)
+    {
+      if (moved[v])
+      {
+        list.push_back(v);
+      }
+    }
+    return list;
+  }
+
+  /// v onto p, in the triangle of p's edge on v's side.
+  void moveOnto(int v, const CreasePoint& p)
+  {
+    const int e = p.edge;
+    const int a = topo_.edges(e, 0), b = topo_.edges(e, 1);
+    const int onSide = side(v, p);
+    mesh_.V.row(v) = V_.row(a) + p.t * (V_.row(b) - V_.row(a));
+    mesh_.vertexTriangle[v] = topo_.edgeFaces(e, topo_.edgeFaceCount[e] == 2 ? onSide : 0);
+    mesh_.vertexPoint[v] = p.t == 0.0 ? a : (p.t == 1.0 ? b : -1);
+  }
+
+  const Eigen::MatrixX3d& V_;
+  const Eigen::MatrixX3i& F_;
+  const MeshTopology& topo_;
+  const std::vector<char>& sharp_;
+  const SurfaceLocator& surface_;
+  QuadMesh& mesh_;
+  std::vector<char> visited_;
+  double meanEdge_ = 0.0;
+  std::vector<double> reach_;
+};
+}
+
+std::vector<int> snapToCreases(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F,
+  const MeshTopology& topo, const std::vector<char>& sharp, const SurfaceLocator& surface,
+  QuadMesh& mesh)
+{
+  if (mesh.Q.rows() == 0 || std::find(sharp.begin(), sharp.end(), 1) == sharp.end())
+  {
+    return {};
+  }
+  return Snapper(V, F, topo, sharp, surface, mesh).run();
+}
+}

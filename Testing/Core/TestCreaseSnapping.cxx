@@ -1,0 +1,112 @@
+// Quad vertices moved onto the creases: on CAD-like parts whose creases the map's grid lines run
+// beside, quad edges then follow the creases, and no quad turns against the surface.
+#include "CreaseSnapping.h"
+#include "FrameField.h"
+#include "QuadMeshing.h"
+#include "ScaledJacobian.h"
+#include "TestChain.h"
+#include "TestSurfaces.h"
+
+#include <Eigen/Geometry>
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <limits>
+#include <string>
+#include <vector>
+
+using namespace quadcover;
+
+namespace
+{
+/// The share of the sharp edges whose midpoint lies on a quad edge (within 5% of the mean quad
+/// edge of one: a chord of a circular crease of radius 8 edges lies 1/64 of an edge off it).
+double sharpEdgesOnQuadEdges(const Chain& c, const std::vector<char>& sharp, const QuadMesh& q)
+{
+  std::vector<std::pair<Eigen::Vector3d, Eigen::Vector3d>> edges;
+  double mean = 0.0;
+  for (int i = 0; i < q.Q.rows(); ++i)
+  {
+    for (int k = 0; k < 4; ++k)
+    {
+      const Eigen::Vector3d a = q.V.row(q.Q(i, k)), b = q.V.row(q.Q(i, (k + 1) % 4));
+      edges.emplace_back(a, b);
+      mean += (b - a).norm();
+    }
+  }
+  mean /= std::max<std::size_t>(edges.size(), 1);
+  int on = 0, count = 0;
+  for (int e = 0; e < c.topo.numEdges(); ++e)
+  {
+    if (!sharp[e])
+    {
+      continue;
+    }
+    ++count;
+    const Eigen::Vector3d m =
+      0.5 * (c.s.V.row(c.topo.edges(e, 0)) + c.s.V.row(c.topo.edges(e, 1))).transpose();
+    double nearest = std::numeric_limits<double>::infinity();
+    for (const auto& [a, b] : edges)
+    {
+      const double t = std::clamp((m - a).dot(b - a) / std::max((b - a).squaredNorm(), 1e-300),
+        0.0, 1.0);
+      nearest = std::min(nearest, (a + t * (b - a) - m).norm());
+    }
+    on += nearest < 0.05 * mean;
+  }
+  return count > 0 ? static_cast<double>(on) / count : 0.0;
+}
+
+/// The quads of a chain's map with and without snapToCreases: the share of its sharp edges on
+/// quad edges rises from below `without` to above `with`, and the snapped quads face the surface
+/// and keep their corners where the unsnapped ones do.
+void expectCreasesFollowed(
+  const Surface& s, int quads, double without, double with, const std::string& name)
+{
+  SCOPED_TRACE(name);
+  const Chain c = runChain(s, quads);
+  const std::vector<char> sharp = sharpEdges(c.topo, c.geometry.bases,
+    SmootherOptions().featureAngle, SmootherOptions().minimumFeatureLength);
+  ASSERT_GT(std::count(sharp.begin(), sharp.end(), 1), 100);
+  QuadMeshOptions options;
+  options.computeHausdorffDistance = false;
+  options.snapToCreases = false;
+  const QuadMeshResult off = buildQuadMesh(c.s.V, c.s.F, c.topo, c.map.cornerUV, options);
+  options.snapToCreases = true;
+  const QuadMeshResult on = buildQuadMesh(c.s.V, c.s.F, c.topo, c.map.cornerUV, options);
+  EXPECT_EQ(off.snappedVertices, 0);
+  EXPECT_GT(on.snappedVertices, 100);
+  EXPECT_LT(sharpEdgesOnQuadEdges(c, sharp, off.mesh), without);
+  EXPECT_GT(sharpEdgesOnQuadEdges(c, sharp, on.mesh), with);
+  EXPECT_EQ(on.turnedQuads, 0);
+  EXPECT_LE(on.invertedFinal, off.invertedFinal);
+  EXPECT_EQ(on.mesh.Q.rows(), off.mesh.Q.rows()) << "snapping moves vertices only";
+}
+}
+
+TEST(CreaseSnapping, QuadEdgesFollowRightAngleCreases)
+{
+  // a square frame with a hole, a wall and a tab: its walls (0.25 thick) are not a whole number
+  // of grid edges, so most grid lines run beside its creases, not on them (31% of its sharp
+  // edges on quad edges without, 99.6% with)
+  expectCreasesFollowed(makeBracket(0.05), 1000, 0.5, 0.95, "bracket");
+}
+
+TEST(CreaseSnapping, QuadEdgesFollowCircularCreases)
+{
+  // a turned shaft: its creases are circles, the grid lines beside them turn with them (9% of
+  // its sharp edges on quad edges without, 90% with: where a grid line crosses a crease a quad is
+  // left folded across it)
+  expectCreasesFollowed(makeSteppedShaft(0.05), 1500, 0.5, 0.85, "stepped shaft");
+}
+
+TEST(CreaseSnapping, LeavesASurfaceWithoutSharpEdgesAlone)
+{
+  const Chain c = runChain(testSurface("sphere"), 800);
+  QuadMesh q = buildQuadMesh(c.s.V, c.s.F, c.topo, c.map.cornerUV).mesh;
+  const QuadMesh before = q;
+  const std::vector<char> none(c.topo.numEdges(), 0);
+  const SurfaceLocator surface(c.s.V, c.s.F);
+  EXPECT_TRUE(snapToCreases(c.s.V, c.s.F, c.topo, none, surface, q).empty());
+  EXPECT_EQ((q.V - before.V).norm(), 0.0);
+}
