@@ -26,8 +26,8 @@
  * each way, in % of the input's bounding-box diagonal), InvertedQuads (before and after
  * RepairInvertedQuads), DroppedCells, FilledHoles, TurnedQuads (before and after it) and
  * SplitQuadVertices (copies of a vertex where separate fans of quads touched: the output is
- * manifold at its vertices) and FragmentQuads (quads removed that hung off their component's
- * quads by a corner).
+ * manifold at its vertices), FragmentQuads (quads removed that hung off their component's
+ * quads by a corner) and SnappedVertices (quad vertices moved onto creases, SnapToCreases).
  * @sa vtkQuadCoverSolver
  */
 #ifndef vtkQuadExtractor_h
