@@ -8,7 +8,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <deque>
 #include <limits>
+#include <queue>
+#include <utility>
 #include <vector>
 
 namespace quadcover
@@ -38,17 +41,31 @@ public:
   {
     meanEdge_ = meanQuadEdge();
     findReach();
+    sharpDegree_.assign(V.rows(), 0);
+    for (int e = 0; e < topo.numEdges(); ++e)
+    {
+      if (sharp[e])
+      {
+        ++sharpDegree_[topo.edges(e, 0)];
+        ++sharpDegree_[topo.edges(e, 1)];
+      }
+    }
   }
 
   /// Each quad edge whose ends lie on the two sides of the crease nearest to its nearer end
-  /// moves that end onto it (where a vertex has several, the closest).
+  /// moves that end onto it. Vertices on the boundary (the quads' or the surface's) stay, and so
+  /// do those whose nearest crease point is the end of a crease (beside it, not across it) or
+  /// which lie on a crease already.
   std::vector<int> run()
   {
     const int nV = static_cast<int>(mesh_.V.rows());
+    const std::vector<char> boundary = quadMeshBoundary(mesh_);
+    const std::vector<char> nearCrease = trianglesNearCreases();
     std::vector<CreasePoint> closest(nV), target(nV);
     for (int v = 0; v < nV; ++v)
     {
-      if (!liesOnCrease(v))
+      if (nearCrease[mesh_.vertexTriangle[v]] && !boundary[v] &&
+        !onSurfaceBoundary(V_, F_, topo_, mesh_, v) && !liesOnCrease(v))
       {
         closest[v] = closestCrease(v);
       }
@@ -64,12 +81,9 @@ public:
         }
         const int near = closest[a].distance <= closest[b].distance ? a : b;
         const CreasePoint& p = closest[near];
-        if (side(a, p) != side(b, p))
+        if (side(a, p) != side(b, p) && !atCreaseEnd(p))
         {
-          if (p.distance < target[near].distance)
-          {
-            target[near] = p;
-          }
+          target[near] = p;
         }
       }
     }
@@ -77,6 +91,70 @@ public:
   }
 
 private:
+  /// #F: 1 for the triangles whose centres lie within the longest reach of a vertex (3 mean
+  /// quad edges) of a triangle on a sharp edge, by paths from centre to centre; only the vertices
+  /// in them look for a crease.
+  std::vector<char> trianglesNearCreases() const
+  {
+    const int nF = static_cast<int>(F_.rows());
+    std::vector<double> distance(nF, std::numeric_limits<double>::infinity());
+    using Item = std::pair<double, int>;
+    std::priority_queue<Item, std::vector<Item>, std::greater<Item>> queue;
+    for (int e = 0; e < topo_.numEdges(); ++e)
+    {
+      for (int i = 0; sharp_[e] && i < topo_.edgeFaceCount[e] && i < 2; ++i)
+      {
+        const int f = topo_.edgeFaces(e, i);
+        if (distance[f] > 0.0)
+        {
+          distance[f] = 0.0;
+          queue.push({ 0.0, f });
+        }
+      }
+    }
+    const double limit = 3.0 * meanEdge_;
+    while (!queue.empty())
+    {
+      const auto [d, f] = queue.top();
+      queue.pop();
+      if (d > distance[f])
+      {
+        continue;
+      }
+      for (int k = 0; k < 3; ++k)
+      {
+        const int g = topo_.faceNeighbors(f, k);
+        const double next = g >= 0 ? d + (centre(f) - centre(g)).norm() : 0.0;
+        if (g >= 0 && next < distance[g] && next <= limit)
+        {
+          distance[g] = next;
+          queue.push({ next, g });
+        }
+      }
+    }
+    std::vector<char> near(nF, 0);
+    for (int f = 0; f < nF; ++f)
+    {
+      near[f] = distance[f] <= limit;
+    }
+    return near;
+  }
+
+  Eigen::Vector3d centre(int f) const
+  {
+    return (V_.row(F_(f, 0)) + V_.row(F_(f, 1)) + V_.row(F_(f, 2))).transpose() / 3.0;
+  }
+
+  /// Is p an end point of its edge where a chain of sharp edges ends (one sharp edge there)?
+  bool atCreaseEnd(const CreasePoint& p) const
+  {
+    if (p.t > 0.0 && p.t < 1.0)
+    {
+      return false;
+    }
+    return sharpDegree_[topo_.edges(p.edge, p.t == 0.0 ? 0 : 1)] == 1;
+  }
+
   /// Which of the two triangles of p's crease edge quad vertex v lies towards (0 or 1): the one
   /// whose direction into it from the edge (in its plane, across the edge) v is further along.
   int side(int v, const CreasePoint& p) const
@@ -222,81 +300,82 @@ private:
     }
   }
 
-  /// Moves the vertices onto their targets; undoes, longest first, the moves that leave a quad
-  /// facing against the surface or with a corner below 0.05 (quadWorstOf; and worse than it
-  /// was). Returns the vertices moved, in order.
+  /// Moves the vertices onto their targets (not those already there); then, quad by quad from a
+  /// list of the quads around them, undoes the longest move of a quad left facing against the
+  /// surface or with a corner below 0.05 (quadWorstOf), and worse than it was, and looks at the
+  /// quads around the vertex put back again. Returns the vertices moved, in order.
   std::vector<int> apply(const std::vector<CreasePoint>& target)
   {
     const int nV = static_cast<int>(mesh_.V.rows());
     const VertexQuads around = vertexQuads(mesh_);
     std::vector<double> before(mesh_.Q.rows(), 1.0);
-    std::vector<char> touched(mesh_.Q.rows(), 0);
     const Eigen::MatrixX3d oldV = mesh_.V;
     const std::vector<int> oldTriangle = mesh_.vertexTriangle, oldPoint = mesh_.vertexPoint;
-    std::vector<char> moved(nV, 0);
-    for (int v = 0; v < nV; ++v)
-    {
-      if (target[v].edge < 0)
-      {
-        continue;
-      }
+    std::vector<char> moved(nV, 0), listed(mesh_.Q.rows(), 0);
+    std::deque<int> check;
+    const auto list = [&](int v) {
       for (int j = around.offsets[v]; j < around.offsets[v + 1]; ++j)
       {
-        touched[around.quads[j]] = 1;
-        before[around.quads[j]] = quadWorstOf(surface_, mesh_, around.quads[j]);
+        if (!listed[around.quads[j]])
+        {
+          listed[around.quads[j]] = 1;
+          check.push_back(around.quads[j]);
+        }
       }
-    }
+    };
     for (int v = 0; v < nV; ++v)
     {
-      if (target[v].edge >= 0)
+      if (target[v].edge >= 0 && target[v].distance > 1e-12 * meanEdge_)
       {
-        moveOnto(v, target[v]);
         moved[v] = 1;
+        list(v);
       }
     }
-    constexpr double Worst = 0.05;
-    for (bool changed = true; changed;)
+    for (const int i : check)
     {
-      changed = false;
-      for (int i = 0; i < static_cast<int>(mesh_.Q.rows()); ++i)
-      {
-        if (!touched[i])
-        {
-          continue;
-        }
-        const double now = quadWorstOf(surface_, mesh_, i);
-        if (!(now < Worst && now < before[i]))
-        {
-          continue;
-        }
-        int undo = -1;
-        for (int k = 0; k < 4; ++k)
-        {
-          const int v = mesh_.Q(i, k);
-          if (moved[v] && (undo < 0 || target[v].distance > target[undo].distance))
-          {
-            undo = v;
-          }
-        }
-        if (undo >= 0)
-        {
-          mesh_.V.row(undo) = oldV.row(undo);
-          mesh_.vertexTriangle[undo] = oldTriangle[undo];
-          mesh_.vertexPoint[undo] = oldPoint[undo];
-          moved[undo] = 0;
-          changed = true;
-        }
-      }
+      before[i] = quadWorstOf(surface_, mesh_, i);
     }
-    std::vector<int> list;
     for (int v = 0; v < nV; ++v)
     {
       if (moved[v])
       {
-        list.push_back(v);
+        moveOnto(v, target[v]);
       }
     }
-    return list;
+    constexpr double Worst = 0.05;
+    while (!check.empty())
+    {
+      const int i = check.front();
+      check.pop_front();
+      listed[i] = 0;
+      const double now = quadWorstOf(surface_, mesh_, i);
+      int undo = -1;
+      for (int k = 0; k < 4 && now < Worst && now < before[i]; ++k)
+      {
+        const int v = mesh_.Q(i, k);
+        if (moved[v] && (undo < 0 || target[v].distance > target[undo].distance))
+        {
+          undo = v;
+        }
+      }
+      if (undo >= 0)
+      {
+        mesh_.V.row(undo) = oldV.row(undo);
+        mesh_.vertexTriangle[undo] = oldTriangle[undo];
+        mesh_.vertexPoint[undo] = oldPoint[undo];
+        moved[undo] = 0;
+        list(undo);
+      }
+    }
+    std::vector<int> result;
+    for (int v = 0; v < nV; ++v)
+    {
+      if (moved[v])
+      {
+        result.push_back(v);
+      }
+    }
+    return result;
   }
 
   /// v onto p, in the triangle of p's edge on v's side.
@@ -319,6 +398,7 @@ private:
   std::vector<char> visited_;
   double meanEdge_ = 0.0;
   std::vector<double> reach_;
+  std::vector<int> sharpDegree_; ///< #V of the input: sharp edges at each point
 };
 }
 

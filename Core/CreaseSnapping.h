@@ -17,14 +17,16 @@ namespace quadcover
 /**
  * Where a quad edge crosses a crease of the input (an edge flagged in `sharp`, #E: its two ends
  * lie on the two sides of the sharp edge closest to its nearer end, within that end's longest
- * quad edge), its nearer end moves onto the crease, to the closest point; a vertex already on a
- * crease stays. With the frames held along the creases the map's grid lines run beside them, so
- * that the ends moved along a crease form a row of quad edges on it: the quads on one side of the
- * row grow and those on the other shrink by the grid line's distance from the crease (at most
- * half a quad). Where the grid line crosses the crease, a quad across it is left folded along its
- * diagonal. A move that leaves one of the vertex's quads facing against the surface or with a
- * corner's scaled Jacobian below 0.05 (quadWorstOf), and worse than it was, is undone, the
- * longest first. Updates mesh.V, vertexTriangle and vertexPoint.
+ * quad edge, at most three mean quad edges), its nearer end moves onto the crease, to the closest
+ * point. A vertex on a crease already, on the quad mesh's or the surface's boundary, or whose
+ * closest crease point is where a chain of sharp edges ends, stays. With the frames held along
+ * the creases the map's grid lines run beside them, so that the ends moved along a crease form a
+ * row of quad edges on it: the quads on one side of the row grow and those on the other shrink by
+ * the grid line's distance from the crease (about half a quad at most). Where the grid line
+ * crosses the crease, a quad across it is left folded along its diagonal. Then, quad by quad, the
+ * longest move of a quad left facing against the surface or with a corner's scaled Jacobian below
+ * 0.05 (quadWorstOf below 0.05), and worse than it was, is undone. Updates mesh.V, vertexTriangle
+ * and vertexPoint.
  * @return the vertices moved, in order
  */
 std::vector<int> snapToCreases(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F,

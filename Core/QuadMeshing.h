@@ -30,10 +30,13 @@ struct QuadMeshOptions
   /// (patchQuadMesh), where the map could not be repaired.
   bool fillHoles = true;
   /// Move the quad vertices beside the sharp edges onto them (snapToCreases), before the
-  /// relaxation, so that quad edges follow the creases the grid lines run beside.
+  /// relaxation, so that quad edges follow the creases the grid lines run beside (with the frames
+  /// held along them, SmootherOptions::alignToFeatures; without, the grid lines cross the creases
+  /// and the snapping leaves quads folded across them).
   bool snapToCreases = true;
-  /// The sharp edges (sharpEdges): the same concepts as SmootherOptions::featureAngle and
-  /// minimumFeatureLength, and their defaults.
+  /// The sharp edges (sharpEdges) for snapToCreases, and featureAngle the relaxation's creases
+  /// too: the same concepts as SmootherOptions::featureAngle and minimumFeatureLength, and their
+  /// defaults.
   double featureAngle = SmootherOptions().featureAngle;
   int minimumFeatureLength = SmootherOptions().minimumFeatureLength;
   /// Sweeps of tangential relaxation of the whole mesh afterwards (relaxQuads, vertices whose

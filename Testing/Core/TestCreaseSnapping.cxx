@@ -2,6 +2,7 @@
 // beside, quad edges then follow the creases, and no quad turns against the surface.
 #include "CreaseSnapping.h"
 #include "FrameField.h"
+#include "QuadMeshAdjacency.h"
 #include "QuadMeshing.h"
 #include "ScaledJacobian.h"
 #include "TestChain.h"
@@ -100,13 +101,81 @@ TEST(CreaseSnapping, QuadEdgesFollowCircularCreases)
   expectCreasesFollowed(makeSteppedShaft(0.05), 1500, 0.5, 0.85, "stepped shaft");
 }
 
+TEST(CreaseSnapping, MovedVerticesLieOnTheirCreasesAndTheBoundaryStays)
+{
+  // an open sheet 1 x 0.6 folded at a right angle along x = 0.37 (a crease of its triangles'
+  // edges from boundary to boundary), off the middle of the strip its boundary lines bound
+  Surface s;
+  const int nx = 101, ny = 25;
+  s.V.resize(nx * ny, 3);
+  for (int j = 0; j < ny; ++j)
+  {
+    for (int i = 0; i < nx; ++i)
+    {
+      const double x = 1.0 * i / (nx - 1), y = 0.6 * j / (ny - 1);
+      s.V.row(j * nx + i) << std::min(x, 0.37), y, std::max(x - 0.37, 0.0);
+    }
+  }
+  s.F.resize(2 * (nx - 1) * (ny - 1), 3);
+  int f = 0;
+  for (int j = 0; j + 1 < ny; ++j)
+  {
+    for (int i = 0; i + 1 < nx; ++i)
+    {
+      const int a = j * nx + i, b = a + 1, c = a + nx + 1, d = a + nx;
+      s.F.row(f++) << a, b, c;
+      s.F.row(f++) << a, c, d;
+    }
+  }
+  const Chain c = runChain(s, 700);
+  const std::vector<char> sharp = sharpEdges(c.topo, c.geometry.bases,
+    SmootherOptions().featureAngle, SmootherOptions().minimumFeatureLength);
+  ASSERT_EQ(std::count(sharp.begin(), sharp.end(), 1), ny - 1);
+  QuadMeshOptions options;
+  options.computeHausdorffDistance = false;
+  options.relaxationIterations = 0;
+  options.snapToCreases = false;
+  QuadMesh q = buildQuadMesh(c.s.V, c.s.F, c.topo, c.map.cornerUV, options).mesh;
+  const QuadMesh before = q;
+  const SurfaceLocator surface(c.s.V, c.s.F);
+  const std::vector<int> moved = snapToCreases(c.s.V, c.s.F, c.topo, sharp, surface, q);
+  EXPECT_GT(static_cast<int>(moved.size()), 5);
+  EXPECT_GT(sharpEdgesOnQuadEdges(c, sharp, q), 0.9);
+  for (const int v : moved)
+  {
+    // on the fold, in a triangle of the fold, at the input point it names if any
+    EXPECT_NEAR(q.V(v, 0), 0.37, 1e-12);
+    EXPECT_NEAR(q.V(v, 2), 0.0, 1e-12);
+    const int t = q.vertexTriangle[v];
+    bool onFold = false;
+    for (int k = 0; k < 3; ++k)
+    {
+      onFold = onFold || sharp[c.topo.faceEdges(t, k)];
+    }
+    EXPECT_TRUE(onFold) << v;
+    if (q.vertexPoint[v] >= 0)
+    {
+      EXPECT_EQ((q.V.row(v) - c.s.V.row(q.vertexPoint[v])).norm(), 0.0);
+    }
+  }
+  const std::vector<char> boundary = quadMeshBoundary(before);
+  for (int v = 0; v < q.V.rows(); ++v)
+  {
+    if (boundary[v])
+    {
+      EXPECT_EQ((q.V.row(v) - before.V.row(v)).norm(), 0.0) << "boundary vertex " << v;
+    }
+  }
+}
+
 TEST(CreaseSnapping, LeavesASurfaceWithoutSharpEdgesAlone)
 {
   const Chain c = runChain(testSurface("sphere"), 800);
   QuadMesh q = buildQuadMesh(c.s.V, c.s.F, c.topo, c.map.cornerUV).mesh;
   const QuadMesh before = q;
-  const std::vector<char> none(c.topo.numEdges(), 0);
+  const std::vector<char> sharp = sharpEdges(c.topo, c.geometry.bases,
+    SmootherOptions().featureAngle, SmootherOptions().minimumFeatureLength);
   const SurfaceLocator surface(c.s.V, c.s.F);
-  EXPECT_TRUE(snapToCreases(c.s.V, c.s.F, c.topo, none, surface, q).empty());
+  EXPECT_TRUE(snapToCreases(c.s.V, c.s.F, c.topo, sharp, surface, q).empty());
   EXPECT_EQ((q.V - before.V).norm(), 0.0);
 }
