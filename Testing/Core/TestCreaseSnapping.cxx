@@ -6,7 +6,6 @@
 #include "QuadMeshing.h"
 #include "ScaledJacobian.h"
 #include "TestChain.h"
-#include "TestSurfaces.h"
 
 #include <Eigen/Geometry>
 #include <gtest/gtest.h>
@@ -166,16 +165,4 @@ TEST(CreaseSnapping, MovedVerticesLieOnTheirCreasesAndTheBoundaryStays)
       EXPECT_EQ((q.V.row(v) - before.V.row(v)).norm(), 0.0) << "boundary vertex " << v;
     }
   }
-}
-
-TEST(CreaseSnapping, LeavesASurfaceWithoutSharpEdgesAlone)
-{
-  const Chain c = runChain(testSurface("sphere"), 800);
-  QuadMesh q = buildQuadMesh(c.s.V, c.s.F, c.topo, c.map.cornerUV).mesh;
-  const QuadMesh before = q;
-  const std::vector<char> sharp = sharpEdges(c.topo, c.geometry.bases,
-    SmootherOptions().featureAngle, SmootherOptions().minimumFeatureLength);
-  const SurfaceLocator surface(c.s.V, c.s.F);
-  EXPECT_TRUE(snapToCreases(c.s.V, c.s.F, c.topo, sharp, surface, q).empty());
-  EXPECT_EQ((q.V - before.V).norm(), 0.0);
 }
