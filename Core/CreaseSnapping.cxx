@@ -167,17 +167,11 @@ private:
     const Eigen::Vector3d a = V_.row(topo_.edges(e, 0)), b = V_.row(topo_.edges(e, 1));
     const Eigen::Vector3d c = a + p.t * (b - a);
     const Eigen::Vector3d x = Eigen::Vector3d(mesh_.V.row(v)) - c;
+    const Eigen::Vector3d t = (b - a).normalized();
     double along[2];
     for (int i = 0; i < 2; ++i)
     {
-      const int f = topo_.edgeFaces(e, i);
-      Eigen::Vector3d centre = Eigen::Vector3d::Zero();
-      for (int k = 0; k < 3; ++k)
-      {
-        centre += V_.row(F_(f, k)).transpose() / 3.0;
-      }
-      Eigen::Vector3d inward = centre - a;
-      const Eigen::Vector3d t = (b - a).normalized();
+      Eigen::Vector3d inward = centre(topo_.edgeFaces(e, i)) - a;
       inward -= inward.dot(t) * t;
       along[i] = inward.norm() > 0 ? x.dot(inward.normalized()) : 0.0;
     }
