@@ -132,6 +132,7 @@ void addComponent(const Inputs& in, const Component& part, const MeshTopology& t
   out.cancelledPairs += map.cancelledPairs;
   out.movedSingularities += map.movedSingularities;
   out.addedConePairs += map.addedConePairs;
+  out.droppedConePairs += map.droppedConePairs;
   out.finerGridTriangles += map.finerGridTriangles;
   out.branchPoints += map.branchPoints;
   out.branchPointsOnGrid += map.branchPointsOnGrid;

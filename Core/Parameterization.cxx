@@ -487,18 +487,18 @@ double edgeLengthForQuadCount(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i&
   return std::sqrt(surfaceArea(V, F) / quads);
 }
 
-Parameterization computeParameterization(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F,
-  const MeshTopology& topo, const FrameGeometry& geometry, const Eigen::MatrixX3d& frameU,
-  const Eigen::MatrixX3i& matching, const ParameterizationOptions& options,
-  const Progress& progress)
+namespace
 {
-  progress.report(0.0);
-  const Inputs given{ V, F, topo, geometry, frameU, matching, options };
-  checkArguments(given);
-  if (topo.numComponents() > 1)
-  {
-    return mapEachComponent(given, progress);
-  }
+
+/// The map of one component: its singularities settled, cone pairs added, cut, solved, rounded
+/// and repaired.
+Parameterization mapComponent(const Inputs& given, const Progress& progress)
+{
+  const Eigen::MatrixX3d& V = given.V;
+  const Eigen::MatrixX3i& F = given.F;
+  const MeshTopology& topo = given.topo;
+  const FrameGeometry& geometry = given.geometry;
+  const ParameterizationOptions& options = given.options;
   Parameterization out = startMap(given);
   Field field = evaluateField(given);
   Eigen::MatrixX3d ownFrames;
@@ -593,4 +593,42 @@ Parameterization computeParameterization(const Eigen::MatrixX3d& V, const Eigen:
   return out;
 }
 
+/// Defects a repaired map keeps: triangles flipped, points wound the wrong way.
+int defectsOf(const Parameterization& map)
+{
+  return map.flipped + map.wrongWindings;
+}
+
+}
+
+Parameterization computeParameterization(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F,
+  const MeshTopology& topo, const FrameGeometry& geometry, const Eigen::MatrixX3d& frameU,
+  const Eigen::MatrixX3i& matching, const ParameterizationOptions& options,
+  const Progress& progress)
+{
+  progress.report(0.0);
+  const Inputs given{ V, F, topo, geometry, frameU, matching, options };
+  checkArguments(given);
+  if (topo.numComponents() > 1)
+  {
+    return mapEachComponent(given, progress);
+  }
+  Parameterization out = mapComponent(given, progress);
+  // a map that keeps defects with cone pairs added is made again without them (nor the moves),
+  // and that one kept when it keeps fewer: a pair can turn the frames between a tube's boundary
+  // loops (Documentation/Algorithms.md)
+  if (defectsOf(out) > 0 && out.addedConePairs > 0)
+  {
+    ParameterizationOptions plainOptions = options;
+    plainOptions.conePairGain = 0.0;
+    const Inputs plainInputs{ V, F, topo, geometry, frameU, matching, plainOptions };
+    Parameterization plain = mapComponent(plainInputs, progress.part(1.0, 1.0));
+    if (defectsOf(plain) < defectsOf(out))
+    {
+      plain.droppedConePairs = out.addedConePairs;
+      return plain;
+    }
+  }
+  return out;
+}
 }

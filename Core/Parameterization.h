@@ -121,7 +121,8 @@ struct ParameterizationOptions
   /// Pairs of opposite quarter cones are added where the singularities leave the quads' size
   /// uneven, each where it lowers the variance of the modelled log scale, summed over the grid's
   /// cells, by at least this, and the field's own quarters moved where that lowers it by twice
-  /// this (conePairsForEvenScale, ConePairOptions::minimumGain); 0: neither.
+  /// this (conePairsForEvenScale, ConePairOptions::minimumGain); 0: neither. A map that keeps
+  /// defects with its pairs is made again without them (Parameterization::droppedConePairs).
   double conePairGain = 13.0;
   /// Before the map, triangles with an edge longer than this many grid edges (targetEdgeLength,
   /// or the edge of targetQuadCount quads) are split, longest edge first (refineLongEdges, which
@@ -187,6 +188,9 @@ struct Parameterization
   int movedSingularities = 0;
   /// pairs of opposite quarter cones added for quads of even size (conePairGain)
   int addedConePairs = 0;
+  /// pairs the map was first made with and then made again without, because it kept more defects
+  /// (flipped triangles and wrong windings) with them; addedConePairs is then 0
+  int droppedConePairs = 0;
   /// triangles where the grid is finer than edgeLength (maximumThinStripRefinement,
   /// adaptiveCurvature, or defectGridRefinement where it was kept)
   int finerGridTriangles = 0;

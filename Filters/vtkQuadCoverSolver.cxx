@@ -139,6 +139,7 @@ void AddFigures(
   AddField<vtkIntArray>(fd, names::CancelledSingularityPairs, { double(map.cancelledPairs) });
   AddField<vtkIntArray>(fd, names::MovedSingularities, { double(map.movedSingularities) });
   AddField<vtkIntArray>(fd, names::AddedConePairs, { double(map.addedConePairs) });
+  AddField<vtkIntArray>(fd, names::DroppedConePairs, { double(map.droppedConePairs) });
   AddField<vtkIntArray>(fd, names::FinerGridTriangles, { double(map.finerGridTriangles) });
   AddField<vtkIntArray>(
     fd, names::BranchPointsOnGrid, { double(map.branchPoints), double(map.branchPointsOnGrid) });

@@ -658,6 +658,40 @@ TEST(Parameterization, NegativeConesKeepTheirIndex)
         }
 }
 
+/// twistTube's frames (twistTubeFrames with `offset`) after optimizeBranchPoints with merges at
+/// almost any price, fitted to their matchings with the boundary frames held, as the filters do.
+struct MergedTubeField
+{
+  Eigen::MatrixX3d frameU;
+  Eigen::MatrixX3i matching;
+  BranchPointReport report;
+};
+
+MergedTubeField mergedTubeField(
+  const Surface& tube, const MeshTopology& topo, const FrameGeometry& geometry, double offset)
+{
+  const Eigen::MatrixX3d U = twistTubeFrames(tube, geometry.bases.normal, offset);
+  FrameTopology field = computeMatchings(tube.F, topo, geometry, U);
+  EXPECT_EQ(field.singularities, 2);
+  BranchPointOptions options;
+  options.branchPointWeight = 1000; // merge if at all possible
+  MergedTubeField r;
+  r.report = optimizeBranchPoints(tube.F, topo, geometry, U, field, options);
+  std::vector<char> held(tube.F.rows(), 0);
+  for (int f = 0; f < tube.F.rows(); ++f)
+  {
+    held[f] =
+      topo.faceNeighbors(f, 0) < 0 || topo.faceNeighbors(f, 1) < 0 || topo.faceNeighbors(f, 2) < 0;
+  }
+  const Eigen::VectorXd alpha = fitFramesToMatchings(
+    tube.V, tube.F, topo, geometry, U, field.matching, Eigen::VectorXd(), 0.97, held);
+  Eigen::MatrixX3d fittedV = U;
+  r.frameU = U;
+  rotateFrames(geometry.bases, alpha, r.frameU, fittedV);
+  r.matching = field.matching;
+  return r;
+}
+
 TEST(Parameterization, NoMergeTwistsATubeBetweenItsBoundaryLoops)
 {
   // twistTube, and frames that follow both its boundary circles with a +1/4 and a -1/4 point on
@@ -672,31 +706,15 @@ TEST(Parameterization, NoMergeTwistsATubeBetweenItsBoundaryLoops)
   for (const double offset : { 0.3, -0.3 })
   {
     SCOPED_TRACE(offset);
-    const Eigen::MatrixX3d U = twistTubeFrames(tube, geometry.bases.normal, offset);
-    FrameTopology field = computeMatchings(tube.F, topo, geometry, U);
-    ASSERT_EQ(field.singularities, 2);
-    BranchPointOptions options;
-    options.branchPointWeight = 1000; // merge if at all possible
-    const BranchPointReport report =
-      optimizeBranchPoints(tube.F, topo, geometry, U, field, options);
-    avoided += report.twistsAvoided;
+    const MergedTubeField field = mergedTubeField(tube, topo, geometry, offset);
+    avoided += field.report.twistsAvoided;
     std::printf("offset %+.1f: singularities %d -> %d, merges undone %d\n", offset,
-      report.singularitiesBefore, report.singularitiesAfter, report.twistsAvoided);
-    // fit the frames to the matchings (boundary frames held), as the filters do, and map
-    std::vector<char> held(tube.F.rows(), 0);
-    for (int f = 0; f < tube.F.rows(); ++f)
-    {
-      held[f] = topo.faceNeighbors(f, 0) < 0 || topo.faceNeighbors(f, 1) < 0 ||
-        topo.faceNeighbors(f, 2) < 0;
-    }
-    const Eigen::VectorXd alpha = fitFramesToMatchings(
-      tube.V, tube.F, topo, geometry, U, field.matching, Eigen::VectorXd(), 0.97, held);
-    Eigen::MatrixX3d fittedU = U, fittedV = U;
-    rotateFrames(geometry.bases, alpha, fittedU, fittedV);
+      field.report.singularitiesBefore, field.report.singularitiesAfter,
+      field.report.twistsAvoided);
     ParameterizationOptions mapOptions;
     mapOptions.targetEdgeLength = edgeLengthForQuadCount(tube.V, tube.F, 800);
-    const Parameterization map =
-      computeParameterization(tube.V, tube.F, topo, geometry, fittedU, field.matching, mapOptions);
+    const Parameterization map = computeParameterization(
+      tube.V, tube.F, topo, geometry, field.frameU, field.matching, mapOptions);
     EXPECT_EQ(map.flipped, 0);
     // (where the pair is kept, its -1/4 cone on this fine mesh is still wound as +3/4 next to a
     // point wound twice: the winding repair's known limit on fine meshes, Benchmarks/README.md)
@@ -705,6 +723,34 @@ TEST(Parameterization, NoMergeTwistsATubeBetweenItsBoundaryLoops)
     EXPECT_EQ(checks::seamViolations(tube.F, topo, map.cornerUV), 0);
   }
   EXPECT_GT(avoided, 0) << "one of the two sides twists";
+}
+
+TEST(Parameterization, AMapThatKeepsDefectsWithItsConePairsIsMadeWithoutThem)
+{
+  // The tube above with its +1/4 and -1/4 kept (offset 0.3): the cone-pair search adds a pair
+  // between its boundary circles, and the map with it keeps flipped triangles (56, and 44 points
+  // wound the wrong way, when it was kept at the gain 6); so it is made again without pairs, and
+  // that map, with fewer defects, is the one returned.
+  const Surface tube = twistTube();
+  const MeshTopology topo = buildTopology(tube.F, static_cast<int>(tube.V.rows()));
+  const FrameGeometry geometry = computeFrameGeometry(tube.V, tube.F, topo);
+  const MergedTubeField field = mergedTubeField(tube, topo, geometry, 0.3);
+  ASSERT_EQ(field.report.singularitiesAfter, 2);
+  ParameterizationOptions options;
+  options.targetEdgeLength = edgeLengthForQuadCount(tube.V, tube.F, 800);
+  options.conePairGain = 6.0;
+  const Parameterization map =
+    computeParameterization(tube.V, tube.F, topo, geometry, field.frameU, field.matching, options);
+  ASSERT_GT(map.droppedConePairs, 0)
+    << "the pairs should have left defects (else the test proves nothing)";
+  EXPECT_EQ(map.addedConePairs, 0);
+  EXPECT_EQ(map.flipped, 0);
+  options.conePairGain = 0.0;
+  const Parameterization plain =
+    computeParameterization(tube.V, tube.F, topo, geometry, field.frameU, field.matching, options);
+  EXPECT_EQ(map.wrongWindings, plain.wrongWindings);
+  ASSERT_EQ(map.cornerUV.rows(), plain.cornerUV.rows());
+  EXPECT_EQ((map.cornerUV - plain.cornerUV).cwiseAbs().maxCoeff(), 0.0) << "the map without pairs";
 }
 
 TEST(Parameterization, OppositeSingularitiesCloserThanTheSeparationCancel)
