@@ -121,9 +121,12 @@ struct ParameterizationOptions
   /// Pairs of opposite quarter cones are added where the singularities leave the quads' size
   /// uneven, each where it lowers the variance of the modelled log scale, summed over the grid's
   /// cells, by at least this, and the field's own quarters moved where that lowers it by twice
-  /// this (conePairsForEvenScale, ConePairOptions::minimumGain); 0: neither. A map that keeps
-  /// defects with its pairs is made again without them (Parameterization::droppedConePairs).
-  double conePairGain = 13.0;
+  /// this (conePairsForEvenScale, ConePairOptions::minimumGain); 0: neither. 6 against the former
+  /// 13: the shared meshes' median edge RSD at 5,000, 6,500 and 8,000 quads 10.7, 10.3, 10.6 ->
+  /// 9.8, 9.7, 10.3% and angle RSD 7.6, 7.5, 7.4 -> 7.5, 7.2, 7.0%, with fewer map defects over
+  /// the count sweep (Benchmarks/README.md, 2026-12-05). A map that keeps defects with its pairs
+  /// is made again without them (Parameterization::droppedConePairs).
+  double conePairGain = 6.0;
   /// Before the map, triangles with an edge longer than this many grid edges (targetEdgeLength,
   /// or the edge of targetQuadCount quads) are split, longest edge first (refineLongEdges, which
   /// vtkQuadCoverSolver runs): a linear map cannot bend inside a triangle larger than a few grid

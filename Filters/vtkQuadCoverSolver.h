@@ -221,7 +221,7 @@ public:
   /** Pairs of opposite quarter cones (+1/4 and -1/4) are added where the field's singularities
    * leave the quads uneven in size, each where it lowers the variance of the log scale of the
    * flat metric with cones at the singularities (the quads' log size follows about half of
-   * it), summed over the grid's cells, by at least this, in [0, 1e6] (default 13; 0: none); and
+   * it), summed over the grid's cells, by at least this, in [0, 1e6] (default 6; 0: none); and
    * the field's own quarter singularities, but those near sharp edges, move (three to six grid
    * edges) where that lowers it by twice this. The frames then turn as little as agrees with
    * the new matchings, all but those held along the boundary and sharp edges. Meant for a field
