@@ -197,9 +197,13 @@ int moveCloseQuartersApart(const Eigen::MatrixX3i& F, const MeshTopology& topo,
 
 /**
  * Turns the frames so that they agree with given matchings: the angles alpha minimizing
- *   8 lambda sum_{inner edges fg} (A_f + A_g)/3 (delta_fg + alpha_g - alpha_f)^2
+ *   8 lambda sum_{inner edges fg} c |e_fg| / |c_f - c_g| (delta_fg + alpha_g - alpha_f)^2
  *     + (1 - lambda) sum_f A_f w_f alpha_f^2
- * (the smoothing energy of smoothFrames, expanded to second order about the current frames),
+ * (the smoothing energy of smoothFrames, expanded to second order about the current frames,
+ * with each edge weighted by its length over the distance between its triangles' centres, c
+ * such that the weights sum to the areas (A_f + A_g)/3 of smoothFrames' links: weighted by the
+ * areas, a triangulation whose diagonals lean one way turns the fitted field, 15 degrees from
+ * one latitude to another on a latitude-longitude sphere, 8 so),
  * where delta_fg is the angle left between the matched frames across the edge. lambda is
  * close to 1 by default (0.97): with a balance of 0.5 the curvature alignment keeps
  * the turning near the changed edges, and the map must fold there (on the six shared meshes at

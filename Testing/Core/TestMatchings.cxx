@@ -731,6 +731,34 @@ TEST(Matchings, WithoutTheOptimizationWholeTurnsAreStillSplitButNothingMerges)
   EXPECT_FALSE(kept.framesFitted);
 }
 
+TEST(Matchings, FittingLeavesAFieldItsMatchingsSayUntwistedWhateverWayTheDiagonalsLean)
+{
+  // A latitude-longitude sphere, each of whose quads is split along the diagonal that leans the
+  // same way, and the field along its parallels (index 1 at each pole): the matchings say that
+  // field, so the fit should leave it as it is, up to a common turn. With each edge weighted by
+  // its triangles' areas, (A_f + A_g) / 3, the leaning diagonals turned it by 15.1 degrees between
+  // latitudes (as the fit after the cone pairs turned the teapot's body by 25 degrees and sheared
+  // its quads); weighted by the edge over the centres' distance, 8.0 (4.8 and 2.4 within 30
+  // degrees of the equator: what is left comes from the fans around the poles).
+  const Mesh m = prepare(latLongSphere(32, 24));
+  const Eigen::MatrixX3d U = parallelField(m, 0);
+  const FrameTopology t = computeMatchings(m.s.F, m.topo, m.geometry, U);
+  const Eigen::VectorXd alpha =
+    fitFramesToMatchings(m.s.V, m.s.F, m.topo, m.geometry, U, t.matching, Eigen::VectorXd());
+  double low = 1e9, high = -1e9;
+  for (int f = 0; f < m.s.F.rows(); ++f)
+  {
+    const double z = (m.s.V(m.s.F(f, 0), 2) + m.s.V(m.s.F(f, 1), 2) + m.s.V(m.s.F(f, 2), 2)) / 3;
+    if (std::abs(z) < 0.8) // away from the poles' fans
+    {
+      low = std::min(low, alpha[f]);
+      high = std::max(high, alpha[f]);
+    }
+  }
+  std::printf("turn between latitudes %.2f degrees\n", (high - low) * 180 / Pi);
+  EXPECT_LT((high - low) * 180 / Pi, 10.0);
+}
+
 TEST(Matchings, FittingFramesToChangedMatchingsKeepsIndicesAndSpreadsTheTurn)
 {
   // After the split the matchings along the paths disagree with the frames by about a quarter
@@ -753,7 +781,9 @@ TEST(Matchings, FittingFramesToChangedMatchingsKeepsIndicesAndSpreadsTheTurn)
   std::printf(
     "largest matched angle %.3f -> %.3f rad\n", before, after.deviation.cwiseAbs().maxCoeff());
   EXPECT_GT(before, 1.0);
-  EXPECT_LT(after.deviation.cwiseAbs().maxCoeff(), 0.35);
+  // (0.28 rad with the edges weighted by their triangles' areas; weighted by their length over
+  // the centres' distance, 0.43 on an edge near a pole, where the fans' short edges weigh little)
+  EXPECT_LT(after.deviation.cwiseAbs().maxCoeff(), 0.5);
   EXPECT_THROW(fitFramesToMatchings(
                  m.s.V, m.s.F, m.topo, m.geometry, U.topRows(3), t.matching, Eigen::VectorXd()),
     std::invalid_argument);
