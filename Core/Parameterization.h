@@ -124,8 +124,9 @@ struct ParameterizationOptions
   /// this (conePairsForEvenScale, ConePairOptions::minimumGain); 0: neither. 6 against the former
   /// 13: the shared meshes' median edge RSD at 5,000, 6,500 and 8,000 quads 10.7, 10.3, 10.6 ->
   /// 9.8, 9.7, 10.3% and angle RSD 7.6, 7.5, 7.4 -> 7.5, 7.2, 7.0%, with fewer map defects over
-  /// the count sweep (Benchmarks/README.md, 2026-12-05). A map that keeps defects with its pairs
-  /// is made again without them (Parameterization::droppedConePairs).
+  /// the count sweep (Benchmarks/README.md, 2026-12-05). On a surface between two or more
+  /// boundary loops a map that keeps defects with its pairs is made again without them
+  /// (Parameterization::droppedConePairs).
   double conePairGain = 6.0;
   /// Before the map, triangles with an edge longer than this many grid edges (targetEdgeLength,
   /// or the edge of targetQuadCount quads) are split, longest edge first (refineLongEdges, which
@@ -191,8 +192,9 @@ struct Parameterization
   int movedSingularities = 0;
   /// pairs of opposite quarter cones added for quads of even size (conePairGain)
   int addedConePairs = 0;
-  /// pairs the map was first made with and then made again without, because it kept more defects
-  /// (flipped triangles and wrong windings) with them; addedConePairs is then 0
+  /// pairs the map of a surface between two or more boundary loops was first made with and then
+  /// made again without, because it kept more defects (flipped triangles and wrong windings) with
+  /// them; addedConePairs is then 0
   int droppedConePairs = 0;
   /// triangles where the grid is finer than edgeLength (maximumThinStripRefinement,
   /// adaptiveCurvature, or defectGridRefinement where it was kept)

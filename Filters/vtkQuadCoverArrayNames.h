@@ -144,8 +144,9 @@ constexpr const char* MovedSingularities = "MovedSingularities";
 /// field, 1 x int: pairs of opposite quarter cones the solver added for quads of even size
 /// (ConePairGain).
 constexpr const char* AddedConePairs = "AddedConePairs";
-/// field, 1 x int: cone pairs the solver dropped again, because the map kept more defects
-/// (flipped triangles, wrong windings) with them than without.
+/// field, 1 x int: cone pairs the solver dropped again on a surface between two or more boundary
+/// loops, because the map kept more defects (flipped triangles, wrong windings) with them than
+/// without.
 constexpr const char* DroppedConePairs = "DroppedConePairs";
 /// Field data of the solver's output: triangles where the map's grid is finer than EdgeLength,
 /// around strips of the surface narrower than a grid edge (MaximumThinStripRefinement), where
