@@ -39,7 +39,7 @@ public:
     , mesh_(mesh)
     , visited_(F.rows(), 0)
   {
-    meanEdge_ = meanQuadEdge();
+    meanEdge_ = meanQuadEdge(mesh);
     findReach();
     sharpDegree_.assign(V.rows(), 0);
     for (int e = 0; e < topo.numEdges(); ++e)
@@ -178,19 +178,6 @@ private:
     return along[1] > along[0] ? 1 : 0;
   }
 
-  double meanQuadEdge() const
-  {
-    double sum = 0.0;
-    for (int i = 0; i < static_cast<int>(mesh_.Q.rows()); ++i)
-    {
-      for (int k = 0; k < 4; ++k)
-      {
-        sum += (mesh_.V.row(mesh_.Q(i, k)) - mesh_.V.row(mesh_.Q(i, (k + 1) % 4))).norm();
-      }
-    }
-    return mesh_.Q.rows() > 0 ? sum / (4.0 * mesh_.Q.rows()) : 0.0;
-  }
-
   /// Per vertex, its longest quad edge (at most 3 mean edges): how far a crease its edges cross
   /// can be from it.
   void findReach()
@@ -275,10 +262,10 @@ private:
   bool near(const Eigen::Vector3d& p, int f, double within) const
   {
     const Eigen::Vector3d a = V_.row(F_(f, 0)), b = V_.row(F_(f, 1)), c = V_.row(F_(f, 2));
-    const Eigen::Vector3d centre = (a + b + c) / 3.0;
+    const Eigen::Vector3d middle = centre(f);
     const double radius =
-      std::max({ (a - centre).norm(), (b - centre).norm(), (c - centre).norm() });
-    return (p - centre).norm() - radius < within;
+      std::max({ (a - middle).norm(), (b - middle).norm(), (c - middle).norm() });
+    return (p - middle).norm() - radius < within;
   }
 
   /// best, or the closest point of edge e to p where it is closer.

@@ -43,6 +43,19 @@ VertexQuads vertexQuads(const QuadMesh& mesh)
   return r;
 }
 
+double meanQuadEdge(const QuadMesh& mesh)
+{
+  double sum = 0.0;
+  for (int i = 0; i < static_cast<int>(mesh.Q.rows()); ++i)
+  {
+    for (int k = 0; k < 4; ++k)
+    {
+      sum += (mesh.V.row(mesh.Q(i, k)) - mesh.V.row(mesh.Q(i, (k + 1) % 4))).norm();
+    }
+  }
+  return mesh.Q.rows() > 0 ? sum / (4.0 * mesh.Q.rows()) : 0.0;
+}
+
 std::vector<char> quadMeshBoundary(const QuadMesh& mesh)
 {
   std::vector<char> boundary(mesh.V.rows(), 0);

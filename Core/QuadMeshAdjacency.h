@@ -1,5 +1,6 @@
 // QuadMeshAdjacency.h: what the quad stage's repairs ask of a quad mesh's connectivity: the quads
-// of each vertex, the vertices on its boundary or on the surface's, those near some quads.
+// of each vertex, the vertices on its boundary or on the surface's, those near some quads; and
+// its mean edge, their unit of length.
 #ifndef quadcover_QuadMeshAdjacency_h
 #define quadcover_QuadMeshAdjacency_h
 
@@ -22,6 +23,10 @@ struct VertexQuads
 };
 
 VertexQuads vertexQuads(const QuadMesh& mesh);
+
+/// The mean length of the quads' edges, each quad's four counted (an edge of two quads twice);
+/// 0 without quads.
+double meanQuadEdge(const QuadMesh& mesh);
 
 /// #V, 1 for a vertex on an edge that does not have exactly two quads (the quad mesh's boundary,
 /// or a non-manifold edge).

@@ -85,7 +85,7 @@ public:
     findCreases();
     fixVertices();
     collectVertexQuads();
-    measureMeanEdge();
+    meanEdge = meanQuadEdge(mesh);
   }
 
   int fixedVertices() const
@@ -203,20 +203,6 @@ private:
     VertexQuads adjacency = vertexQuads(mesh);
     offsets = std::move(adjacency.offsets);
     quadsOf = std::move(adjacency.quads);
-  }
-
-  void measureMeanEdge()
-  {
-    const int nQ = static_cast<int>(mesh.Q.rows());
-    meanEdge = 0.0;
-    for (int i = 0; i < nQ; ++i)
-    {
-      for (int k = 0; k < 4; ++k)
-      {
-        meanEdge += (mesh.V.row(mesh.Q(i, k)) - mesh.V.row(mesh.Q(i, (k + 1) % 4))).norm();
-      }
-    }
-    meanEdge /= 4.0 * nQ;
   }
 
   /// The area-weighted mean of the centres of v's quads; false when their area is 0.
