@@ -377,6 +377,7 @@ private:
     }
     Eigen::SparseMatrix<double> H(n, n);
     H.setFromTriplets(t.begin(), t.end());
+    std::vector<Eigen::Triplet<double>>().swap(t); // not kept beside the factor
     progress.report(0.2);
     if (n > 0)
     {
@@ -465,7 +466,8 @@ private:
  */
 struct GlobalSystem
 {
-  std::vector<Eigen::Triplet<Complex>> t; ///< the matrix without its diagonal
+  /// the matrix without its diagonal (room for it kept), until factor() takes it
+  std::vector<Eigen::Triplet<Complex>> t;
   Eigen::VectorXcd b;
   Eigen::VectorXd diag, mass;
   double alignTotal = 0.0, smoothTotal = 0.0;
@@ -477,6 +479,7 @@ struct GlobalSystem
   {
     const Problem& P = s.P;
     const double lambda = P.lambda;
+    t.reserve(2 * P.links.size() + static_cast<std::size_t>(s.n));
     auto fixedU = [&](int f) { return std::polar(1.0, 4.0 * (s.phi[f] + s.fixedAlpha[f])); };
     for (const Link& l : P.links)
     {
@@ -508,20 +511,21 @@ struct GlobalSystem
 
   double meanDiagonal() const { return diag.sum() / diag.size(); }
 
-  /// Factors the matrix shifted by sigma times the mass.
-  bool factor(double sigma, SpdSolver<Complex>& solver) const
+  /// Factors the matrix shifted by sigma times the mass; once: its entries go (they are not kept
+  /// beside the factor).
+  bool factor(double sigma, SpdSolver<Complex>& solver)
   {
     const int n = static_cast<int>(diag.size());
     const double meanDiag = this->meanDiagonal();
-    std::vector<Eigen::Triplet<Complex>> all = t;
     // The floor keeps the matrix definite where a triangle has neither links nor area (an
     // isolated zero-area triangle), which would otherwise drop the start for the whole mesh.
     for (int i = 0; i < n; ++i)
     {
-      all.emplace_back(i, i, Complex(diag[i] + sigma * mass[i] + 1e-9 * meanDiag + 1e-300, 0.0));
+      t.emplace_back(i, i, Complex(diag[i] + sigma * mass[i] + 1e-9 * meanDiag + 1e-300, 0.0));
     }
     Eigen::SparseMatrix<Complex> A(n, n);
-    A.setFromTriplets(all.begin(), all.end());
+    A.setFromTriplets(t.begin(), t.end());
+    std::vector<Eigen::Triplet<Complex>>().swap(t);
     solver.compute(A);
     return solver.info() == Eigen::Success;
   }
@@ -564,7 +568,7 @@ Eigen::VectorXcd smoothestField(const SpdSolver<Complex>& solver, const Eigen::V
 std::vector<Eigen::VectorXcd> globalStarts(
   const Smoothing& s, int numConstrained, const Progress& progress)
 {
-  const GlobalSystem G(s);
+  GlobalSystem G(s);
   progress.report(0.05);
   const double lambda = s.P.lambda;
   const double meanDiag = G.meanDiagonal(), meanMass = G.mass.sum() / s.n;
@@ -658,6 +662,7 @@ Eigen::VectorXd frameCoherence(const Smoothing& s, double radius)
   }
   Eigen::SparseMatrix<Complex> A(nf, nf);
   A.setFromTriplets(triplets.begin(), triplets.end());
+  std::vector<Eigen::Triplet<Complex>>().swap(triplets); // not kept beside the factor
   SpdSolver<Complex> solver{ Factorization::Automatic };
   solver.compute(A);
   if (solver.info() != Eigen::Success)
