@@ -33,11 +33,13 @@ Eigen::VectorXd fitFramesToMatchings(const Eigen::MatrixX3d& V, const Eigen::Mat
   }
   const Eigen::VectorXd phi = vectorAngles(geometry.bases, frameU);
   Eigen::VectorXd area(nF);
+  std::vector<Eigen::Vector3d> centre(nF);
   for (int f = 0; f < nF; ++f)
   {
     const Eigen::Vector3d a = V.row(F(f, 1)) - V.row(F(f, 0));
     const Eigen::Vector3d b = V.row(F(f, 2)) - V.row(F(f, 0));
     area[f] = 0.5 * a.cross(b).norm();
+    centre[f] = (V.row(F(f, 0)) + V.row(F(f, 1)) + V.row(F(f, 2))) / 3.0;
   }
   // The unknowns: the free frames (a held one keeps alpha = 0), so that a fit held but near a
   // few changed edges solves a system of that neighbourhood's size.
@@ -63,23 +65,22 @@ Eigen::VectorXd fitFramesToMatchings(const Eigen::MatrixX3d& V, const Eigen::Mat
       t.emplace_back(unknown[f], unknown[f], (1.0 - lambda) * area[f] * w + 1e-9 * area[f]);
     }
   }
-  // Each edge's weight: its length over the distance between its triangles' centres, scaled
-  // so that the weights sum to what the areas (A_f + A_g) / 3 of smoothFrames' energy sum to
-  // (the balance with the alignment term stays). Weighted by the areas, a triangulation whose
-  // diagonals lean one way turns the fitted field: the teapot's body by 25 degrees, which
-  // sheared its quads (Benchmarks/README.md, 2026-12-05).
-  const auto edgeWeight = [&](int f, int k, int g) {
-    const Eigen::Vector3d cf = (V.row(F(f, 0)) + V.row(F(f, 1)) + V.row(F(f, 2))) / 3.0;
-    const Eigen::Vector3d cg = (V.row(F(g, 0)) + V.row(F(g, 1)) + V.row(F(g, 2))) / 3.0;
-    const double distance = (cf - cg).norm();
-    return distance > 0 ? (V.row(F(f, (k + 1) % 3)) - V.row(F(f, k))).norm() / distance : 0.0;
-  };
+  // Each edge's weight (at corner 3f + k of its face f < g): its length over the distance between
+  // its triangles' centres, scaled so that the weights sum to what the areas (A_f + A_g) / 3 of
+  // smoothFrames' energy sum to (the balance with the alignment term stays). Weighted by the areas,
+  // a triangulation whose diagonals lean one way turns the fitted field: the teapot's body by 25
+  // degrees, which sheared its quads (Benchmarks/README.md, 2026-12-05).
+  std::vector<double> edgeWeight(3 * static_cast<std::size_t>(nF), 0.0);
   double areaSum = 0.0, weightSum = 0.0;
   forEachNeighbor(topo, [&](int f, int k, int g) {
     if (g > f)
     {
+      const double distance = (centre[f] - centre[g]).norm();
+      const double w =
+        distance > 0 ? (V.row(F(f, (k + 1) % 3)) - V.row(F(f, k))).norm() / distance : 0.0;
+      edgeWeight[3 * static_cast<std::size_t>(f) + k] = w;
       areaSum += (area[f] + area[g]) / 3.0;
-      weightSum += edgeWeight(f, k, g);
+      weightSum += w;
     }
   });
   const double scale = weightSum > 0 ? areaSum / weightSum : 0.0;
@@ -91,7 +92,7 @@ Eigen::VectorXd fitFramesToMatchings(const Eigen::MatrixX3d& V, const Eigen::Mat
     }
     // residual after the rotations: delta + alpha_g - alpha_f
     const double delta = residual(turning(geometry, phi, f, k, g), matching(f, k));
-    const double c = 8.0 * lambda * scale * edgeWeight(f, k, g);
+    const double c = 8.0 * lambda * scale * edgeWeight[3 * static_cast<std::size_t>(f) + k];
     if (a >= 0)
     {
       t.emplace_back(a, a, c);
