@@ -29,6 +29,9 @@ constexpr const char* SplitVertices = "SplitVertices";
 /// triangles of components too coarse for a map (MinimumComponentTriangleCount), split into four
 /// at their edges' midpoints, again until the component had enough
 constexpr const char* RefinedTriangles = "RefinedTriangles";
+/// edges collapsed (points removed) to bring a surface finer than the quads need down to
+/// MaximumTriangleCount triangles
+constexpr const char* CollapsedEdges = "CollapsedEdges";
 
 // ---- vtkCurvatureFrames (cell data, one tuple per triangle) ----
 /// 2 x double: kappa1 >= kappa2. Positive where the surface bends away from its normal

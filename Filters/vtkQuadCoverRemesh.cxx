@@ -3,6 +3,7 @@
 #include "vtkCurvatureFrames.h"
 #include "vtkFrameSmoother.h"
 #include "vtkMatchingBuilder.h"
+#include "vtkQuadCoverArrayNames.h"
 #include "vtkQuadCoverErrorObserver.h"
 #include "vtkQuadCoverPieces.h"
 #include "vtkQuadCoverSolver.h"
@@ -10,7 +11,9 @@
 #include "vtkQuadExtractor.h"
 
 #include "vtkCallbackCommand.h"
+#include "vtkDataArray.h"
 #include "vtkExecutive.h"
+#include "vtkFieldData.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
 #include "vtkObjectFactory.h"
@@ -200,6 +203,20 @@ int vtkQuadCoverRemesh::RequestData(
   {
     this->Stage(i)->SetAbortExecute(0);
   }
+  // a surface far finer than the quads need is simplified, the quads put back onto it
+  this->Repair->SetMaximumTriangleCount(this->MaximumTriangleCount >= 0
+      ? this->MaximumTriangleCount
+      : vtkQuadCoverSurfaceRepair::MaximumTriangleCountFor(
+          this->Surface, this->GetTargetQuadCount(), this->GetTargetEdgeLength()));
+  this->Repair->Update();
+  vtkDataArray* collapsed =
+    this->Repair->GetOutput()->GetFieldData()->GetArray(vtkQuadCoverArrayNames::CollapsedEdges);
+  const bool simplified = collapsed && collapsed->GetNumberOfTuples() > 0 &&
+    collapsed->GetTuple1(0) > 0 && !this->Repair->GetAbortExecute();
+  if (simplified != (this->Extractor->GetNumberOfInputConnections(1) > 0))
+  {
+    this->Extractor->SetSourceData(simplified ? this->Surface.Get() : nullptr);
+  }
   this->Extractor->Update();
   bool aborted = false;
   for (int i = 0; i < StageCount; ++i)
@@ -236,4 +253,5 @@ void vtkQuadCoverRemesh::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "FeatureLines: " << (this->GetFeatureLines() ? "On" : "Off") << "\n";
   os << indent << "FeatureAngle: " << this->GetFeatureAngle() << "\n";
   os << indent << "NumberOfThreads: " << this->GetNumberOfThreads() << "\n";
+  os << indent << "MaximumTriangleCount: " << this->MaximumTriangleCount << "\n";
 }

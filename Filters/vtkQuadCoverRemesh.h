@@ -9,9 +9,9 @@
  * The properties are the command line's main options and set the stages that use them:
  * TargetQuadCount or TargetEdgeLength (the solver), FeatureLines (the solver), FeatureAngle (the
  * smoother, the solver and the quad extractor), NumberOfThreads (the curvature estimate, the
- * smoother and the solver). Every other option is reached through the stage itself, e.g.
- * GetFrameSmoother()->SetSmoothingWeight(1); a change there re-runs the chain (GetMTime includes
- * the stages').
+ * smoother and the solver), MaximumTriangleCount (the repair, and the extractor's source). Every
+ * other option is reached through the stage itself, e.g. GetFrameSmoother()->SetSmoothingWeight(1);
+ * a change there re-runs the chain (GetMTime includes the stages').
  *
  * Errors: the first stage's error, as that stage words it ("Cannot smooth frames: ..."), through
  * vtkErrorMacro; RequestData then returns 0. The stages' warnings become this filter's.
@@ -88,6 +88,17 @@ public:
   ///@}
 
   ///@{
+  /**
+   * A surface of more triangles is simplified to about this many first (vtkQuadCoverSurfaceRepair's
+   * MaximumTriangleCount) and the quads put back onto it (vtkQuadExtractor's source) (default -1:
+   * 16 triangles a quad asked, at least 100,000, vtkQuadCoverSurfaceRepair::
+   * MaximumTriangleCountFor; 0: never).
+   */
+  vtkSetClampMacro(MaximumTriangleCount, vtkIdType, -1, 2000000000);
+  vtkGetMacro(MaximumTriangleCount, vtkIdType);
+  ///@}
+
+  ///@{
   /** The stages, for their other properties. */
   vtkQuadCoverSurfaceRepair* GetSurfaceRepair();
   vtkCurvatureFrames* GetCurvatureFrames();
@@ -129,6 +140,7 @@ private:
   vtkNew<vtkQuadCoverErrorObserver> Errors;
   vtkNew<vtkCallbackCommand> Progress;
   bool EmptyPiece = false;
+  vtkIdType MaximumTriangleCount = -1;
   /// The input Surface was last copied from (compared, never dereferenced) and its MTime then.
   const void* LastInput = nullptr;
   vtkMTimeType LastInputTime = 0;

@@ -20,6 +20,9 @@
 #include "MeshTopology.h"
 #include "SurfaceRefinement.h"
 #include "SurfaceRepair.h"
+#include "SurfaceSimplification.h"
+
+#include <Eigen/Geometry>
 
 #include <algorithm>
 #include <cmath>
@@ -41,6 +44,7 @@ struct Counts
   vtkIdType cutEdges = 0;
   vtkIdType splitVertices = 0;
   vtkIdType refinedTriangles = 0;
+  vtkIdType collapsedEdges = 0;
 };
 
 /// Updates a VTK filter on `input`; its first error is thrown.
@@ -212,6 +216,51 @@ void MakeManifold(vtkPolyData* surface, const vtkQuadCoverSurface& in, Counts& c
   surface->SetPolys(made->GetPolys());
 }
 
+/// Brings `surface` down to about `maximum` triangles (quadcover::simplifySurface, on the
+/// points scaled as `in` says): the kept points with their point data, the kept triangles with
+/// their cell data. Counts go to `counts`.
+void Simplify(
+  vtkPolyData* surface, const vtkQuadCoverSurface& in, vtkIdType maximum, Counts& counts)
+{
+  if (maximum <= 0 || surface->GetNumberOfPolys() <= maximum)
+  {
+    return;
+  }
+  Eigen::MatrixX3d V = in.InCoreUnits(vtkQuadCoverEigen::Points(surface));
+  Eigen::MatrixX3i F = vtkQuadCoverEigen::Triangles(surface);
+  const quadcover::Simplification s =
+    quadcover::simplifySurface(V, F, std::max<vtkIdType>(maximum, 1000));
+  counts.collapsedEdges = s.collapsedEdges;
+  if (s.collapsedEdges == 0)
+  {
+    return;
+  }
+  vtkNew<vtkPoints> points;
+  points->SetDataType(surface->GetPoints()->GetDataType());
+  points->SetNumberOfPoints(static_cast<vtkIdType>(s.pointSource.size()));
+  vtkNew<vtkPointData> pointData;
+  pointData->CopyAllocate(surface->GetPointData(), points->GetNumberOfPoints());
+  for (vtkIdType i = 0; i < points->GetNumberOfPoints(); ++i)
+  {
+    points->SetPoint(i, surface->GetPoint(s.pointSource[i]));
+    pointData->CopyData(surface->GetPointData(), s.pointSource[i], i);
+  }
+  vtkNew<vtkCellArray> polys;
+  polys->AllocateExact(F.rows(), 3 * F.rows());
+  vtkNew<vtkCellData> cellData;
+  cellData->CopyAllocate(surface->GetCellData(), F.rows());
+  for (Eigen::Index f = 0; f < F.rows(); ++f)
+  {
+    const vtkIdType ids[3] = { F(f, 0), F(f, 1), F(f, 2) };
+    polys->InsertNextCell(3, ids);
+    cellData->CopyData(surface->GetCellData(), s.triangleSource[f], f);
+  }
+  surface->SetPoints(points);
+  surface->SetPolys(polys);
+  surface->GetPointData()->ShallowCopy(pointData);
+  surface->GetCellData()->ShallowCopy(cellData);
+}
+
 /// Refines the components of `surface` with fewer than `minimum` triangles
 /// (quadcover::refineCoarseComponents): point data interpolated at the midpoints, cell data
 /// copied to the parts. Counts go to `counts`.
@@ -281,6 +330,7 @@ void vtkQuadCoverSurfaceRepair::Execute(vtkQuadCoverSurface& in, vtkInformationV
   output->ShallowCopy(cleaned);
   counts.removedCells += RemoveRedundantTriangles(output, in);
   MakeManifold(output, in, counts);
+  Simplify(output, in, this->MaximumTriangleCount, counts);
   RefineCoarseComponents(output, this->MinimumComponentTriangleCount, counts);
 
   namespace names = vtkQuadCoverArrayNames;
@@ -293,6 +343,43 @@ void vtkQuadCoverSurfaceRepair::Execute(vtkQuadCoverSurface& in, vtkInformationV
   AddField<vtkIntArray>(fd, names::CutEdges, { double(counts.cutEdges) });
   AddField<vtkIntArray>(fd, names::SplitVertices, { double(counts.splitVertices) });
   AddField<vtkIntArray>(fd, names::RefinedTriangles, { double(counts.refinedTriangles) });
+  AddField<vtkIntArray>(fd, names::CollapsedEdges, { double(counts.collapsedEdges) });
+}
+
+//------------------------------------------------------------------------------
+vtkIdType vtkQuadCoverSurfaceRepair::MaximumTriangleCountFor(
+  vtkPolyData* surface, int targetQuadCount, double targetEdgeLength)
+{
+  double quads = targetQuadCount;
+  if (targetEdgeLength > 0.0)
+  {
+    // the area in squares of that side: each edge divided first, so that the sum stays in
+    // double's range for a surface of any size
+    quads = 0.0;
+    vtkCellArray* polys = surface->GetPolys();
+    const vtkIdType n = surface->GetNumberOfPoints();
+    vtkNew<vtkIdList> ids;
+    for (polys->InitTraversal(); polys->GetNextCell(ids);)
+    {
+      double x[3][3];
+      for (vtkIdType k = 2; k < ids->GetNumberOfIds(); ++k) // a polygon as a fan
+      {
+        const vtkIdType corners[3] = { ids->GetId(0), ids->GetId(k - 1), ids->GetId(k) };
+        if (std::any_of(corners, corners + 3, [n](vtkIdType p) { return p < 0 || p >= n; }))
+        {
+          continue; // refused by the repair
+        }
+        for (int c = 0; c < 3; ++c)
+        {
+          surface->GetPoint(corners[c], x[c]);
+        }
+        const Eigen::Vector3d a(x[0]), b(x[1]), c(x[2]);
+        quads += ((b - a) / targetEdgeLength).cross((c - a) / targetEdgeLength).norm() / 2.0;
+      }
+    }
+  }
+  return static_cast<vtkIdType>(
+    std::min<long long>(quadcover::simplificationBudget(quads), 2000000000));
 }
 
 //------------------------------------------------------------------------------
@@ -300,4 +387,5 @@ void vtkQuadCoverSurfaceRepair::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "MinimumComponentTriangleCount: " << this->MinimumComponentTriangleCount << "\n";
+  os << indent << "MaximumTriangleCount: " << this->MaximumTriangleCount << "\n";
 }

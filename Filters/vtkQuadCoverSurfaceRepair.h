@@ -29,6 +29,14 @@
  *   (RefinedTriangles; point data interpolated, cell data copied to the parts): a coarse cone,
  *   fans of long needles around its tips, leaves a map no room (quadcover::refineCoarseComponents).
  *   The points stay and the new ones lie on the old edges: the surface does not change.
+ * - a surface of more than MaximumTriangleCount triangles (when it is set; 0 by default) is
+ *   brought down to about that many by edge collapses (CollapsedEdges; point data of the kept
+ *   points and cell data of the kept triangles carried): a point moves onto a neighbour, the
+ *   cheapest by the quadric error of its planes first, keeping the topology, boundaries, edges
+ *   bent more than 40 degrees (points on them move along them only) and each component's share
+ *   (quadcover::simplifySurface). vtkQuadCoverRemesh and the command line set it from the quads
+ *   asked (16 triangles a quad, at least 100,000; quadcover::simplificationBudget), and put the
+ *   quads back onto the input surface (vtkQuadExtractor's second input).
  * The input's point, cell and field data are kept (cell data follow the triangles).
  *
  * Errors (no output): no points, point ids out of range, NaN or infinite coordinates, no
@@ -41,6 +49,8 @@
 
 #include "vtkQuadCoverAlgorithm.h"
 #include "vtkQuadCoverFiltersModule.h" // for export macro
+
+class vtkPolyData;
 
 class VTKQUADCOVERFILTERS_EXPORT vtkQuadCoverSurfaceRepair : public vtkQuadCoverAlgorithm
 {
@@ -56,6 +66,21 @@ public:
   vtkGetMacro(MinimumComponentTriangleCount, int);
   ///@}
 
+  ///@{
+  /** A surface with more triangles is simplified to about this many (default 0: never; fewer
+   * than 1000 read as 1000). vtkQuadCoverRemesh sets it from its quads
+   * (MaximumTriangleCountFor). */
+  vtkSetClampMacro(MaximumTriangleCount, vtkIdType, 0, 2000000000);
+  vtkGetMacro(MaximumTriangleCount, vtkIdType);
+  ///@}
+
+  /** The MaximumTriangleCount for `surface` to be meshed into `targetQuadCount` quads, or into
+   * quads of side `targetEdgeLength` where that is positive (its polygons' area over the length
+   * squared): 16 triangles a quad, at least 100,000 (quadcover::simplificationBudget); 0 for no
+   * quads. vtkQuadCoverRemesh and the command line use it. */
+  static vtkIdType MaximumTriangleCountFor(
+    vtkPolyData* surface, int targetQuadCount, double targetEdgeLength);
+
 protected:
   vtkQuadCoverSurfaceRepair();
   ~vtkQuadCoverSurfaceRepair() override = default;
@@ -64,6 +89,7 @@ protected:
 
   // default: quadcover::RefinementOptions
   int MinimumComponentTriangleCount;
+  vtkIdType MaximumTriangleCount = 0;
 
 private:
   vtkQuadCoverSurfaceRepair(const vtkQuadCoverSurfaceRepair&) = delete;

@@ -14,7 +14,14 @@
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
 
+#include "vtkAlgorithmOutput.h"
+#include "vtkInformation.h"
+#include "vtkInformationVector.h"
+#include "vtkStreamingDemandDrivenPipeline.h"
+#include "vtkTriangleFilter.h"
+
 #include "QuadMeshing.h"
+#include "SurfaceLocator.h"
 
 #include <algorithm>
 #include <cmath>
@@ -119,12 +126,12 @@ void AddFigures(vtkFieldData* fd, const quadcover::QuadMeshResult& r)
 
 /// Field data HausdorffDistance: two-sided, surface to quads, quads to surface, in % of the
 /// surface's bounding-box diagonal.
-void AddHausdorffDistance(
-  vtkFieldData* fd, const vtkQuadCoverSurface& in, const quadcover::QuadMesh& quads)
+void AddHausdorffDistance(vtkFieldData* fd, const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F,
+  const quadcover::QuadMesh& quads)
 {
-  const quadcover::HausdorffSamples s = quadcover::hausdorffSamples(in.V, in.F, quads.V, quads.Q);
+  const quadcover::HausdorffSamples s = quadcover::hausdorffSamples(V, F, quads.V, quads.Q);
   const double toQuads = quadcover::largestDistance(s.surfacePoints, quads.V, s.quadTriangles);
-  const double toSurface = quadcover::largestDistance(s.quadPoints, in.V, in.F);
+  const double toSurface = quadcover::largestDistance(s.quadPoints, V, F);
   if (!std::isfinite(toQuads) || !std::isfinite(toSurface))
   {
     return; // no quad (or surface triangle) of positive area to measure against
@@ -133,12 +140,98 @@ void AddHausdorffDistance(
     { 100.0 * std::max(toQuads, toSurface) / s.diagonal, 100.0 * toQuads / s.diagonal,
       100.0 * toSurface / s.diagonal });
 }
+
+/// The triangles of `source` (any polygons, triangulated), in core units as `in` says.
+void SourceSurface(
+  vtkPolyData* source, const vtkQuadCoverSurface& in, Eigen::MatrixX3d& V, Eigen::MatrixX3i& F)
+{
+  vtkNew<vtkTriangleFilter> triangles;
+  triangles->PassVertsOff();
+  triangles->PassLinesOff();
+  vtkNew<vtkPolyData> none;
+  triangles->SetInputData(source ? source : none.Get());
+  triangles->Update();
+  vtkPolyData* t = triangles->GetOutput();
+  if (!source || t->GetNumberOfPolys() == 0 || t->GetPolys()->IsHomogeneous() != 3)
+  {
+    throw std::invalid_argument("the source surface (input 1) has no triangles");
+  }
+  V = in.InCoreUnits(vtkQuadCoverEigen::Points(t));
+  F = vtkQuadCoverEigen::Triangles(t);
+  if (F.minCoeff() < 0 || F.maxCoeff() >= V.rows() || !V.allFinite())
+  {
+    throw std::invalid_argument(
+      "the source surface (input 1) has point ids out of range or non-finite points");
+  }
+}
+
+/// Each quad vertex moved to its closest point on the surface V, F.
+void PutOnto(quadcover::QuadMesh& quads, const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F)
+{
+  const quadcover::SurfaceLocator locator(V, F);
+  for (Eigen::Index v = 0; v < quads.V.rows(); ++v)
+  {
+    const quadcover::SurfaceLocator::Hit hit = locator.closest(quads.V.row(v).transpose());
+    if (hit.triangle >= 0)
+    {
+      quads.V.row(v) = hit.point.transpose();
+    }
+  }
+}
+}
+
+//------------------------------------------------------------------------------
+void vtkQuadExtractor::SetSourceConnection(vtkAlgorithmOutput* source)
+{
+  this->SetInputConnection(1, source);
+}
+
+//------------------------------------------------------------------------------
+void vtkQuadExtractor::SetSourceData(vtkPolyData* source)
+{
+  this->SetInputData(1, source);
+}
+
+//------------------------------------------------------------------------------
+int vtkQuadExtractor::FillInputPortInformation(int port, vtkInformation* info)
+{
+  if (port == 1)
+  {
+    info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkPolyData");
+    info->Set(vtkAlgorithm::INPUT_IS_OPTIONAL(), 1);
+    return 1;
+  }
+  return this->Superclass::FillInputPortInformation(port, info);
+}
+
+//------------------------------------------------------------------------------
+int vtkQuadExtractor::RequestUpdateExtent(
+  vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  const int done = this->Superclass::RequestUpdateExtent(request, inputVector, outputVector);
+  // the source is read as a whole, as the surface is
+  using SDDP = vtkStreamingDemandDrivenPipeline;
+  vtkInformation* surface = inputVector[0]->GetInformationObject(0);
+  vtkInformation* source = inputVector[1]->GetInformationObject(0);
+  if (surface && source)
+  {
+    for (vtkInformationIntegerKey* key : { SDDP::UPDATE_PIECE_NUMBER(),
+           SDDP::UPDATE_NUMBER_OF_PIECES(), SDDP::UPDATE_NUMBER_OF_GHOST_LEVELS() })
+    {
+      if (surface->Has(key))
+      {
+        source->Set(key, surface->Get(key));
+      }
+    }
+  }
+  return done;
 }
 
 //------------------------------------------------------------------------------
 vtkQuadExtractor::vtkQuadExtractor()
   : vtkQuadCoverAlgorithm(MANIFOLD_SURFACE, "extract quads")
 {
+  this->SetNumberOfInputPorts(2);
   const quadcover::QuadMeshOptions defaults;
   this->ComputeHausdorffDistance = defaults.computeHausdorffDistance;
   this->RelaxationIterations = defaults.relaxationIterations;
@@ -174,7 +267,7 @@ void vtkQuadExtractor::Execute(vtkQuadCoverSurface& in, vtkInformationVector* ou
   options.snapToCreases = this->SnapToCreases;
   options.featureAngle = this->FeatureAngle;
   options.minimumFeatureLength = this->MinimumFeatureLength;
-  const quadcover::QuadMeshResult r = quadcover::buildQuadMesh(
+  quadcover::QuadMeshResult r = quadcover::buildQuadMesh(
     in.V, in.F, in.topo, uv, options, vtkQuadCoverEigen::CoreProgress(this, 0.1, 0.7));
   const quadcover::QuadMesh& quads = r.mesh;
   if (r.droppedCells() > 0 || quads.nonIntegerTransitions > 0)
@@ -204,6 +297,15 @@ void vtkQuadExtractor::Execute(vtkQuadCoverSurface& in, vtkInformationVector* ou
     throw std::invalid_argument("no grid cell of the map gave a quad (is the grid much coarser "
                                 "than the surface?)");
   }
+  // the surface measured against: the source where one is connected, the quads put onto it
+  Eigen::MatrixX3d sourceV;
+  Eigen::MatrixX3i sourceF;
+  const bool hasSource = this->GetNumberOfInputConnections(1) > 0;
+  if (hasSource)
+  {
+    SourceSurface(vtkPolyData::SafeDownCast(this->GetInputDataObject(1, 0)), in, sourceV, sourceF);
+    PutOnto(r.mesh, sourceV, sourceF);
+  }
   vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
   WriteQuads(output, r, in);
   AddFigures(output->GetFieldData(), r);
@@ -214,7 +316,8 @@ void vtkQuadExtractor::Execute(vtkQuadCoverSurface& in, vtkInformationVector* ou
     {
       throw quadcover::Cancelled();
     }
-    AddHausdorffDistance(output->GetFieldData(), in, quads);
+    AddHausdorffDistance(
+      output->GetFieldData(), hasSource ? sourceV : in.V, hasSource ? sourceF : in.F, quads);
   }
 }
 

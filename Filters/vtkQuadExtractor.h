@@ -36,12 +36,25 @@
 #include "vtkQuadCoverAlgorithm.h"
 #include "vtkQuadCoverFiltersModule.h" // for export macro
 
+class vtkAlgorithmOutput;
+class vtkPolyData;
+
 class VTKQUADCOVERFILTERS_EXPORT vtkQuadExtractor : public vtkQuadCoverAlgorithm
 {
 public:
   static vtkQuadExtractor* New();
   vtkTypeMacro(vtkQuadExtractor, vtkQuadCoverAlgorithm);
   void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  ///@{
+  /** An optional second input (port 1), the surface the quads are put onto: each quad vertex
+   * moves to its closest point on it, and the Hausdorff distance is measured against it. For a
+   * surface that vtkQuadCoverSurfaceRepair simplified (MaximumTriangleCount), connect the
+   * surface as it was before; the quads then lie on it, not on the simplified one. Any
+   * polygons (triangulated here); none connected (the default): the quads stay on the input. */
+  void SetSourceConnection(vtkAlgorithmOutput* source);
+  void SetSourceData(vtkPolyData* source);
+  ///@}
 
   ///@{
   /** Compute the two-sided Hausdorff distance to the input (default on; it costs about as much
@@ -128,6 +141,8 @@ protected:
   ~vtkQuadExtractor() override = default;
 
   void Execute(vtkQuadCoverSurface& input, vtkInformationVector* outputVector) override;
+  int FillInputPortInformation(int port, vtkInformation* info) override;
+  int RequestUpdateExtent(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
   // defaults: quadcover::QuadMeshOptions
   bool ComputeHausdorffDistance;

@@ -300,6 +300,20 @@ std::string Option::Text(double value) const
   return text;
 }
 
+namespace
+{
+/// --maximum-triangle-count: the repair's property, which the command line sets from the quads
+/// asked unless it is given (Pipeline::AutomaticTriangleCount).
+Option MaximumTriangleCountOption(vtkQuadCoverSurfaceRepair* repair)
+{
+  Option o = QC_NUMBER("repair", repair, MaximumTriangleCount,
+    "simplify a surface of more triangles to about this many first (the quads are put back "
+    "onto it), 0: never");
+  o.defaultText = "16 a quad asked, at least 100000";
+  return o;
+}
+}
+
 std::vector<Option> StageOptions(Pipeline& p)
 {
   vtkQuadCoverSurfaceRepair* repair = p.Repair;
@@ -314,6 +328,7 @@ std::vector<Option> StageOptions(Pipeline& p)
   return {
     QC_NUMBER("repair", repair, MinimumComponentTriangleCount,
       "refine components with fewer triangles (the surface stays), 0: none"),
+    MaximumTriangleCountOption(repair),
     QC_NUMBER("curvature", curvature, NeighborhoodRadius,
       "radius of the curvature neighbourhood, in median edge lengths"),
     // three stages: written out
@@ -494,8 +509,8 @@ void PrintUsage(std::ostream& os, const std::vector<Option>& options)
     const std::string flag = o.kind == Option::Kind::Switch
       ? "--[no-]" + o.flag
       : "--" + o.flag + (o.kind == Option::Kind::Choice ? " MODE" : (whole ? " N" : " X"));
-    os << "  " << flag << "\n      " << o.meaning << range << " (default " << o.Text(o.get())
-       << ")\n";
+    os << "  " << flag << "\n      " << o.meaning << range << " (default "
+       << (o.defaultText.empty() ? o.Text(o.get()) : o.defaultText) << ")\n";
   }
   os << "\n"
         "Repaired silently (stage repair, counted in --stats): polygons and strips\n"

@@ -31,6 +31,8 @@ struct Option
   double low = 0.0;
   double high = 0.0;
   std::vector<std::string> choices;
+  /// --help's default where the command line sets one of its own (otherwise the filter's)
+  std::string defaultText;
   std::function<double()> get;
   std::function<void(double)> set;
 

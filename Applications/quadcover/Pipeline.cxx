@@ -2,8 +2,11 @@
 
 #include "vtkCellArray.h"
 #include "vtkCommand.h"
+#include "vtkDataArray.h"
+#include "vtkFieldData.h"
 #include "vtkMath.h"
 #include "vtkPolyData.h"
+#include "vtkQuadCoverArrayNames.h"
 #include "vtkQuadCoverErrorObserver.h"
 
 #include <algorithm>
@@ -46,6 +49,13 @@ double AreaInSquares(vtkPolyData* surface, double length)
     }
   }
   return area;
+}
+
+/// Whether the repair simplified `repaired` (its CollapsedEdges).
+bool Collapsed(vtkPolyData* repaired)
+{
+  vtkDataArray* a = repaired->GetFieldData()->GetArray(vtkQuadCoverArrayNames::CollapsedEdges);
+  return a && a->GetNumberOfTuples() > 0 && a->GetTuple1(0) > 0;
 }
 
 /// The number of connected components of the surface's polygons (joined through shared points).
@@ -196,6 +206,12 @@ std::string Pipeline::Run(
   vtkPolyData* surface, int last, bool progress, std::vector<Timing>& timings)
 {
   this->Repair->SetInputData(surface);
+  if (this->AutomaticTriangleCount)
+  {
+    this->Repair->SetMaximumTriangleCount(vtkQuadCoverSurfaceRepair::MaximumTriangleCountFor(
+      surface, this->Solver->GetTargetQuadCount(), this->Solver->GetTargetEdgeLength()));
+  }
+  this->Extractor->SetSourceData(nullptr);
   vtkNew<ProgressPrinter> printer;
   for (int s = 0; s <= last; ++s)
   {
@@ -233,6 +249,10 @@ std::string Pipeline::Run(
     if (!errors->GetError().empty())
     {
       return SayOutOfMemory(errors->GetError());
+    }
+    if (s == 0 && Collapsed(this->Repair->GetOutput()))
+    {
+      this->Extractor->SetSourceData(surface); // the quads onto the surface as it was given
     }
     const std::string tooMany = s == 0 && last >= StageIndex("param") ? this->CheckQuadCount() : "";
     if (!tooMany.empty())

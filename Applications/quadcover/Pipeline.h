@@ -59,11 +59,17 @@ public:
    */
   std::string CheckQuadCount() const;
 
+  /// Set the repair's MaximumTriangleCount from the quads asked of `surface`
+  /// (quadcover::simplificationBudget) when it runs; off when --maximum-triangle-count is given.
+  bool AutomaticTriangleCount = true;
+
   /**
    * Runs the stages 0..last on `surface`: each stage's warnings go to stderr as
    * "quadcover: warning: ...", its seconds to `timings`; with `progress`, a percentage line on
    * stderr while a stage runs. CheckQuadCount runs after the repair when the param stage is to
-   * run. A std::bad_alloc in a stage is reported as "Cannot ...: out of memory."
+   * run. A std::bad_alloc in a stage is reported as "Cannot ...: out of memory." Where the
+   * repair simplified the surface, the quads are put onto `surface` itself (the extractor's
+   * source).
    * @return "" or the first error
    */
   std::string Run(vtkPolyData* surface, int last, bool progress, std::vector<Timing>& timings);

@@ -17,6 +17,7 @@
 #include "vtkQuadCoverWriter.h"
 #include "vtkStringOutputWindow.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <fstream>
@@ -117,6 +118,8 @@ int main(int argc, char* argv[])
   const std::vector<quadcover_app::Option> options = quadcover_app::StageOptions(pipeline);
   quadcover_app::Request request;
   const std::string usage = quadcover_app::Parse(argc, argv, options, request);
+  pipeline.AutomaticTriangleCount = std::find(request.given.begin(), request.given.end(),
+                                      "maximum-triangle-count") == request.given.end();
   if (request.help)
   {
     quadcover_app::PrintUsage(std::cout, options);

@@ -3,6 +3,7 @@
 #include "vtkAlgorithmOutput.h"
 #include "vtkCommand.h"
 #include "vtkCurvatureFrames.h"
+#include "vtkDataArray.h"
 #include "vtkFieldData.h"
 #include "vtkFrameSmoother.h"
 #include "vtkInformation.h"
@@ -21,6 +22,7 @@
 #include "vtkStreamingDemandDrivenPipeline.h"
 #include "vtkTrivialProducer.h"
 
+#include "SurfaceLocator.h"
 #include "Surfaces.h"
 
 #include <gtest/gtest.h>
@@ -99,6 +101,52 @@ TEST(vtkQuadCoverRemesh, GivesTheChainsQuads)
   // the quad mesh's arrays come along
   EXPECT_NE(one->GetPointData()->GetArray("Valence"), nullptr);
   EXPECT_NE(one->GetFieldData()->GetArray("EulerCharacteristic"), nullptr);
+}
+
+TEST(vtkQuadCoverRemesh, AFineSurfaceIsSimplifiedAndTheQuadsPutBackOntoIt)
+{
+  const quadcover::Surface s = quadcover::makeDumbbell(2.0, 0.6, 0.25, 48, 96);
+  vtkSmartPointer<vtkPolyData> surface = vtkQuadCoverEigen::ToPolyData(s.V, s.F);
+  vtkNew<vtkQuadCoverRemesh> remesh;
+  remesh->SetInputData(surface);
+  remesh->SetTargetQuadCount(300);
+  EXPECT_EQ(remesh->GetMaximumTriangleCount(), -1);
+  ASSERT_EQ(vtkQuadCoverErrorObserver::Run(remesh), "");
+  auto collapsed = [&]() {
+    vtkDataArray* a =
+      remesh->GetSurfaceRepair()->GetOutput()->GetFieldData()->GetArray("CollapsedEdges");
+    return a ? a->GetTuple1(0) : -1.0;
+  };
+  EXPECT_EQ(collapsed(), 0.0) << "9,000 triangles are below the default's 100,000";
+  EXPECT_EQ(remesh->GetQuadExtractor()->GetNumberOfInputConnections(1), 0);
+
+  remesh->SetMaximumTriangleCount(2000);
+  ASSERT_EQ(vtkQuadCoverErrorObserver::Run(remesh), "");
+  EXPECT_GT(collapsed(), 3000.0);
+  EXPECT_LE(remesh->GetSurfaceRepair()->GetOutput()->GetNumberOfPolys(), 2000);
+  EXPECT_EQ(remesh->GetQuadExtractor()->GetNumberOfInputConnections(1), 1);
+  vtkPolyData* quads = remesh->GetOutput();
+  ASSERT_GT(quads->GetNumberOfPolys(), 150);
+  EXPECT_EQ(quads->GetFieldData()->GetArray("EulerCharacteristic")->GetTuple1(0), 2.0);
+  EXPECT_EQ(quads->GetFieldData()->GetArray("TurnedQuads")->GetTuple1(1), 0.0);
+  // every quad vertex on the surface as it was given, not on the simplified one
+  const quadcover::SurfaceLocator onInput(s.V, s.F);
+  for (vtkIdType p = 0; p < quads->GetNumberOfPoints(); ++p)
+  {
+    double x[3];
+    quads->GetPoint(p, x);
+    ASSERT_LT(onInput.closest(Eigen::Vector3d(x[0], x[1], x[2])).distance, 1e-9) << "vertex " << p;
+  }
+  // the Hausdorff distance is measured against the input too
+  EXPECT_LT(quads->GetFieldData()->GetArray("HausdorffDistance")->GetTuple1(0), 2.0);
+
+  remesh->SetMaximumTriangleCount(0);
+  ASSERT_EQ(vtkQuadCoverErrorObserver::Run(remesh), "");
+  EXPECT_EQ(collapsed(), 0.0);
+  EXPECT_EQ(remesh->GetQuadExtractor()->GetNumberOfInputConnections(1), 0);
+  std::ostringstream printed;
+  remesh->Print(printed);
+  EXPECT_NE(printed.str().find("MaximumTriangleCount: 0"), std::string::npos);
 }
 
 TEST(vtkQuadCoverRemesh, PropertiesSetTheStagesThatUseThem)

@@ -97,6 +97,41 @@ TEST(vtkQuadExtractor, DefaultsErrorsAndPrintSelf)
   EXPECT_EQ(e->GetOutput()->GetNumberOfCells(), 0);
 }
 
+TEST(vtkQuadExtractor, TheSourceSurfaceTakesTheQuads)
+{
+  // the quads of a coarse sphere put onto a fine one: every vertex at its radius
+  const quadcover::Surface coarse = quadcover::makeIcosphere(1.0, 3);
+  const quadcover::Surface fine = quadcover::makeIcosphere(1.0, 6);
+  Pipeline p(vtkQuadCoverEigen::ToPolyData(coarse.V, coarse.F));
+  p.solver->SetTargetQuadCount(400);
+  p.extractor->Update();
+  ASSERT_EQ(p.errors->GetError(), "");
+  const double before = Field(p.extractor->GetOutput(), names::HausdorffDistance);
+  const vtkIdType quads = p.extractor->GetOutput()->GetNumberOfPolys();
+  p.extractor->SetSourceData(vtkQuadCoverEigen::ToPolyData(fine.V, fine.F));
+  p.extractor->Update();
+  ASSERT_EQ(p.errors->GetError(), "");
+  vtkPolyData* out = p.extractor->GetOutput();
+  EXPECT_EQ(out->GetNumberOfPolys(), quads);
+  double worst = 0.0;
+  for (vtkIdType v = 0; v < out->GetNumberOfPoints(); ++v)
+  {
+    double x[3];
+    out->GetPoint(v, x);
+    worst = std::max(worst, std::abs(1.0 - Eigen::Vector3d(x[0], x[1], x[2]).norm()));
+  }
+  EXPECT_LT(worst, 2e-4) << "level 6's chords are about 1e-4 inside the sphere";
+  EXPECT_NE(Field(out, names::HausdorffDistance), before) << "measured against the source";
+  EXPECT_EQ(Field(out, names::TurnedQuads, 1), 0.0);
+  // a source without triangles is an error
+  vtkNew<vtkPolyData> empty;
+  p.extractor->SetSourceData(empty);
+  p.extractor->Update();
+  EXPECT_NE(
+    p.errors->GetError().find("the source surface (input 1) has no triangles"), std::string::npos)
+    << p.errors->GetError();
+}
+
 TEST(vtkQuadExtractor, TheSplitSeamsOutputGivesTheSameQuads)
 {
   const quadcover::Surface knot =
