@@ -20,6 +20,7 @@
 #include "vtkStreamingDemandDrivenPipeline.h"
 #include "vtkTriangleFilter.h"
 
+#include "QuadFacing.h"
 #include "QuadMeshing.h"
 #include "SurfaceLocator.h"
 
@@ -165,16 +166,32 @@ void SourceSurface(
   }
 }
 
-/// Each quad vertex moved to its closest point on the surface V, F.
+/// Each quad vertex moved to its closest point on the surface V, F; the corners of a quad that
+/// this turns against the surface (quadcover::turnedQuads: across a crease or a thin rim the
+/// closest points can lie on different sides) go back where they were, until none does.
 void PutOnto(quadcover::QuadMesh& quads, const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F)
 {
   const quadcover::SurfaceLocator locator(V, F);
+  const Eigen::MatrixX3d before = quads.V;
   for (Eigen::Index v = 0; v < quads.V.rows(); ++v)
   {
     const quadcover::SurfaceLocator::Hit hit = locator.closest(quads.V.row(v).transpose());
     if (hit.triangle >= 0)
     {
       quads.V.row(v) = hit.point.transpose();
+    }
+  }
+  for (bool moved = true; moved;)
+  {
+    moved = false;
+    for (const int q : quadcover::turnedQuads(locator, quads))
+    {
+      for (int k = 0; k < 4; ++k)
+      {
+        const int v = quads.Q(q, k);
+        moved = moved || quads.V.row(v) != before.row(v);
+        quads.V.row(v) = before.row(v);
+      }
     }
   }
 }
