@@ -158,7 +158,10 @@ public:
     {
       const double share = total > 0.0 ? static_cast<double>(maximumTriangles) * area[c] / total
                                        : static_cast<double>(count_[c]);
-      floor_.push_back(share <= 256.0 ? count_[c] : static_cast<long long>(std::ceil(share)));
+      // a small component keeps what a map needs (SurfaceRefinement's minimum), all of its own
+      // if it has fewer
+      floor_.push_back(share <= 256.0 ? std::min<long long>(count_[c], 256)
+                                      : static_cast<long long>(std::ceil(share)));
     }
   }
 

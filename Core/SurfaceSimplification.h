@@ -54,8 +54,8 @@ struct Simplification
  * surface's topology (the link condition; no triangle repeated), moves a point on a feature line
  * (options.featureAngle, boundaries) only along it, turns no triangle over (options.
  * maximumNormalTurn, options.minimumQuality), and leaves each component (joined through edges) at
- * least its share of `maximumTriangles` by area (and all of its triangles when that share is 256
- * or fewer): no component vanishes. The points keep their positions (a subset of the input's),
+ * least its share of `maximumTriangles` by area, and at least 256 triangles (all of its own if it
+ * has fewer): no component vanishes. The points keep their positions (a subset of the input's),
  * and the triangles their orientation. Deterministic: one thread, a fixed order.
  * Time O(n log n) for n triangles.
  * @param[in,out] V #V x 3 points; the kept ones, in their order

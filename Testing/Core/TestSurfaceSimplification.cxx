@@ -145,7 +145,7 @@ TEST(SurfaceSimplification, CreasesStayOnTheSurface)
 TEST(SurfaceSimplification, EveryComponentKeepsItsShare)
 {
   // fifty spheres and tori of radii 0.1 to 10: the small ones, whose share of the triangles by
-  // area is 256 or fewer, are left whole; none vanishes
+  // area is 256 or fewer, keep 256 (or all of theirs); none vanishes
   const Surface many = makeComponents(50, 0.1, 10.0);
   Eigen::MatrixX3d V = many.V;
   Eigen::MatrixX3i F = many.F;

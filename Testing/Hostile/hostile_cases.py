@@ -278,6 +278,20 @@ def twenty_spheres(folder):
     return path
 
 
+def fine_spheres(folder):
+    # 24 spheres of 5,120 triangles, radii 0.01 .. 10: 122,880 triangles, more than the default
+    # simplification leaves (100,000 at 500 quads); the small spheres' share of the triangles by
+    # area is far below 256 and they must stay whole
+    spheres, x = [], 0.0
+    for k in range(24):
+        r = 0.01 * 1000 ** (k / 23)
+        spheres.append(m.icosphere(4, r, (x + r, 0.0, 0.0)))
+        x += 2 * r + 0.5
+    path = os.path.join(folder, "fine_spheres.vtp")
+    m.write_vtp(path, m.merge(*spheres))
+    return path
+
+
 def nonmanifold_edge(folder):
     # three triangles on the edge (0, 1)
     text = "v 0 0 0\nv 1 0 0\nv 0.5 1 0\nv 0.5 -0.5 0.8\nv 0.5 -0.5 -0.8\n"
@@ -396,6 +410,7 @@ CASES = {
     "seamed_torus": (seamed_torus, Quads(1, 0)),
     "genus_5": (genus_5, Quads(1, -8)),
     "twenty_spheres": (twenty_spheres, Quads(20, 40)),
+    "fine_spheres": (fine_spheres, Quads(24, 48)),
     # cut apart: one pair of the three stays joined or none does; every piece is a disk
     "nonmanifold_edge": (nonmanifold_edge, Quads((2, 3), (2, 3))),
     "boxes_sharing_an_edge": (boxes_sharing_an_edge, Quads(2, 4)),
