@@ -36,15 +36,16 @@ Eigen::MatrixX3d pointNormals(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i&
 }
 
 /// Normals averaged with their edge neighbours (half each point's own, half its neighbours'
-/// mean), `rounds` times, and made unit again.
-void smoothNormals(const MeshTopology& topo, int rounds, Eigen::MatrixX3d& normal)
+/// mean), `rounds` times, and made unit again; a point on a crease (`onCrease`) is no neighbour.
+void smoothNormals(
+  const MeshTopology& topo, const std::vector<char>& onCrease, int rounds, Eigen::MatrixX3d& normal)
 {
   const int nE = topo.numEdges();
   Eigen::VectorXd count = Eigen::VectorXd::Zero(normal.rows()); // edge neighbours per point
   for (int e = 0; e < nE; ++e)
   {
-    count[topo.edges(e, 0)] += 1;
-    count[topo.edges(e, 1)] += 1;
+    count[topo.edges(e, 0)] += onCrease[topo.edges(e, 1)] ? 0 : 1;
+    count[topo.edges(e, 1)] += onCrease[topo.edges(e, 0)] ? 0 : 1;
   }
   Eigen::MatrixX3d sum(normal.rows(), 3);
   for (int round = 0; round < rounds; ++round)
@@ -53,8 +54,10 @@ void smoothNormals(const MeshTopology& topo, int rounds, Eigen::MatrixX3d& norma
     for (int e = 0; e < nE; ++e)
     {
       const int a = topo.edges(e, 0), b = topo.edges(e, 1);
-      sum.row(a) += normal.row(b);
-      sum.row(b) += normal.row(a);
+      if (!onCrease[b])
+        sum.row(a) += normal.row(b);
+      if (!onCrease[a])
+        sum.row(b) += normal.row(a);
     }
     for (Eigen::Index v = 0; v < normal.rows(); ++v)
     {
@@ -74,7 +77,7 @@ void smoothNormals(const MeshTopology& topo, int rounds, Eigen::MatrixX3d& norma
 
 Eigen::VectorXd curvatureGridScale(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F,
   const MeshTopology& topo, double edgeLength, double edgeOverRadius, double maximumRefinement,
-  double gradation)
+  const std::vector<char>& creases, double gradation)
 {
   if (!(edgeOverRadius > 0) || !(maximumRefinement > 1) || !(edgeLength > 0) ||
     !std::isfinite(edgeLength) || topo.numEdges() == 0)
@@ -94,8 +97,16 @@ Eigen::VectorXd curvatureGridScale(const Eigen::MatrixX3d& V, const Eigen::Matri
   // 0.76 -> 1.00%), two grid edges smoothed bunny-lowres's ears away (0.79 -> 1.16%).
   const double ratio = meanEdge > 0 ? edgeLength / meanEdge : 0.0;
   const int rounds = static_cast<int>(std::min(200.0, std::floor(2.0 * ratio * ratio)));
+  std::vector<char> onCrease(static_cast<std::size_t>(topo.numVertices), 0);
+  for (int e = 0; e < nE && e < static_cast<int>(creases.size()); ++e)
+  {
+    if (creases[e])
+    {
+      onCrease[topo.edges(e, 0)] = onCrease[topo.edges(e, 1)] = 1;
+    }
+  }
   Eigen::MatrixX3d normal = pointNormals(V, F);
-  smoothNormals(topo, rounds, normal);
+  smoothNormals(topo, onCrease, rounds, normal);
 
   const double smallest = edgeLength / maximumRefinement;
   std::vector<double> size(static_cast<std::size_t>(topo.numVertices), edgeLength);
@@ -105,7 +116,8 @@ Eigen::VectorXd curvatureGridScale(const Eigen::MatrixX3d& V, const Eigen::Matri
     const int a = topo.edges(e, 0), b = topo.edges(e, 1);
     const double length = (V.row(a) - V.row(b)).norm();
     const Eigen::Vector3d na = normal.row(a), nb = normal.row(b);
-    if (!(length > 0) || !(na.squaredNorm() > 0) || !(nb.squaredNorm() > 0))
+    if (onCrease[a] || onCrease[b] || !(length > 0) || !(na.squaredNorm() > 0) ||
+      !(nb.squaredNorm() > 0))
     {
       continue;
     }

@@ -7,6 +7,8 @@
 
 #include <Eigen/Core>
 
+#include <vector>
+
 namespace quadcover
 {
 
@@ -18,15 +20,15 @@ namespace quadcover
  * along one of its edges, per length. Sizes never go below edgeLength / maximumRefinement, grow
  * away from the curved parts by `gradation` times the distance walked (spreadGridSizes), and are
  * at most edgeLength. A tube of radius r gets about 2 pi / edgeOverRadius quads around it where
- * that is finer than the grid. Sharp edges count as strong curvature: on a CAD part the grid is
- * finer along its creases (the feature lines keep creases without that).
+ * that is finer than the grid. Points on the `creases` (per edge, 1 on a crease; may be empty)
+ * neither pass their normals on nor measure a turn: a crease is one bend, not a thin part, and
+ * the grid stays as it is along it (the feature lines and the snapping keep creases).
  * @return #F, the mean over each triangle's points, in [1 / maximumRefinement, 1]; empty where
  * the grid stays uniform (edgeOverRadius <= 0, maximumRefinement <= 1, or no point curves enough)
  */
 Eigen::VectorXd curvatureGridScale(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F,
   const MeshTopology& topo, double edgeLength, double edgeOverRadius, double maximumRefinement,
-  double gradation = 0.25);
-
+  const std::vector<char>& creases = {}, double gradation = 0.25);
 }
 
 #endif

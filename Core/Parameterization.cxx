@@ -127,8 +127,12 @@ void setGridScale(const Inputs& in, SeamlessSystem& sys, Parameterization& out)
   constexpr double AdaptiveMaximumRefinement = 8.0;
   sys.cellScale =
     thinStripGridScale(in.V, in.F, in.topo, out.edgeLength, in.options.maximumThinStripRefinement);
-  Eigen::VectorXd curved = curvatureGridScale(
-    in.V, in.F, in.topo, out.edgeLength, in.options.adaptiveCurvature, AdaptiveMaximumRefinement);
+  const std::vector<char> creases = in.options.adaptiveCurvature > 0
+    ? sharpEdges(
+        in.topo, in.geometry.bases, in.options.featureAngle, in.options.minimumFeatureLength)
+    : std::vector<char>();
+  Eigen::VectorXd curved = curvatureGridScale(in.V, in.F, in.topo, out.edgeLength,
+    in.options.adaptiveCurvature, AdaptiveMaximumRefinement, creases);
   if (curved.size() > 0)
   {
     Eigen::VectorXd area(in.numFaces());

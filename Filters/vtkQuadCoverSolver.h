@@ -245,7 +245,9 @@ public:
   /** Adaptive density: where the surface curves sharply against the grid (thin ears, fingers,
    * horns, small bumps), the grid edge is about this many times the radius of curvature, seen
    * at the grid's scale (at most 8 times finer, growing back over a few grid edges), so that
-   * thin parts keep their shape; 0.5 puts about 12 quads around a thin tube. The surface keeps
+   * thin parts keep their shape; 0.5 puts about 12 quads around a thin tube, 1.5 refines only
+   * parts thinner than about a grid edge. Sharp edges (FeatureAngle, as the smoother finds them)
+   * are no thin parts: the grid stays uniform along them. The surface keeps
    * about TargetQuadCount quads in all, larger elsewhere (with TargetEdgeLength the finer ones
    * come on top, at most 4 times the uniform grid's). In [0, 10] (default 0: a uniform grid).
    * Counted in FinerGridTriangles. */

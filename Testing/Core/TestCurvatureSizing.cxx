@@ -8,8 +8,11 @@
 
 #include <gtest/gtest.h>
 
+#include <Eigen/Geometry>
+
 #include <cmath>
 #include <cstdio>
+#include <vector>
 
 using namespace quadcover;
 
@@ -118,4 +121,34 @@ TEST(CurvatureSizing, AdaptiveQuadsKeepTheTopologyAndTheCountAndPutMoreRowsOnThe
   // the neck's quads count against the quads asked for: the bulbs' are larger (not all of them:
   // the quad count follows the map's area before rounding)
   EXPECT_LT(allQuads[1], 1.35 * allQuads[0]);
+}
+
+TEST(CurvatureSizing, CreasesAreNoThinParts)
+{
+  // the sharp cube [-1,1]^3: its twelve edges bend by 90 degrees within a mesh edge, which reads
+  // as a tiny radius; given as creases they ask for nothing, and the flat faces neither
+  const Surface s = makeRoundedCube(0.0, 16);
+  const MeshTopology topo = buildTopology(s.F, static_cast<int>(s.V.rows()));
+  std::vector<char> creases(static_cast<std::size_t>(topo.numEdges()), 0);
+  int count = 0;
+  for (int e = 0; e < topo.numEdges(); ++e)
+  {
+    const int f0 = topo.edgeFaces(e, 0), f1 = topo.edgeFaces(e, 1);
+    auto normal = [&](int f) {
+      const Eigen::Vector3d a = s.V.row(s.F(f, 0)), b = s.V.row(s.F(f, 1)), c = s.V.row(s.F(f, 2));
+      return Eigen::Vector3d((b - a).cross(c - a).normalized());
+    };
+    if (f0 >= 0 && f1 >= 0 && normal(f0).dot(normal(f1)) < 0.5)
+    {
+      creases[e] = 1;
+      ++count;
+    }
+  }
+  ASSERT_EQ(count, 12 * 16) << "twelve edges of 16 mesh edges each";
+  const Eigen::VectorXd without = curvatureGridScale(s.V, s.F, topo, 0.5, 0.5, 8.0);
+  ASSERT_EQ(without.size(), s.F.rows());
+  EXPECT_LT(without.minCoeff(), 0.75) << "without the creases the cube's edges read as thin";
+  const Eigen::VectorXd with = curvatureGridScale(s.V, s.F, topo, 0.5, 0.5, 8.0, creases);
+  EXPECT_TRUE(with.size() == 0 || with.minCoeff() == 1.0)
+    << "finest " << (with.size() ? with.minCoeff() : 1.0);
 }
