@@ -10,6 +10,7 @@
 #include <cstdint>
 #include <limits>
 #include <queue>
+#include <utility>
 
 namespace quadcover
 {
@@ -92,28 +93,31 @@ std::vector<int> spatialOrder(const Eigen::MatrixX3d& V)
   return order;
 }
 
+// row-major: a point's or a triangle's coordinates in one cache line
+using RowPoints = Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor>;
+using RowTriangles = Eigen::Matrix<int, Eigen::Dynamic, 3, Eigen::RowMajor>;
+
 /// The mesh being simplified, with what each collapse needs.
 class Simplifier
 {
 public:
-  Simplifier(
-    const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F, const SimplificationOptions& options)
-    : V_(V)
-    , F_(F)
+  Simplifier(RowPoints V, RowTriangles F, const SimplificationOptions& options)
+    : V_(std::move(V))
+    , F_(std::move(F))
     , cosTurn_(std::cos(options.maximumNormalTurn * Pi / 180.0))
     , minimumQuality_(options.minimumQuality)
-    , facesOf_(V.rows())
-    , lines_(V.rows())
-    , quadrics_(V.rows())
-    , key_(V.rows(), Unqueued)
-    , removed_(V.rows(), 0)
-    , alive_(F.rows(), 1)
+    , facesOf_(V_.rows())
+    , lines_(V_.rows())
+    , quadrics_(V_.rows())
+    , key_(V_.rows(), Unqueued)
+    , removed_(V_.rows(), 0)
+    , alive_(F_.rows(), 1)
   {
-    for (Eigen::Index f = 0; f < F.rows(); ++f)
+    for (Eigen::Index f = 0; f < F_.rows(); ++f)
     {
       for (int k = 0; k < 3; ++k)
       {
-        facesOf_[F(f, k)].push_back(static_cast<int>(f));
+        facesOf_[F_(f, k)].push_back(static_cast<int>(f));
       }
     }
     this->findLines(options.featureAngle);
@@ -553,9 +557,8 @@ private:
     return gone;
   }
 
-  // row-major copies: a point's or a triangle's coordinates in one cache line
-  const Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor> V_;
-  Eigen::Matrix<int, Eigen::Dynamic, 3, Eigen::RowMajor> F_;
+  const RowPoints V_;
+  RowTriangles F_;
   double cosTurn_;
   double minimumQuality_;
   std::vector<std::vector<int>> facesOf_;
@@ -603,12 +606,12 @@ Simplification simplifySurface(Eigen::MatrixX3d& V, Eigen::MatrixX3i& F, long lo
       static_cast<int>(f) };
   }
   std::sort(byPoint.begin(), byPoint.end());
-  Eigen::MatrixX3d Vp(V.rows(), 3);
+  RowPoints Vp(V.rows(), 3);
   for (Eigen::Index p = 0; p < V.rows(); ++p)
   {
     Vp.row(p) = V.row(pointOrder[p]);
   }
-  Eigen::MatrixX3i Fp(F.rows(), 3);
+  RowTriangles Fp(F.rows(), 3);
   for (Eigen::Index f = 0; f < F.rows(); ++f)
   {
     for (int k = 0; k < 3; ++k)
@@ -616,7 +619,7 @@ Simplification simplifySurface(Eigen::MatrixX3d& V, Eigen::MatrixX3i& F, long lo
       Fp(f, k) = newPoint[F(byPoint[f][1], k)];
     }
   }
-  Simplifier simplifier(Vp, Fp, options);
+  Simplifier simplifier(std::move(Vp), std::move(Fp), options);
   simplifier.setBudgets(maximumTriangles);
   result.collapsedEdges = simplifier.run(maximumTriangles);
   std::vector<int> index(V.rows(), -1);

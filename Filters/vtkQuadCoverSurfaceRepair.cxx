@@ -323,11 +323,13 @@ void vtkQuadCoverSurfaceRepair::Execute(vtkQuadCoverSurface& in, vtkInformationV
     throw std::invalid_argument("the input has no triangle with three distinct points");
   }
   this->UpdateProgress(0.5);
+  tri->Initialize(); // the steps below replace the arrays: each copy lives only while needed
 
   // Repeated triangles and components of zero area removed; non-manifold edges cut apart,
   // bowties split, each component oriented.
   vtkPolyData* output = vtkPolyData::GetData(outputVector);
   output->ShallowCopy(cleaned);
+  cleaned = nullptr;
   counts.removedCells += RemoveRedundantTriangles(output, in);
   MakeManifold(output, in, counts);
   Simplify(output, in, this->MaximumTriangleCount, counts);

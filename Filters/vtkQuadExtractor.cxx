@@ -147,12 +147,17 @@ void SourceSurface(
   vtkPolyData* source, const vtkQuadCoverSurface& in, Eigen::MatrixX3d& V, Eigen::MatrixX3i& F)
 {
   vtkNew<vtkTriangleFilter> triangles;
-  triangles->PassVertsOff();
-  triangles->PassLinesOff();
-  vtkNew<vtkPolyData> none;
-  triangles->SetInputData(source ? source : none.Get());
-  triangles->Update();
-  vtkPolyData* t = triangles->GetOutput();
+  vtkPolyData* t = source;
+  if (!source || source->GetNumberOfStrips() > 0 || source->GetPolys()->IsHomogeneous() != 3)
+  {
+    // polygons and strips triangulated (a surface of triangles is read as it is, not copied)
+    triangles->PassVertsOff();
+    triangles->PassLinesOff();
+    vtkNew<vtkPolyData> none;
+    triangles->SetInputData(source ? source : none.Get());
+    triangles->Update();
+    t = triangles->GetOutput();
+  }
   if (!source || t->GetNumberOfPolys() == 0 || t->GetPolys()->IsHomogeneous() != 3)
   {
     throw std::invalid_argument("the source surface (input 1) has no triangles");
