@@ -112,7 +112,15 @@ public:
     , key_(V_.rows(), Unqueued)
     , removed_(V_.rows(), 0)
     , alive_(F_.rows(), 1)
+    , blocked_(V_.rows(), 0)
+    , mark_(V_.rows(), 0)
+    , source_(F_.rows(), 3)
   {
+    for (Eigen::Index f = 0; f < F_.rows(); ++f)
+    {
+      source_.row(f) =
+        this->normal(static_cast<int>(f), -1, -1).normalized().transpose().cast<float>();
+    }
     for (Eigen::Index f = 0; f < F_.rows(); ++f)
     {
       for (int k = 0; k < 3; ++k)
@@ -199,7 +207,7 @@ public:
       }
       if (cost > top.cost)
       {
-        this->queue(top.u, cost); // the cheaper ones could not be made
+        this->queue(top.u, cost, true); // the cheaper ones could not be made
         continue;
       }
       faces -= this->collapse(top.u, v);
@@ -321,16 +329,21 @@ private:
   }
 
   /// The points joined to p by an edge, in `ring` (unsorted, each once).
+  /// Linear in p's triangles: each point met is marked with this call's stamp, p too (the
+  /// marks stay until the next call: canCollapse counts the common neighbours by them).
   void neighbours(int p, std::vector<int>& ring) const
   {
     ring.clear();
+    const int stamp = ++markStamp_;
+    mark_[p] = stamp;
     for (const int f : facesOf_[p])
     {
       for (int k = 0; k < 3; ++k)
       {
         const int q = F_(f, k);
-        if (q != p && std::find(ring.begin(), ring.end(), q) == ring.end())
+        if (mark_[q] != stamp)
         {
+          mark_[q] = stamp;
           ring.push_back(q);
         }
       }
@@ -398,10 +411,11 @@ private:
 
   /// Queues w, a neighbour of v that v just took in another point of: only its collapse onto v
   /// may be new or cheaper (w's quadric and the points did not move); one with no queued
-  /// collapse is looked at whole.
+  /// collapse, or whose key was raised because its cheaper collapses could not be made
+  /// (blocked_: the change of its ring may have freed them), is looked at whole.
   void updateToward(int w, int v)
   {
-    if (key_[w] == Unqueued)
+    if (key_[w] == Unqueued || blocked_[w])
     {
       this->update(w);
       return;
@@ -418,9 +432,10 @@ private:
     }
   }
 
-  void queue(int u, double cost)
+  void queue(int u, double cost, bool blocked = false)
   {
     key_[u] = cost;
+    blocked_[u] = blocked ? 1 : 0;
     heap_.push({ cost, u });
   }
 
@@ -438,11 +453,11 @@ private:
     }
     // the link condition: u and v have exactly the corners of their shared triangles in common
     this->neighbours(u, ringU_);
-    this->neighbours(v, ringV_);
+    this->neighbours(v, ringV_); // marks v's neighbours (and v) with the latest stamp
     int common = 0;
     for (const int p : ringU_)
     {
-      common += std::find(ringV_.begin(), ringV_.end(), p) != ringV_.end();
+      common += p != v && mark_[p] == markStamp_;
     }
     if (common != shared)
     {
@@ -466,9 +481,10 @@ private:
   bool keepsShape(int f, int u, int v) const
   {
     const Eigen::Vector3d before = this->normal(f, -1, -1), after = this->normal(f, u, v);
-    if (after.dot(before) < cosTurn_ * after.norm() * before.norm() || after.norm() <= 0.0)
+    if (after.dot(before) < cosTurn_ * after.norm() * before.norm() || after.norm() <= 0.0 ||
+      after.dot(source_.row(f).transpose().cast<double>()) <= 0.0)
     {
-      return false;
+      return false; // turned too far in one step, or against the input triangle it was
     }
     Eigen::Vector3d x[3], y[3];
     for (int k = 0; k < 3; ++k)
@@ -570,6 +586,13 @@ private:
   mutable std::vector<int> targets_, ringU_, ringV_; // scratch
   mutable std::vector<std::pair<double, int>> candidates_;
   std::vector<char> alive_;
+  /// 1 where a point's key is the cost of a collapse that could be made while cheaper ones could
+  /// not: any change of its ring may free those, so it is looked at whole (updateToward)
+  std::vector<char> blocked_;
+  mutable std::vector<int> mark_; // neighbours' stamps
+  mutable int markStamp_ = 0;
+  /// each triangle's unit normal as the input had it (no collapse turns a triangle against it)
+  Eigen::Matrix<float, Eigen::Dynamic, 3, Eigen::RowMajor> source_;
   std::vector<int> component_;
   std::vector<long long> count_;
   std::vector<long long> floor_;

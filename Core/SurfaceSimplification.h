@@ -50,14 +50,16 @@ struct Simplification
  * Brings a manifold, consistently oriented triangle mesh down to at most `maximumTriangles`
  * triangles, or as near as the constraints allow, by half-edge collapses (a point moved onto a
  * neighbour), cheapest first by the quadric error of the planes of the triangles it has taken in
- * (Garland and Heckbert 1997), ties by point index. A collapse is made only where it keeps the
- * surface's topology (the link condition; no triangle repeated), moves a point on a feature line
- * (options.featureAngle, boundaries) only along it, turns no triangle over (options.
- * maximumNormalTurn, options.minimumQuality), and leaves each component (joined through edges) at
- * least its share of `maximumTriangles` by area, and at least 256 triangles (all of its own if it
- * has fewer): no component vanishes. The points keep their positions (a subset of the input's),
- * and the triangles their orientation. Deterministic: one thread, a fixed order.
- * Time O(n log n) for n triangles.
+ * (Garland and Heckbert 1997), ties by the points' place along a Morton curve. A collapse is made
+ * only where it keeps the surface's topology (the link condition; no triangle repeated), moves a
+ * point on a feature line (options.featureAngle, boundaries) only along it, turns no triangle by
+ * more than options. maximumNormalTurn in one step nor against the input triangle it was, leaves
+ * none worse than options.minimumQuality where it was better, and leaves each component (joined
+ * through edges) at least its share of `maximumTriangles` by area, and at least 256 triangles (all
+ * of its own if it has fewer): no component vanishes. The points keep their positions (a subset of
+ * the input's), and the triangles their orientation. Deterministic: one thread, a fixed order. Time
+ * O(n log n) for n triangles of bounded valence; each step is linear in the valences of the two
+ * points it looks at (a pole of 8,000 triangles is no trap).
  * @param[in,out] V #V x 3 points; the kept ones, in their order
  * @param[in,out] F #F x 3 triangles; the kept ones in their order, renumbered to the kept points
  * @param[in] maximumTriangles 0 or at least #F: nothing is changed

@@ -255,6 +255,19 @@ void Simplify(
     polys->InsertNextCell(3, ids);
     cellData->CopyData(surface->GetCellData(), s.triangleSource[f], f);
   }
+  if (vtkDataArray* normals = cellData->GetNormals())
+  {
+    // a kept triangle may have a corner moved: its normal made again (unit, in its own type)
+    for (Eigen::Index f = 0; f < F.rows(); ++f)
+    {
+      const Eigen::Vector3d a = V.row(F(f, 0)), b = V.row(F(f, 1)), c = V.row(F(f, 2));
+      const Eigen::Vector3d n = (b - a).cross(c - a).normalized();
+      for (int k = 0; k < 3 && k < normals->GetNumberOfComponents(); ++k)
+      {
+        normals->SetComponent(f, k, std::isfinite(n[k]) ? n[k] : 0.0);
+      }
+    }
+  }
   surface->SetPoints(points);
   surface->SetPolys(polys);
   surface->GetPointData()->ShallowCopy(pointData);
@@ -358,25 +371,34 @@ vtkIdType vtkQuadCoverSurfaceRepair::MaximumTriangleCountFor(
     // the area in squares of that side: each edge divided first, so that the sum stays in
     // double's range for a surface of any size
     quads = 0.0;
-    vtkCellArray* polys = surface->GetPolys();
     const vtkIdType n = surface->GetNumberOfPoints();
     vtkNew<vtkIdList> ids;
-    for (polys->InitTraversal(); polys->GetNextCell(ids);)
+    for (int strips = 0; strips < 2; ++strips)
     {
-      double x[3][3];
-      for (vtkIdType k = 2; k < ids->GetNumberOfIds(); ++k) // a polygon as a fan
+      vtkCellArray* cells = strips ? surface->GetStrips() : surface->GetPolys();
+      if (!cells)
       {
-        const vtkIdType corners[3] = { ids->GetId(0), ids->GetId(k - 1), ids->GetId(k) };
-        if (std::any_of(corners, corners + 3, [n](vtkIdType p) { return p < 0 || p >= n; }))
+        continue;
+      }
+      for (cells->InitTraversal(); cells->GetNextCell(ids);)
+      {
+        double x[3][3];
+        // a polygon's triangles as a fan, a strip's as a strip
+        for (vtkIdType k = 2; k < ids->GetNumberOfIds(); ++k)
         {
-          continue; // refused by the repair
+          const vtkIdType corners[3] = { ids->GetId(strips ? k - 2 : 0), ids->GetId(k - 1),
+            ids->GetId(k) };
+          if (std::any_of(corners, corners + 3, [n](vtkIdType p) { return p < 0 || p >= n; }))
+          {
+            continue; // refused by the repair
+          }
+          for (int c = 0; c < 3; ++c)
+          {
+            surface->GetPoint(corners[c], x[c]);
+          }
+          const Eigen::Vector3d a(x[0]), b(x[1]), c(x[2]);
+          quads += ((b - a) / targetEdgeLength).cross((c - a) / targetEdgeLength).norm() / 2.0;
         }
-        for (int c = 0; c < 3; ++c)
-        {
-          surface->GetPoint(corners[c], x[c]);
-        }
-        const Eigen::Vector3d a(x[0]), b(x[1]), c(x[2]);
-        quads += ((b - a) / targetEdgeLength).cross((c - a) / targetEdgeLength).norm() / 2.0;
       }
     }
   }

@@ -20,8 +20,9 @@
 #include "vtkStreamingDemandDrivenPipeline.h"
 #include "vtkTriangleFilter.h"
 
-#include "QuadFacing.h"
 #include "QuadMeshing.h"
+#include "QuadQuality.h"
+#include "ScaledJacobian.h"
 #include "SurfaceLocator.h"
 
 #include <algorithm>
@@ -171,11 +172,31 @@ void SourceSurface(
   }
 }
 
-/// Each quad vertex moved to its closest point on the surface V, F; the corners of a quad that
-/// this turns against the surface (quadcover::turnedQuads: across a crease or a thin rim the
-/// closest points can lie on different sides) go back where they were, until none does.
-void PutOnto(quadcover::QuadMesh& quads, const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F)
+/// The normal of quad i (the sum of its corners' cross products about its centre, as the
+/// turned quads are judged) with the points V.
+Eigen::Vector3d QuadArea(const Eigen::MatrixX3d& V, const Eigen::MatrixX4i& Q, int i)
 {
+  Eigen::Vector3d centre = Eigen::Vector3d::Zero();
+  for (int k = 0; k < 4; ++k)
+  {
+    centre += V.row(Q(i, k)).transpose() / 4.0;
+  }
+  Eigen::Vector3d n = Eigen::Vector3d::Zero();
+  for (int k = 0; k < 4; ++k)
+  {
+    n += (V.row(Q(i, k)).transpose() - centre).cross(V.row(Q(i, (k + 1) % 4)).transpose() - centre);
+  }
+  return n;
+}
+
+/// Each vertex of the result moved to its closest point on the surface V, F. The corners of a
+/// quad that this turns over (its normal against the one it had: across a crease or a thin rim
+/// the closest points can lie on different sides) or turns a corner of inside out go back where
+/// they were, until none does; the quality figures are then measured again. The source's own
+/// orientation is not used: a raw input may have triangles the repair turned over.
+void PutOnto(quadcover::QuadMeshResult& r, const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F)
+{
+  quadcover::QuadMesh& quads = r.mesh;
   const quadcover::SurfaceLocator locator(V, F);
   const Eigen::MatrixX3d before = quads.V;
   for (Eigen::Index v = 0; v < quads.V.rows(); ++v)
@@ -186,11 +207,24 @@ void PutOnto(quadcover::QuadMesh& quads, const Eigen::MatrixX3d& V, const Eigen:
       quads.V.row(v) = hit.point.transpose();
     }
   }
+  std::vector<char> wasInverted(quads.Q.rows());
+  for (Eigen::Index q = 0; q < quads.Q.rows(); ++q)
+  {
+    wasInverted[q] = quadcover::quadScaledJacobian(before, quads.Q, static_cast<int>(q)) <= 0.0;
+  }
   for (bool moved = true; moved;)
   {
     moved = false;
-    for (const int q : quadcover::turnedQuads(locator, quads))
+    for (Eigen::Index q = 0; q < quads.Q.rows(); ++q)
     {
+      const int i = static_cast<int>(q);
+      const bool turned = QuadArea(quads.V, quads.Q, i).dot(QuadArea(before, quads.Q, i)) <= 0.0;
+      const bool inverted =
+        !wasInverted[q] && quadcover::quadScaledJacobian(quads.V, quads.Q, i) <= 0.0;
+      if (!turned && !inverted)
+      {
+        continue;
+      }
       for (int k = 0; k < 4; ++k)
       {
         const int v = quads.Q(q, k);
@@ -199,6 +233,8 @@ void PutOnto(quadcover::QuadMesh& quads, const Eigen::MatrixX3d& V, const Eigen:
       }
     }
   }
+  r.quality = quadcover::measureQuads(quads.V, quads.Q);
+  r.invertedFinal = quadcover::countInvertedQuads(quads.V, quads.Q);
 }
 }
 
@@ -326,7 +362,7 @@ void vtkQuadExtractor::Execute(vtkQuadCoverSurface& in, vtkInformationVector* ou
   if (hasSource)
   {
     SourceSurface(vtkPolyData::SafeDownCast(this->GetInputDataObject(1, 0)), in, sourceV, sourceF);
-    PutOnto(r.mesh, sourceV, sourceF);
+    PutOnto(r, sourceV, sourceF);
   }
   vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
   WriteQuads(output, r, in);

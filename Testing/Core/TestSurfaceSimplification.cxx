@@ -197,3 +197,46 @@ TEST(SurfaceSimplification, ASmallClosedSurfaceStaysASurface)
     EXPECT_GT(areaVector(V, F, static_cast<int>(f)).dot(centre), 0.0) << "triangle " << f;
   }
 }
+
+TEST(SurfaceSimplification, PolesOfThousandsOfTrianglesStayASurface)
+{
+  // a sphere of 4 rings of 4,000 points and two poles of valence 4,000 (each step looks at the
+  // two points' rings: linear in their valence)
+  const int around = 4000, rings = 4;
+  Surface s;
+  s.V.resize(2 + around * rings, 3);
+  s.V.row(0) << 0, 0, 1;
+  s.V.row(1) << 0, 0, -1;
+  for (int r = 0; r < rings; ++r)
+  {
+    const double theta = 3.14159265358979323846 * (r + 1) / (rings + 1);
+    for (int i = 0; i < around; ++i)
+    {
+      const double phi = 2 * 3.14159265358979323846 * i / around;
+      s.V.row(2 + r * around + i) << std::sin(theta) * std::cos(phi),
+        std::sin(theta) * std::sin(phi), std::cos(theta);
+    }
+  }
+  std::vector<Eigen::Vector3i> faces;
+  auto at = [&](int r, int i) { return 2 + r * around + (i % around); };
+  for (int i = 0; i < around; ++i)
+  {
+    faces.emplace_back(0, at(0, i), at(0, i + 1));
+    faces.emplace_back(1, at(rings - 1, i + 1), at(rings - 1, i));
+    for (int r = 0; r + 1 < rings; ++r)
+    {
+      faces.emplace_back(at(r, i), at(r + 1, i), at(r + 1, i + 1));
+      faces.emplace_back(at(r, i), at(r + 1, i + 1), at(r, i + 1));
+    }
+  }
+  s.F.resize(static_cast<Eigen::Index>(faces.size()), 3);
+  for (std::size_t f = 0; f < faces.size(); ++f)
+  {
+    s.F.row(static_cast<Eigen::Index>(f)) = faces[f].transpose();
+  }
+  Eigen::MatrixX3d V = s.V;
+  Eigen::MatrixX3i F = s.F;
+  const Simplification result = simplifySurface(V, F, s.F.rows() / 4);
+  EXPECT_GT(result.collapsedEdges, 0);
+  expectSameTopology(s, V, F, result);
+}

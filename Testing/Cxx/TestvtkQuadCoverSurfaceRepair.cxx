@@ -16,6 +16,7 @@
 #include "vtkQuadCoverSurfaceRepair.h"
 
 #include "MeshTopology.h"
+#include "Surfaces.h"
 
 #include <gtest/gtest.h>
 
@@ -386,6 +387,63 @@ TEST(vtkQuadCoverSurfaceRepair, RefinesACoarseConeInterpolatingItsData)
   off->SetInputData(in);
   off->Update();
   EXPECT_EQ(off->GetOutput()->GetNumberOfPolys(), 2 * n);
+}
+
+TEST(vtkQuadCoverSurfaceRepair, SimplifiesAboveMaximumTriangleCountKeepingTheData)
+{
+  // a sphere of 20,480 triangles with a point array and cell normals, brought to 2,000
+  vtkSmartPointer<vtkPolyData> in;
+  {
+    const quadcover::Surface s = quadcover::makeIcosphere(1.0, 5);
+    in = vtkQuadCoverEigen::ToPolyData(s.V, s.F);
+  }
+  vtkNew<vtkDoubleArray> height;
+  height->SetName("Height");
+  for (vtkIdType p = 0; p < in->GetNumberOfPoints(); ++p)
+  {
+    height->InsertNextValue(in->GetPoint(p)[2]);
+  }
+  in->GetPointData()->AddArray(height);
+  vtkNew<vtkDoubleArray> normals;
+  normals->SetNumberOfComponents(3);
+  normals->SetNumberOfTuples(in->GetNumberOfCells());
+  normals->Fill(0.0);
+  in->GetCellData()->SetNormals(normals);
+
+  vtkNew<vtkQuadCoverSurfaceRepair> repair;
+  EXPECT_EQ(repair->GetMaximumTriangleCount(), 0);
+  repair->SetMaximumTriangleCount(2000);
+  repair->SetInputData(in);
+  ASSERT_EQ(vtkQuadCoverErrorObserver::Run(repair), "");
+  vtkPolyData* out = repair->GetOutput();
+  EXPECT_LE(out->GetNumberOfPolys(), 2000);
+  EXPECT_EQ(out->GetFieldData()->GetArray(names::CollapsedEdges)->GetTuple1(0),
+    static_cast<double>(in->GetNumberOfPoints() - out->GetNumberOfPoints()));
+  const quadcover::MeshTopology topo = Topology(out);
+  EXPECT_TRUE(topo.isManifold() && topo.isOriented() && topo.isClosed());
+  EXPECT_EQ(topo.eulerCharacteristic(), 2);
+  vtkDataArray* h = out->GetPointData()->GetArray("Height");
+  ASSERT_NE(h, nullptr);
+  for (vtkIdType p = 0; p < out->GetNumberOfPoints(); ++p)
+  {
+    ASSERT_EQ(h->GetTuple1(p), out->GetPoint(p)[2]) << "point " << p << " kept its data";
+  }
+  // the cell normals are the kept triangles' own (outward on the sphere)
+  vtkDataArray* n = out->GetCellData()->GetNormals();
+  ASSERT_NE(n, nullptr);
+  for (vtkIdType c = 0; c < out->GetNumberOfCells(); ++c)
+  {
+    double centre[3] = { 0, 0, 0 };
+    for (int k = 0; k < 3; ++k)
+    {
+      const double* x = out->GetPoint(out->GetCell(c)->GetPointId(k));
+      for (int j = 0; j < 3; ++j)
+        centre[j] += x[j] / 3;
+    }
+    const Eigen::Vector3d normal(n->GetTuple3(c)), outward(centre);
+    ASSERT_NEAR(normal.norm(), 1.0, 1e-9) << "cell " << c;
+    ASSERT_GT(normal.dot(outward.normalized()), 0.9) << "cell " << c;
+  }
 }
 
 TEST(vtkQuadCoverSurfaceRepair, MergesTheRoundOffSeamsOfAParametricSurface)

@@ -123,6 +123,27 @@ TEST(vtkQuadExtractor, TheSourceSurfaceTakesTheQuads)
   EXPECT_LT(worst, 2e-4) << "level 6's chords are about 1e-4 inside the sphere";
   EXPECT_NE(Field(out, names::HausdorffDistance), before) << "measured against the source";
   EXPECT_EQ(Field(out, names::TurnedQuads, 1), 0.0);
+  // a raw source whose cap faces inward (as an input the repair turned over): the quads go onto
+  // it all the same
+  quadcover::Surface turned = fine;
+  for (Eigen::Index f = 0; f < turned.F.rows(); ++f)
+  {
+    if (turned.V(turned.F(f, 0), 2) > 0.5)
+    {
+      std::swap(turned.F(f, 1), turned.F(f, 2));
+    }
+  }
+  p.extractor->SetSourceData(vtkQuadCoverEigen::ToPolyData(turned.V, turned.F));
+  p.extractor->Update();
+  ASSERT_EQ(p.errors->GetError(), "");
+  double worstTurned = 0.0;
+  for (vtkIdType v = 0; v < out->GetNumberOfPoints(); ++v)
+  {
+    double x[3];
+    out->GetPoint(v, x);
+    worstTurned = std::max(worstTurned, std::abs(1.0 - Eigen::Vector3d(x[0], x[1], x[2]).norm()));
+  }
+  EXPECT_LT(worstTurned, 2e-4) << "the turned cap's vertices stayed on the coarse sphere";
   // a source without triangles is an error
   vtkNew<vtkPolyData> empty;
   p.extractor->SetSourceData(empty);
