@@ -62,6 +62,19 @@ struct Pipeline
   }
 };
 
+/// The largest distance of a point of `out` from the unit sphere.
+double FarthestFromUnitSphere(vtkPolyData* out)
+{
+  double worst = 0.0;
+  for (vtkIdType v = 0; v < out->GetNumberOfPoints(); ++v)
+  {
+    double x[3];
+    out->GetPoint(v, x);
+    worst = std::max(worst, std::abs(1.0 - Eigen::Vector3d(x[0], x[1], x[2]).norm()));
+  }
+  return worst;
+}
+
 double Field(vtkPolyData* out, const char* name, int i = 0)
 {
   vtkDataArray* a = out->GetFieldData()->GetArray(name);
@@ -113,14 +126,7 @@ TEST(vtkQuadExtractor, TheSourceSurfaceTakesTheQuads)
   ASSERT_EQ(p.errors->GetError(), "");
   vtkPolyData* out = p.extractor->GetOutput();
   EXPECT_EQ(out->GetNumberOfPolys(), quads);
-  double worst = 0.0;
-  for (vtkIdType v = 0; v < out->GetNumberOfPoints(); ++v)
-  {
-    double x[3];
-    out->GetPoint(v, x);
-    worst = std::max(worst, std::abs(1.0 - Eigen::Vector3d(x[0], x[1], x[2]).norm()));
-  }
-  EXPECT_LT(worst, 2e-4) << "level 6's chords are about 1e-4 inside the sphere";
+  EXPECT_LT(FarthestFromUnitSphere(out), 2e-4) << "level 6's chords are about 1e-4 inside it";
   EXPECT_NE(Field(out, names::HausdorffDistance), before) << "measured against the source";
   EXPECT_EQ(Field(out, names::TurnedQuads, 1), 0.0);
   // a raw source whose cap faces inward (as an input the repair turned over): the quads go onto
@@ -136,14 +142,8 @@ TEST(vtkQuadExtractor, TheSourceSurfaceTakesTheQuads)
   p.extractor->SetSourceData(vtkQuadCoverEigen::ToPolyData(turned.V, turned.F));
   p.extractor->Update();
   ASSERT_EQ(p.errors->GetError(), "");
-  double worstTurned = 0.0;
-  for (vtkIdType v = 0; v < out->GetNumberOfPoints(); ++v)
-  {
-    double x[3];
-    out->GetPoint(v, x);
-    worstTurned = std::max(worstTurned, std::abs(1.0 - Eigen::Vector3d(x[0], x[1], x[2]).norm()));
-  }
-  EXPECT_LT(worstTurned, 2e-4) << "the turned cap's vertices stayed on the coarse sphere";
+  EXPECT_LT(FarthestFromUnitSphere(out), 2e-4)
+    << "the turned cap's vertices stayed on the coarse sphere";
   // a source without triangles is an error
   vtkNew<vtkPolyData> empty;
   p.extractor->SetSourceData(empty);
