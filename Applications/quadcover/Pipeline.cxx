@@ -208,8 +208,11 @@ std::string Pipeline::Run(
   this->Repair->SetInputData(surface);
   if (this->AutomaticTriangleCount)
   {
-    this->Repair->SetMaximumTriangleCount(vtkQuadCoverSurfaceRepair::MaximumTriangleCountFor(
-      surface, this->Solver->GetTargetQuadCount(), this->Solver->GetTargetEdgeLength()));
+    // a run that stops at the repair asks for the surface repaired, not simplified
+    this->Repair->SetMaximumTriangleCount(last == 0
+        ? 0
+        : vtkQuadCoverSurfaceRepair::MaximumTriangleCountFor(
+            surface, this->Solver->GetTargetQuadCount(), this->Solver->GetTargetEdgeLength()));
   }
   this->Extractor->SetSourceData(nullptr);
   vtkNew<ProgressPrinter> printer;

@@ -60,7 +60,8 @@ public:
   std::string CheckQuadCount() const;
 
   /// Set the repair's MaximumTriangleCount from the quads asked of `surface`
-  /// (quadcover::simplificationBudget) when it runs; off when --maximum-triangle-count is given.
+  /// (quadcover::simplificationBudget) when a stage after the repair runs (0 for --stage
+  /// repair); off when --maximum-triangle-count is given.
   bool AutomaticTriangleCount = true;
 
   /**
