@@ -266,30 +266,27 @@ def genus_5(folder):
     return _write(folder, "genus5.obj", _obj_text(m.genus(5)))
 
 
-def twenty_spheres(folder):
-    # radii 0.01 .. 10 in equal ratios, side by side along x
+def _spheres(folder, name, count, subdivisions):
+    """`count` icospheres of radii 0.01 .. 10 in equal ratios, side by side along x."""
     spheres, x = [], 0.0
-    for k in range(20):
-        r = 0.01 * 1000 ** (k / 19)
-        spheres.append(m.icosphere(2, r, (x + r, 0.0, 0.0)))
+    for k in range(count):
+        r = 0.01 * 1000 ** (k / (count - 1))
+        spheres.append(m.icosphere(subdivisions, r, (x + r, 0.0, 0.0)))
         x += 2 * r + 0.5
-    path = os.path.join(folder, "twenty_spheres.vtp")
+    path = os.path.join(folder, name)
     m.write_vtp(path, m.merge(*spheres))
     return path
+
+
+def twenty_spheres(folder):
+    return _spheres(folder, "twenty_spheres.vtp", 20, 2)
 
 
 def fine_spheres(folder):
     # 24 spheres of 5,120 triangles, radii 0.01 .. 10: 122,880 triangles, more than the default
     # simplification leaves (100,000 at 500 quads); the small spheres' share of the triangles by
     # area is far below 256 and they must stay whole
-    spheres, x = [], 0.0
-    for k in range(24):
-        r = 0.01 * 1000 ** (k / 23)
-        spheres.append(m.icosphere(4, r, (x + r, 0.0, 0.0)))
-        x += 2 * r + 0.5
-    path = os.path.join(folder, "fine_spheres.vtp")
-    m.write_vtp(path, m.merge(*spheres))
-    return path
+    return _spheres(folder, "fine_spheres.vtp", 24, 4)
 
 
 def nonmanifold_edge(folder):
