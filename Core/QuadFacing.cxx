@@ -379,11 +379,10 @@ double quadFacing(const SurfaceLocator& surface, const QuadMesh& mesh, int i)
   {
     centre += corner(mesh, i, k) / 4.0;
   }
-  Eigen::Vector3d n = Eigen::Vector3d::Zero();
+  Eigen::Vector3d n = quadAreaVector(mesh.V, mesh.Q, i);
   double edges = 0.0;
   for (int k = 0; k < 4; ++k)
   {
-    n += (corner(mesh, i, k) - centre).cross(corner(mesh, i, (k + 1) % 4) - centre);
     edges += (corner(mesh, i, k) - corner(mesh, i, (k + 1) % 4)).norm() / 4.0;
   }
   if (!(n.norm() > 0))

@@ -20,6 +20,23 @@ inline Eigen::Vector3d quadNormal(const Eigen::MatrixX3d& V, const Eigen::Matrix
     .normalized();
 }
 
+/// Twice the area vector of quad i of Q: the sum of its corners' cross products about its centre
+/// (the normal a quad is judged to face the surface by, QuadFacing).
+inline Eigen::Vector3d quadAreaVector(const Eigen::MatrixX3d& V, const Eigen::MatrixX4i& Q, int i)
+{
+  Eigen::Vector3d centre = Eigen::Vector3d::Zero();
+  for (int k = 0; k < 4; ++k)
+  {
+    centre += V.row(Q(i, k)).transpose() / 4.0;
+  }
+  Eigen::Vector3d n = Eigen::Vector3d::Zero();
+  for (int k = 0; k < 4; ++k)
+  {
+    n += (V.row(Q(i, k)).transpose() - centre).cross(V.row(Q(i, (k + 1) % 4)).transpose() - centre);
+  }
+  return n;
+}
+
 /// The scaled Jacobian of a corner with edges `next` and `prev` against `normal`: the sine of
 /// its angle, negative where the corner turns the other way; `degenerate` at a zero-length edge
 /// and where the figure is not finite.

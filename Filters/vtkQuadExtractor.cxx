@@ -172,23 +172,6 @@ void SourceSurface(
   }
 }
 
-/// The normal of quad i (the sum of its corners' cross products about its centre, as the
-/// turned quads are judged) with the points V.
-Eigen::Vector3d QuadArea(const Eigen::MatrixX3d& V, const Eigen::MatrixX4i& Q, int i)
-{
-  Eigen::Vector3d centre = Eigen::Vector3d::Zero();
-  for (int k = 0; k < 4; ++k)
-  {
-    centre += V.row(Q(i, k)).transpose() / 4.0;
-  }
-  Eigen::Vector3d n = Eigen::Vector3d::Zero();
-  for (int k = 0; k < 4; ++k)
-  {
-    n += (V.row(Q(i, k)).transpose() - centre).cross(V.row(Q(i, (k + 1) % 4)).transpose() - centre);
-  }
-  return n;
-}
-
 /// Each vertex of the result moved to its closest point on the surface V, F. The corners of a
 /// quad that this turns over (its normal against the one it had: across a crease or a thin rim
 /// the closest points can lie on different sides) or turns a corner of inside out go back where
@@ -218,7 +201,8 @@ void PutOnto(quadcover::QuadMeshResult& r, const Eigen::MatrixX3d& V, const Eige
     for (Eigen::Index q = 0; q < quads.Q.rows(); ++q)
     {
       const int i = static_cast<int>(q);
-      const bool turned = QuadArea(quads.V, quads.Q, i).dot(QuadArea(before, quads.Q, i)) <= 0.0;
+      const bool turned = quadcover::quadAreaVector(quads.V, quads.Q, i)
+                            .dot(quadcover::quadAreaVector(before, quads.Q, i)) <= 0.0;
       const bool inverted =
         !wasInverted[q] && quadcover::quadScaledJacobian(quads.V, quads.Q, i) <= 0.0;
       if (!turned && !inverted)
