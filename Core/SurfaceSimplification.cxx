@@ -9,6 +9,7 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <numeric>
 #include <queue>
 #include <utility>
 
@@ -234,6 +235,7 @@ private:
   };
 
   Eigen::Vector3d point(int p) const { return V_.row(p).transpose(); }
+  bool hasCorner(int f, int p) const { return F_(f, 0) == p || F_(f, 1) == p || F_(f, 2) == p; }
 
   /// Twice the area vector of triangle f, with its corner `from` read as `to`.
   Eigen::Vector3d normal(int f, int from, int to) const
@@ -420,9 +422,9 @@ private:
       this->update(w);
       return;
     }
-    const bool target =
-      lines_[w].empty() || std::find(lines_[w].begin(), lines_[w].end(), v) != lines_[w].end();
-    if (target && lines_[w].size() != 1 && lines_[w].size() <= 2)
+    // v is among w's targets: any neighbour off the lines, one of its two along a line
+    const std::vector<int>& line = lines_[w];
+    if (line.empty() || (line.size() == 2 && (line[0] == v || line[1] == v)))
     {
       const double cost = quadrics_[w](this->point(v));
       if (cost < key_[w])
@@ -444,7 +446,7 @@ private:
     int shared = 0;
     for (const int f : facesOf_[u])
     {
-      shared += F_(f, 0) == v || F_(f, 1) == v || F_(f, 2) == v;
+      shared += this->hasCorner(f, v);
     }
     if (shared == 0 ||
       count_[component_[facesOf_[u][0]]] - shared < floor_[component_[facesOf_[u][0]]])
@@ -465,7 +467,7 @@ private:
     }
     for (const int f : facesOf_[u])
     {
-      if (F_(f, 0) == v || F_(f, 1) == v || F_(f, 2) == v)
+      if (this->hasCorner(f, v))
       {
         continue;
       }
@@ -509,8 +511,7 @@ private:
     }
     for (const int g : facesOf_[v])
     {
-      const auto has = [&](int p) { return F_(g, 0) == p || F_(g, 1) == p || F_(g, 2) == p; };
-      if (has(others[0]) && has(others[1]))
+      if (this->hasCorner(g, others[0]) && this->hasCorner(g, others[1]))
       {
         return true;
       }
@@ -525,7 +526,7 @@ private:
     int gone = 0;
     for (const int f : facesOf_[u])
     {
-      if (F_(f, 0) == v || F_(f, 1) == v || F_(f, 2) == v)
+      if (this->hasCorner(f, v))
       {
         alive_[f] = 0;
         ++gone;
@@ -608,10 +609,8 @@ Simplification simplifySurface(Eigen::MatrixX3d& V, Eigen::MatrixX3i& F, long lo
   {
     result.pointSource.resize(V.rows());
     result.triangleSource.resize(F.rows());
-    for (Eigen::Index i = 0; i < V.rows(); ++i)
-      result.pointSource[i] = static_cast<int>(i);
-    for (Eigen::Index i = 0; i < F.rows(); ++i)
-      result.triangleSource[i] = static_cast<int>(i);
+    std::iota(result.pointSource.begin(), result.pointSource.end(), 0);
+    std::iota(result.triangleSource.begin(), result.triangleSource.end(), 0);
     return result;
   }
   // the work runs on the points in a space-filling curve's order, the triangles by their first
