@@ -3,7 +3,6 @@
 #include "vtkCurvatureFrames.h"
 #include "vtkFrameSmoother.h"
 #include "vtkMatchingBuilder.h"
-#include "vtkQuadCoverArrayNames.h"
 #include "vtkQuadCoverErrorObserver.h"
 #include "vtkQuadCoverPieces.h"
 #include "vtkQuadCoverSolver.h"
@@ -11,9 +10,7 @@
 #include "vtkQuadExtractor.h"
 
 #include "vtkCallbackCommand.h"
-#include "vtkDataArray.h"
 #include "vtkExecutive.h"
-#include "vtkFieldData.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
 #include "vtkObjectFactory.h"
@@ -209,10 +206,8 @@ int vtkQuadCoverRemesh::RequestData(
       : vtkQuadCoverSurfaceRepair::MaximumTriangleCountFor(
           this->Surface, this->GetTargetQuadCount(), this->GetTargetEdgeLength()));
   this->Repair->Update();
-  vtkDataArray* collapsed =
-    this->Repair->GetOutput()->GetFieldData()->GetArray(vtkQuadCoverArrayNames::CollapsedEdges);
-  const bool simplified = collapsed && collapsed->GetNumberOfTuples() > 0 &&
-    collapsed->GetTuple1(0) > 0 && !this->Repair->GetAbortExecute();
+  const bool simplified = vtkQuadCoverSurfaceRepair::Simplified(this->Repair->GetOutput()) &&
+    !this->Repair->GetAbortExecute();
   if (simplified != (this->Extractor->GetNumberOfInputConnections(1) > 0))
   {
     this->Extractor->SetSourceData(simplified ? this->Surface.Get() : nullptr);

@@ -7,6 +7,7 @@
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
 #include "vtkCleanPolyData.h"
+#include "vtkDataArray.h"
 #include "vtkFieldData.h"
 #include "vtkIdList.h"
 #include "vtkIntArray.h"
@@ -365,45 +366,59 @@ void vtkQuadCoverSurfaceRepair::Execute(vtkQuadCoverSurface& in, vtkInformationV
 vtkIdType vtkQuadCoverSurfaceRepair::MaximumTriangleCountFor(
   vtkPolyData* surface, int targetQuadCount, double targetEdgeLength)
 {
-  double quads = targetQuadCount;
-  if (targetEdgeLength > 0.0)
+  const double quads = targetEdgeLength > 0.0 ? AreaInSquares(surface, targetEdgeLength)
+                                              : static_cast<double>(targetQuadCount);
+  return static_cast<vtkIdType>(
+    std::min<long long>(quadcover::simplificationBudget(quads), 2000000000));
+}
+
+//------------------------------------------------------------------------------
+double vtkQuadCoverSurfaceRepair::AreaInSquares(vtkPolyData* surface, double length)
+{
+  double area = 0.0;
+  const vtkIdType n = surface->GetNumberOfPoints();
+  vtkNew<vtkIdList> ids;
+  for (int strips = 0; strips < 2; ++strips)
   {
-    // the area in squares of that side: each edge divided first, so that the sum stays in
-    // double's range for a surface of any size
-    quads = 0.0;
-    const vtkIdType n = surface->GetNumberOfPoints();
-    vtkNew<vtkIdList> ids;
-    for (int strips = 0; strips < 2; ++strips)
+    vtkCellArray* cells = strips ? surface->GetStrips() : surface->GetPolys();
+    if (!cells)
     {
-      vtkCellArray* cells = strips ? surface->GetStrips() : surface->GetPolys();
-      if (!cells)
+      continue;
+    }
+    for (cells->InitTraversal(); cells->GetNextCell(ids);)
+    {
+      // a polygon's triangles as a fan, a strip's as a strip
+      for (vtkIdType k = 2; k < ids->GetNumberOfIds(); ++k)
       {
-        continue;
-      }
-      for (cells->InitTraversal(); cells->GetNextCell(ids);)
-      {
-        double x[3][3];
-        // a polygon's triangles as a fan, a strip's as a strip
-        for (vtkIdType k = 2; k < ids->GetNumberOfIds(); ++k)
+        const vtkIdType corners[3] = { ids->GetId(strips ? k - 2 : 0), ids->GetId(k - 1),
+          ids->GetId(k) };
+        if (std::any_of(corners, corners + 3, [n](vtkIdType p) { return p < 0 || p >= n; }))
         {
-          const vtkIdType corners[3] = { ids->GetId(strips ? k - 2 : 0), ids->GetId(k - 1),
-            ids->GetId(k) };
-          if (std::any_of(corners, corners + 3, [n](vtkIdType p) { return p < 0 || p >= n; }))
-          {
-            continue; // refused by the repair
-          }
-          for (int c = 0; c < 3; ++c)
-          {
-            surface->GetPoint(corners[c], x[c]);
-          }
-          const Eigen::Vector3d a(x[0]), b(x[1]), c(x[2]);
-          quads += ((b - a) / targetEdgeLength).cross((c - a) / targetEdgeLength).norm() / 2.0;
+          continue; // refused by the repair
         }
+        double x[3][3];
+        for (int c = 0; c < 3; ++c)
+        {
+          surface->GetPoint(corners[c], x[c]);
+        }
+        Eigen::Vector3d u, v;
+        for (int j = 0; j < 3; ++j)
+        {
+          u[j] = x[1][j] / length - x[0][j] / length;
+          v[j] = x[2][j] / length - x[0][j] / length;
+        }
+        area += 0.5 * u.cross(v).norm();
       }
     }
   }
-  return static_cast<vtkIdType>(
-    std::min<long long>(quadcover::simplificationBudget(quads), 2000000000));
+  return area;
+}
+
+//------------------------------------------------------------------------------
+bool vtkQuadCoverSurfaceRepair::Simplified(vtkPolyData* repaired)
+{
+  vtkDataArray* a = repaired->GetFieldData()->GetArray(vtkQuadCoverArrayNames::CollapsedEdges);
+  return a && a->GetNumberOfTuples() > 0 && a->GetTuple1(0) > 0;
 }
 
 //------------------------------------------------------------------------------

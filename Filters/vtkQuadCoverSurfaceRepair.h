@@ -81,6 +81,14 @@ public:
   static vtkIdType MaximumTriangleCountFor(
     vtkPolyData* surface, int targetQuadCount, double targetEdgeLength);
 
+  /** The area of `surface`'s polygons (fans) and strips in squares of side `length` (> 0): each
+   * coordinate divided by `length` first, so that the sum stays in double's range for a surface
+   * of any size; cells with a point id out of range are left out. */
+  static double AreaInSquares(vtkPolyData* surface, double length);
+
+  /** Whether `repaired`, an output of this filter, was simplified (CollapsedEdges > 0). */
+  static bool Simplified(vtkPolyData* repaired);
+
 protected:
   vtkQuadCoverSurfaceRepair();
   ~vtkQuadCoverSurfaceRepair() override = default;

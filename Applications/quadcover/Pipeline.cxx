@@ -2,11 +2,7 @@
 
 #include "vtkCellArray.h"
 #include "vtkCommand.h"
-#include "vtkDataArray.h"
-#include "vtkFieldData.h"
-#include "vtkMath.h"
 #include "vtkPolyData.h"
-#include "vtkQuadCoverArrayNames.h"
 #include "vtkQuadCoverErrorObserver.h"
 
 #include <algorithm>
@@ -22,42 +18,6 @@ namespace quadcover_app
 {
 namespace
 {
-/// The surface's area in squares of side `length` (> 0): the triangles' edges are divided by
-/// `length` first, so that the sum stays in double's range for a surface of any size.
-double AreaInSquares(vtkPolyData* surface, double length)
-{
-  double area = 0.0;
-  vtkCellArray* polys = surface->GetPolys();
-  vtkIdType n = 0;
-  const vtkIdType* ids = nullptr;
-  double a[3], b[3], c[3];
-  for (polys->InitTraversal(); polys->GetNextCell(n, ids);)
-  {
-    if (n == 3)
-    {
-      surface->GetPoint(ids[0], a);
-      surface->GetPoint(ids[1], b);
-      surface->GetPoint(ids[2], c);
-      double u[3], v[3], w[3];
-      for (int k = 0; k < 3; ++k)
-      {
-        u[k] = b[k] / length - a[k] / length;
-        v[k] = c[k] / length - a[k] / length;
-      }
-      vtkMath::Cross(u, v, w);
-      area += 0.5 * vtkMath::Norm(w);
-    }
-  }
-  return area;
-}
-
-/// Whether the repair simplified `repaired` (its CollapsedEdges).
-bool Collapsed(vtkPolyData* repaired)
-{
-  vtkDataArray* a = repaired->GetFieldData()->GetArray(vtkQuadCoverArrayNames::CollapsedEdges);
-  return a && a->GetNumberOfTuples() > 0 && a->GetTuple1(0) > 0;
-}
-
 /// The number of connected components of the surface's polygons (joined through shared points).
 long long ComponentCount(vtkPolyData* surface)
 {
@@ -171,7 +131,7 @@ std::string Pipeline::CheckQuadCount() const
   const long long triangles = surface->GetNumberOfPolys();
   const double length = this->Solver->GetTargetEdgeLength();
   // each component's minimum comes on top of its share, at most
-  const double quads = (length > 0.0 ? AreaInSquares(surface, length)
+  const double quads = (length > 0.0 ? vtkQuadCoverSurfaceRepair::AreaInSquares(surface, length)
                                      : static_cast<double>(this->Solver->GetTargetQuadCount())) +
     static_cast<double>(this->Solver->GetMinimumComponentQuadCount()) *
       static_cast<double>(ComponentCount(surface));
@@ -253,7 +213,7 @@ std::string Pipeline::Run(
     {
       return SayOutOfMemory(errors->GetError());
     }
-    if (s == 0 && Collapsed(this->Repair->GetOutput()))
+    if (s == 0 && vtkQuadCoverSurfaceRepair::Simplified(this->Repair->GetOutput()))
     {
       this->Extractor->SetSourceData(surface); // the quads onto the surface as it was given
     }
