@@ -88,8 +88,8 @@ bool LooksBinary(const std::string& path)
 
 std::string CheckStl(const std::string& path)
 {
-  // VTK's reader tells binary from ASCII by this test; the check follows its choice. (It
-  // reports an ASCII file cut short itself, with the line.)
+  // vtkQuadCoverSTL tells binary from ASCII by this test too (and reports an ASCII file cut
+  // short itself, with the line).
   const bool binary =
     vtksys::SystemTools::DetectFileType(path.c_str()) != vtksys::SystemTools::FileTypeText;
   return binary ? CheckBinaryStl(path, FileSize(path)) : "";

@@ -1,5 +1,5 @@
-// vtkQuadCoverFileChecks.h (private): what VTK 9.1's PLY and STL readers get wrong on bad
-// files, checked before they read them.
+// vtkQuadCoverFileChecks.h (private): what VTK 9.1's PLY reader gets wrong on bad files, checked
+// before it reads them; the binary STL check of vtkQuadCoverSTL's reader.
 #ifndef vtkQuadCoverFileChecks_h
 #define vtkQuadCoverFileChecks_h
 
@@ -8,7 +8,7 @@
 
 namespace vtkQuadCoverFileChecks
 {
-/// The range of the single-precision coordinates VTK's PLY and STL readers store.
+/// The range of the single-precision coordinates VTK's PLY reader stores.
 constexpr double FloatMax = std::numeric_limits<float>::max();
 constexpr double FloatMin = std::numeric_limits<float>::min();
 
@@ -34,10 +34,9 @@ bool LooksBinary(const std::string& path);
  */
 std::string CheckPly(const std::string& path);
 
-/// VTK 9.1's STL reader reads a binary file to its end whatever its header's triangle count
-/// says, but allocates for that count first, and reads one cut short without a word. For a
-/// binary file (as VTK decides it) the header's count must fit in the file, and a file whose
-/// count is not its own (often 0) must end on a triangle. Returns "" or a one-line reason.
+/// For a binary STL file (as vtksys decides it) the header's triangle count must fit in the
+/// file, and a file whose count is not its own (often 0) must end on a triangle (it is then read
+/// to its end, as VTK's reader does). Returns "" or a one-line reason.
 std::string CheckStl(const std::string& path);
 }
 

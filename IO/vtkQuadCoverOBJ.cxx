@@ -4,6 +4,7 @@
 #include "vtkQuadCoverFileChecks.h"
 
 #include "vtkCellArray.h"
+#include "vtkCellArrayIterator.h"
 #include "vtkDoubleArray.h"
 #include "vtkIdTypeArray.h"
 #include "vtkNew.h"
@@ -307,5 +308,79 @@ std::string Read(const std::string& path, vtkPolyData* output)
     return e.what();
   }
   return "";
+}
+
+namespace
+{
+/// Appends x in the shortest decimals that read back to it.
+void AppendNumber(std::string& out, double x)
+{
+  char buffer[32];
+  const auto result = std::to_chars(buffer, buffer + sizeof buffer, x);
+  out.append(buffer, result.ptr);
+}
+
+/// Appends a line `keyword i_1 ... i_n` (from 1) per cell of `cells`.
+void AppendCells(std::string& out, const char* keyword, vtkCellArray* cells)
+{
+  auto it = vtk::TakeSmartPointer(cells->NewIterator());
+  for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell())
+  {
+    vtkIdType n;
+    const vtkIdType* ids;
+    it->GetCurrentCell(n, ids);
+    out += keyword;
+    for (vtkIdType k = 0; k < n; ++k)
+    {
+      out += ' ';
+      out += std::to_string(ids[k] + 1);
+    }
+    out += '\n';
+  }
+}
+
+/// Appends an "f" line per triangle of the strips of `cells` (every other one turned back).
+void AppendStrips(std::string& out, vtkCellArray* cells)
+{
+  auto it = vtk::TakeSmartPointer(cells->NewIterator());
+  for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell())
+  {
+    vtkIdType n;
+    const vtkIdType* ids;
+    it->GetCurrentCell(n, ids);
+    for (vtkIdType k = 0; k + 2 < n; ++k)
+    {
+      const vtkIdType a = ids[k] + 1, b = ids[k + 1] + 1, c = ids[k + 2] + 1;
+      out += "f " + std::to_string(a) + ' ' + std::to_string(k % 2 == 0 ? b : c) + ' ' +
+        std::to_string(k % 2 == 0 ? c : b) + '\n';
+    }
+  }
+}
+}
+
+std::string Write(const std::string& path, vtkPolyData* input)
+{
+  std::string out = "# written by QuadCover\n";
+  const vtkIdType n = input->GetNumberOfPoints();
+  double x[3];
+  for (vtkIdType p = 0; p < n; ++p)
+  {
+    input->GetPoint(p, x);
+    out += 'v';
+    for (const double c : x)
+    {
+      out += ' ';
+      AppendNumber(out, c);
+    }
+    out += '\n';
+  }
+  AppendCells(out, "p", input->GetVerts());
+  AppendCells(out, "l", input->GetLines());
+  AppendCells(out, "f", input->GetPolys());
+  AppendStrips(out, input->GetStrips());
+  std::ofstream file(path, std::ios::binary);
+  file.write(out.data(), static_cast<std::streamsize>(out.size()));
+  file.close();
+  return file ? "" : "cannot write the file";
 }
 }

@@ -1,5 +1,6 @@
 // vtkQuadCoverOBJ.h (private): reads Wavefront OBJ files in double precision, in one pass over
-// the file held in memory; vtkQuadCoverReader reads .obj files through it. (VTK's own reader
+// the file held in memory, and writes them; vtkQuadCoverReader and vtkQuadCoverWriter read and
+// write .obj files through it. (VTK's own reader
 // stores single precision, reads "nan" as 0, reads past its points on a bad face index, and takes
 // most of the time of a small run on a large file.)
 #ifndef vtkQuadCoverOBJ_h
@@ -23,6 +24,14 @@ namespace vtkQuadCoverOBJ
  * point, a face of fewer than three points (noting a file that ends in the middle of it)
  */
 std::string Read(const std::string& path, vtkPolyData* output);
+
+/**
+ * Writes `input` to `path`: a "v" line per point (the shortest decimals that read back to the
+ * same double), then an "f" line per polygon, an "l" line per polyline and a "p" line per vertex
+ * cell, indices from 1 (a strip as its triangles). Point and cell data are not written.
+ * @return "" or why the file could not be written
+ */
+std::string Write(const std::string& path, vtkPolyData* input);
 }
 
 #endif

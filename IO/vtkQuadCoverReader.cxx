@@ -3,6 +3,7 @@
 #include "vtkQuadCoverFileChecks.h"
 #include "vtkQuadCoverOBJ.h"
 #include "vtkQuadCoverOFF.h"
+#include "vtkQuadCoverSTL.h"
 
 #include "vtkInformationVector.h"
 #include "vtkNew.h"
@@ -11,7 +12,6 @@
 #include "vtkPolyData.h"
 #include "vtkPolyDataReader.h"
 #include "vtkQuadCoverErrorObserver.h"
-#include "vtkSTLReader.h"
 #include "vtkSmartPointer.h"
 #include "vtkXMLPolyDataReader.h"
 
@@ -52,11 +52,6 @@ vtkSmartPointer<vtkAlgorithm> MakeReader(const std::string& path, std::string& e
     error = checks::CheckPly(path);
     return error.empty() ? make(vtkSmartPointer<vtkPLYReader>::New()) : nullptr;
   }
-  if (ext == ".stl")
-  {
-    error = checks::CheckStl(path);
-    return error.empty() ? make(vtkSmartPointer<vtkSTLReader>::New()) : nullptr;
-  }
   if (ext == ".vtp")
   {
     return make(vtkSmartPointer<vtkXMLPolyDataReader>::New());
@@ -82,6 +77,10 @@ std::string ReadFile(const std::string& path, vtkPolyData* out)
   if (ext == ".off")
   {
     return vtkQuadCoverOFF::Read(path, out);
+  }
+  if (ext == ".stl")
+  {
+    return vtkQuadCoverSTL::Read(path, out);
   }
   std::string error;
   vtkSmartPointer<vtkAlgorithm> reader = MakeReader(path, error);

@@ -1,11 +1,11 @@
 #include "vtkQuadCoverWriter.h"
 
 #include "vtkQuadCoverFileChecks.h"
+#include "vtkQuadCoverOBJ.h"
 
 #include "vtkErrorCode.h"
 #include "vtkInformation.h"
 #include "vtkNew.h"
-#include "vtkOBJWriter.h"
 #include "vtkObjectFactory.h"
 #include "vtkPLYWriter.h"
 #include "vtkPolyData.h"
@@ -41,10 +41,6 @@ vtkSmartPointer<vtkAlgorithm> MakeWriter(const std::string& path, vtkPolyData* s
     auto legacy = to(vtkSmartPointer<vtkPolyDataWriter>::New());
     legacy->SetFileTypeToBinary();
     return legacy;
-  }
-  if (ext == ".obj")
-  {
-    return to(vtkSmartPointer<vtkOBJWriter>::New());
   }
   auto ply = to(vtkSmartPointer<vtkPLYWriter>::New());
   ply->SetFileTypeToBinary();
@@ -92,7 +88,9 @@ void vtkQuadCoverWriter::WriteData()
   }
   else
   {
-    error = vtkQuadCoverErrorObserver::Run(MakeWriter(path, surface));
+    error = vtkQuadCoverFileChecks::Extension(path) == ".obj"
+      ? vtkQuadCoverOBJ::Write(path, surface)
+      : vtkQuadCoverErrorObserver::Run(MakeWriter(path, surface));
     if (error.empty() && !std::ifstream(path).good())
     {
       error = "the file was not written";

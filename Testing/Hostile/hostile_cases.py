@@ -390,7 +390,7 @@ CASES = {
     "truncated_ascii_ply": (truncated_ascii_ply, Refused("cut short")),
     "huge_header_ply": (huge_header_ply, Refused("more than the file")),
     "truncated_binary_stl": (truncated_binary_stl, Refused("1056 triangles")),
-    "truncated_ascii_stl": (truncated_ascii_stl, Refused("Parse error")),
+    "truncated_ascii_stl": (truncated_ascii_stl, Refused("ends in the middle of a facet")),
     "truncated_obj": (truncated_obj, Refused("cut short")),
     "truncated_vtp": (truncated_vtp, Refused("cannot read")),
     "vertices_only": (vertices_only, Refused("no polygons")),

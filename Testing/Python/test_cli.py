@@ -345,20 +345,28 @@ class CommandLine(unittest.TestCase):
                                            r"^quadcover: error: cannot read .*" + pattern)
 
     def test_every_input_format_and_legacy_output(self):
-        # Convert Data/sphere.obj to .ply, .stl, .vtp, .vtk with VTK and read each back.
+        # Convert Data/sphere.obj to .ply, .stl (binary and ASCII), .vtp, .vtk with VTK and read
+        # each back; an STL repeats each point per facet, and the reader joins them again.
         reader = vtk.vtkOBJReader()
         reader.SetFileName(os.path.join(DATA, "sphere.obj"))
         reader.Update()
+        ascii_stl = vtk.vtkSTLWriter()
+        ascii_stl.SetFileTypeToASCII()
         writers = {".ply": vtk.vtkPLYWriter(), ".stl": vtk.vtkSTLWriter(),
+                   "_ascii.stl": ascii_stl,
                    ".vtp": vtk.vtkXMLPolyDataWriter(), ".vtk": vtk.vtkPolyDataWriter()}
+        stats = os.path.join(self.dir, "formats.json")
         for ext, w in writers.items():
             path = os.path.join(self.dir, "sphere" + ext)
             w.SetFileName(path)
             w.SetInputData(reader.GetOutput())
             w.Write()
             code, _, err = run(path, "-o", os.path.join(self.dir, "out.vtk"), "--stage",
-                               "curvature")
+                               "curvature", "--stats", stats)
             self.assertEqual(code, 0, ext + ": " + err)
+            with open(stats) as f:
+                read = json.load(f)["input"]
+            self.assertEqual(read["points"], reader.GetOutput().GetNumberOfPoints(), ext)
             legacy = vtk.vtkPolyDataReader()
             legacy.SetFileName(os.path.join(self.dir, "out.vtk"))
             legacy.Update()

@@ -1,0 +1,287 @@
+// VTK-HeaderTest-Exclude: vtkQuadCoverSTL.cxx
+#include "vtkQuadCoverSTL.h"
+
+#include "vtkQuadCoverFileChecks.h"
+
+#include "vtkCellArray.h"
+#include "vtkDoubleArray.h"
+#include "vtkNew.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+
+#include <vtksys/SystemTools.hxx>
+
+#include <algorithm>
+#include <array>
+#include <cctype>
+#include <cstdint>
+#include <cstdlib>
+#include <cstring>
+#include <fstream>
+#include <stdexcept>
+#include <string>
+#include <unordered_map>
+#include <vector>
+
+namespace
+{
+/// Points with equal coordinates joined, in the order they first appear, and the facets.
+class Facets
+{
+public:
+  /// The index of the point (x, y, z), a new one if no earlier point has these coordinates.
+  vtkIdType Point(double x, double y, double z)
+  {
+    // +0 and -0 are one coordinate
+    const std::array<double, 3> key{ x + 0.0, y + 0.0, z + 0.0 };
+    const auto found = this->Index.emplace(key, static_cast<vtkIdType>(this->Index.size()));
+    if (found.second)
+    {
+      this->Coordinates.insert(this->Coordinates.end(), key.begin(), key.end());
+    }
+    return found.first->second;
+  }
+
+  /// A facet of these points, unless two of them are one.
+  void Add(const std::vector<vtkIdType>& corners)
+  {
+    std::vector<vtkIdType> sorted = corners;
+    std::sort(sorted.begin(), sorted.end());
+    if (std::adjacent_find(sorted.begin(), sorted.end()) == sorted.end())
+    {
+      this->Polys->InsertNextCell(static_cast<vtkIdType>(corners.size()), corners.data());
+    }
+  }
+
+  void Store(vtkPolyData* output) const
+  {
+    vtkNew<vtkDoubleArray> xyz;
+    xyz->SetNumberOfComponents(3);
+    xyz->SetNumberOfTuples(static_cast<vtkIdType>(this->Index.size()));
+    std::copy(this->Coordinates.begin(), this->Coordinates.end(), xyz->GetPointer(0));
+    vtkNew<vtkPoints> points;
+    points->SetData(xyz);
+    vtkNew<vtkPolyData> surface;
+    surface->SetPoints(points);
+    surface->SetPolys(this->Polys);
+    output->ShallowCopy(surface);
+  }
+
+private:
+  struct Hash
+  {
+    std::size_t operator()(const std::array<double, 3>& key) const
+    {
+      std::size_t h = 0;
+      for (const double x : key)
+      {
+        std::uint64_t bits;
+        std::memcpy(&bits, &x, sizeof bits);
+        h = (h ^ bits) * 0x100000001b3ULL + (h >> 29);
+      }
+      return h;
+    }
+  };
+  std::unordered_map<std::array<double, 3>, vtkIdType, Hash> Index;
+  std::vector<double> Coordinates;
+  vtkNew<vtkCellArray> Polys;
+};
+
+/// The little-endian float at p.
+float FloatAt(const unsigned char* p)
+{
+  const std::uint32_t bits = static_cast<std::uint32_t>(p[0]) |
+    (static_cast<std::uint32_t>(p[1]) << 8) | (static_cast<std::uint32_t>(p[2]) << 16) |
+    (static_cast<std::uint32_t>(p[3]) << 24);
+  float value;
+  std::memcpy(&value, &bits, sizeof value);
+  return value;
+}
+
+/// The binary file's facets (its length checked by vtkQuadCoverFileChecks::CheckStl).
+void ReadBinary(const std::string& data, Facets& facets)
+{
+  const auto* bytes = reinterpret_cast<const unsigned char*>(data.data());
+  const long long claimed = static_cast<long long>(bytes[80]) |
+    (static_cast<long long>(bytes[81]) << 8) | (static_cast<long long>(bytes[82]) << 16) |
+    (static_cast<long long>(bytes[83]) << 24);
+  const long long size = static_cast<long long>(data.size());
+  const long long count = (size - 84) % 50 == 0 ? (size - 84) / 50 : claimed;
+  std::vector<vtkIdType> corners(3);
+  for (long long t = 0; t < count; ++t)
+  {
+    const unsigned char* facet = bytes + 84 + 50 * t + 12; // after the normal
+    for (int k = 0; k < 3; ++k)
+    {
+      const unsigned char* p = facet + 12 * k;
+      corners[k] = facets.Point(FloatAt(p), FloatAt(p + 4), FloatAt(p + 8));
+    }
+    facets.Add(corners);
+  }
+}
+
+/// The words of an ASCII file, with the line each is on.
+class Words
+{
+public:
+  explicit Words(const std::string& text)
+    : P(text.data())
+    , End(text.data() + text.size())
+  {}
+
+  /// The next word, "" at the end of the file.
+  std::string Next()
+  {
+    while (this->P < this->End && std::isspace(static_cast<unsigned char>(*this->P)))
+    {
+      this->Line += *this->P++ == '\n';
+    }
+    const char* start = this->P;
+    while (this->P < this->End && !std::isspace(static_cast<unsigned char>(*this->P)))
+    {
+      ++this->P;
+    }
+    return std::string(start, this->P);
+  }
+
+  /// The next word in lower case.
+  std::string Keyword()
+  {
+    std::string word = this->Next();
+    std::transform(word.begin(), word.end(), word.begin(),
+      [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    return word;
+  }
+
+  /// Skips to the end of the line (a solid's name).
+  void SkipLine()
+  {
+    while (this->P < this->End && *this->P != '\n')
+    {
+      ++this->P;
+    }
+  }
+
+  double Number()
+  {
+    const std::string word = this->Next();
+    char* end = nullptr;
+    const double value = std::strtod(word.c_str(), &end);
+    if (word.empty() || *end != '\0')
+    {
+      this->Fail(word.empty() ? "the file ends in the middle of a facet"
+                              : "a vertex needs three numbers, found '" + word + "'");
+    }
+    return value;
+  }
+
+  /// The next keyword, which must be `expected`.
+  void Expect(const std::string& expected)
+  {
+    const std::string word = this->Keyword();
+    if (word != expected)
+    {
+      this->Fail(word.empty() ? "the file ends in the middle of a facet"
+                              : "'" + expected + "' expected, found '" + word + "'");
+    }
+  }
+
+  [[noreturn]] void Fail(const std::string& why) const
+  {
+    throw std::runtime_error("line " + std::to_string(this->Line) + ": " + why);
+  }
+
+private:
+  const char* P;
+  const char* End;
+  long long Line = 1;
+};
+
+/// The ASCII file's facets.
+void ReadText(const std::string& text, Facets& facets)
+{
+  Words words(text);
+  if (words.Keyword() != "solid")
+  {
+    words.Fail("not an ASCII STL file ('solid' expected at its start)");
+  }
+  words.SkipLine();
+  std::vector<vtkIdType> corners;
+  for (std::string word = words.Keyword(); !word.empty(); word = words.Keyword())
+  {
+    if (word == "endsolid" || word == "solid")
+    {
+      words.SkipLine();
+      continue;
+    }
+    if (word != "facet")
+    {
+      words.Fail("'facet' expected, found '" + word + "'");
+    }
+    words.Expect("normal");
+    for (int k = 0; k < 3; ++k)
+    {
+      words.Number();
+    }
+    words.Expect("outer");
+    words.Expect("loop");
+    corners.clear();
+    for (word = words.Keyword(); word == "vertex"; word = words.Keyword())
+    {
+      const double x = words.Number();
+      const double y = words.Number();
+      const double z = words.Number();
+      corners.push_back(facets.Point(x, y, z));
+    }
+    if (word != "endloop")
+    {
+      words.Fail(word.empty() ? "the file ends in the middle of a facet"
+                              : "'vertex' or 'endloop' expected, found '" + word + "'");
+    }
+    if (corners.size() < 3)
+    {
+      words.Fail("a facet needs three vertices, this one has " + std::to_string(corners.size()));
+    }
+    words.Expect("endfacet");
+    facets.Add(corners);
+  }
+}
+}
+
+namespace vtkQuadCoverSTL
+{
+std::string Read(const std::string& path, vtkPolyData* output)
+{
+  std::string error = vtkQuadCoverFileChecks::CheckStl(path);
+  if (!error.empty())
+  {
+    return error;
+  }
+  std::ifstream in(path, std::ios::binary);
+  if (!in)
+  {
+    return "cannot open the file";
+  }
+  std::string data((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const bool binary =
+    vtksys::SystemTools::DetectFileType(path.c_str()) != vtksys::SystemTools::FileTypeText;
+  try
+  {
+    Facets facets;
+    if (binary)
+    {
+      ReadBinary(data, facets);
+    }
+    else
+    {
+      ReadText(data, facets);
+    }
+    facets.Store(output);
+  }
+  catch (const std::exception& e)
+  {
+    return e.what();
+  }
+  return "";
+}
+}
