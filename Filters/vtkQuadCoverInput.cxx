@@ -1,15 +1,20 @@
 #include "vtkQuadCoverInput.h"
 
 #include "vtkCellArray.h"
+#include "vtkCellArrayIterator.h"
 #include "vtkCellData.h"
+#include "vtkFieldData.h"
 #include "vtkIdList.h"
 #include "vtkNew.h"
+#include "vtkPointData.h"
 #include "vtkPoints.h"
-#include "vtkTriangleFilter.h"
+#include "vtkPolygon.h"
+#include "vtkTriangleStrip.h"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <vector>
 
 namespace
 {
@@ -116,12 +121,8 @@ std::string Triangulate(vtkPolyData* in, vtkPolyData* out, std::string& warning)
     out->ShallowCopy(in);
     return "";
   }
-  vtkNew<vtkTriangleFilter> tri;
-  tri->SetInputData(in);
-  tri->PassVertsOff();
-  tri->PassLinesOff();
-  tri->Update();
-  vtkPolyData* t = tri->GetOutput();
+  vtkNew<vtkPolyData> t;
+  TriangulateCells(in, t);
 
   // Keep the triangles with three distinct points, with their cell data.
   vtkNew<vtkCellArray> kept;
@@ -160,6 +161,113 @@ std::string Triangulate(vtkPolyData* in, vtkPolyData* out, std::string& warning)
     return "the input's polygons are all degenerate (no triangle left)";
   }
   return "";
+}
+
+void TriangulateCells(vtkPolyData* input, vtkPolyData* output)
+{
+  vtkCellData* inCD = input->GetCellData();
+  vtkNew<vtkCellData> outCD;
+  outCD->CopyAllocate(inCD, input->GetNumberOfCells());
+  vtkNew<vtkCellArray> triangles;
+  vtkIdType source = input->GetNumberOfVerts() + input->GetNumberOfLines(); // the cell ids
+  vtkIdType made = 0;
+  vtkNew<vtkPolygon> polygon;
+  vtkNew<vtkIdList> corners;
+  auto polys = vtk::TakeSmartPointer(input->GetPolys()->NewIterator());
+  for (polys->GoToFirstCell(); !polys->IsDoneWithTraversal(); polys->GoToNextCell(), ++source)
+  {
+    vtkIdType n;
+    const vtkIdType* ids;
+    polys->GetCurrentCell(n, ids);
+    if (n == 3)
+    {
+      triangles->InsertNextCell(3, ids);
+      outCD->CopyData(inCD, source, made++);
+      continue;
+    }
+    if (n == 0)
+    {
+      continue;
+    }
+    polygon->PointIds->SetNumberOfIds(n);
+    polygon->Points->SetNumberOfPoints(n);
+    for (vtkIdType k = 0; k < n; ++k)
+    {
+      polygon->PointIds->SetId(k, ids[k]);
+      polygon->Points->SetPoint(k, input->GetPoint(ids[k]));
+    }
+    polygon->Triangulate(corners); // local ids, three a triangle
+    for (vtkIdType t = 0; t + 2 < corners->GetNumberOfIds(); t += 3)
+    {
+      const vtkIdType triangle[3] = { polygon->PointIds->GetId(corners->GetId(t)),
+        polygon->PointIds->GetId(corners->GetId(t + 1)),
+        polygon->PointIds->GetId(corners->GetId(t + 2)) };
+      triangles->InsertNextCell(3, triangle);
+      outCD->CopyData(inCD, source, made++);
+    }
+  }
+  auto strips = vtk::TakeSmartPointer(input->GetStrips()->NewIterator());
+  for (strips->GoToFirstCell(); !strips->IsDoneWithTraversal(); strips->GoToNextCell(), ++source)
+  {
+    vtkIdType n;
+    const vtkIdType* ids;
+    strips->GetCurrentCell(n, ids);
+    vtkTriangleStrip::DecomposeStrip(static_cast<int>(n), ids, triangles);
+    for (vtkIdType k = 0; k + 2 < n; ++k)
+    {
+      outCD->CopyData(inCD, source, made++);
+    }
+  }
+  outCD->Squeeze();
+  vtkNew<vtkPolyData> result;
+  result->SetPoints(input->GetPoints());
+  result->GetPointData()->PassData(input->GetPointData());
+  result->SetPolys(triangles);
+  result->GetCellData()->ShallowCopy(outCD);
+  result->GetFieldData()->PassData(input->GetFieldData());
+  output->ShallowCopy(result);
+}
+
+void RemoveUnusedPoints(vtkPolyData* input, vtkPolyData* output)
+{
+  const vtkIdType n = input->GetNumberOfPoints();
+  std::vector<vtkIdType> newId(static_cast<std::size_t>(n), -1);
+  vtkNew<vtkPoints> points;
+  points->SetDataType(input->GetPoints()->GetDataType());
+  vtkPointData* inPD = input->GetPointData();
+  vtkNew<vtkPointData> outPD;
+  outPD->CopyAllOn(vtkDataSetAttributes::COPYTUPLE);
+  outPD->CopyAllocate(inPD);
+  vtkNew<vtkCellArray> polys;
+  polys->AllocateExact(
+    input->GetPolys()->GetNumberOfCells(), input->GetPolys()->GetNumberOfConnectivityIds());
+  std::vector<vtkIdType> renamed;
+  auto cells = vtk::TakeSmartPointer(input->GetPolys()->NewIterator());
+  for (cells->GoToFirstCell(); !cells->IsDoneWithTraversal(); cells->GoToNextCell())
+  {
+    vtkIdType size;
+    const vtkIdType* ids;
+    cells->GetCurrentCell(size, ids);
+    renamed.assign(ids, ids + size);
+    for (vtkIdType& id : renamed)
+    {
+      vtkIdType& to = newId[static_cast<std::size_t>(id)];
+      if (to < 0)
+      {
+        to = points->InsertNextPoint(input->GetPoint(id));
+        outPD->CopyData(inPD, id, to);
+      }
+      id = to;
+    }
+    polys->InsertNextCell(size, renamed.data());
+  }
+  vtkNew<vtkPolyData> result;
+  result->SetPoints(points);
+  result->GetPointData()->ShallowCopy(outPD);
+  result->SetPolys(polys);
+  result->GetCellData()->PassData(input->GetCellData());
+  result->GetFieldData()->PassData(input->GetFieldData());
+  output->ShallowCopy(result);
 }
 
 int UnitScaleExponent(vtkPolyData* in)

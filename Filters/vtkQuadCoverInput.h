@@ -17,7 +17,7 @@ VTKQUADCOVERFILTERS_EXPORT std::string CheckPoints(vtkPolyData* input);
 
 /**
  * Makes `output` a triangle-only surface over `input`: a shallow copy when `input` holds only
- * proper triangles, else polygons and strips triangulated (vtkTriangleFilter, cell data copied to
+ * proper triangles, else polygons and strips triangulated (TriangulateCells, cell data copied to
  * the new triangles), vertices and lines dropped, and triangles that repeat a point id (strip
  * joins, collapsed polygons) dropped; `warning` counts what was dropped.
  * @return "" on success, else a one-line reason (no points, no polygons, point ids out of range,
@@ -25,6 +25,24 @@ VTKQUADCOVERFILTERS_EXPORT std::string CheckPoints(vtkPolyData* input);
  */
 VTKQUADCOVERFILTERS_EXPORT std::string Triangulate(
   vtkPolyData* input, vtkPolyData* output, std::string& warning);
+
+/**
+ * The polygons and strips of `input` as triangles, in that order, each with its cell's data:
+ * a triangle as it is, a larger polygon by vtkPolygon's triangulation (none for fewer than three
+ * points), a strip's triangles as vtkTriangleStrip lays them out (its degenerate joins too).
+ * Vertex and line cells are left out; points, point data and field data are shared. What
+ * vtkTriangleFilter makes with PassVerts and PassLines off (Testing/Cxx checks it), without
+ * VTK::FiltersCore, which a command line's every run loaded for it (6 MB resident).
+ */
+VTKQUADCOVERFILTERS_EXPORT void TriangulateCells(vtkPolyData* input, vtkPolyData* output);
+
+/**
+ * `input`'s polygons (their cell data passed) over only the points they use, renumbered in the
+ * order the polygons first use them, with their point data; field data shared. `input` has only
+ * polygons, none that repeats a point. What vtkCleanPolyData makes of such a surface with
+ * PointMerging off (Testing/Cxx checks it).
+ */
+VTKQUADCOVERFILTERS_EXPORT void RemoveUnusedPoints(vtkPolyData* input, vtkPolyData* output);
 
 /**
  * The scale at which the stages compute (vtkQuadCoverSurface): the points times 2^e. 0 when the

@@ -2,11 +2,10 @@
 
 #include "vtkQuadCoverArrayNames.h"
 #include "vtkQuadCoverEigen.h"
-#include "vtkQuadCoverErrorObserver.h"
+#include "vtkQuadCoverInput.h"
 
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
-#include "vtkCleanPolyData.h"
 #include "vtkDataArray.h"
 #include "vtkFieldData.h"
 #include "vtkIdList.h"
@@ -16,7 +15,6 @@
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkSmartPointer.h"
-#include "vtkTriangleFilter.h"
 
 #include "MeshTopology.h"
 #include "SurfaceRefinement.h"
@@ -47,17 +45,6 @@ struct Counts
   vtkIdType refinedTriangles = 0;
   vtkIdType collapsedEdges = 0;
 };
-
-/// Updates a VTK filter on `input`; its first error is thrown.
-void Run(vtkAlgorithm* filter, vtkPolyData* input)
-{
-  filter->SetInputDataObject(input);
-  const std::string error = vtkQuadCoverErrorObserver::Run(filter);
-  if (!error.empty())
-  {
-    throw std::runtime_error(error);
-  }
-}
 
 /// Removes the repeated triangles and the components of zero area (quadcover::
 /// redundantTriangles, on the points scaled as `in` says), with their cell data; returns how
@@ -98,13 +85,7 @@ vtkIdType RemoveRedundantTriangles(vtkPolyData* surface, const vtkQuadCoverSurfa
     fewer->ShallowCopy(surface);
     fewer->SetPolys(polys);
     fewer->GetCellData()->ShallowCopy(cellData);
-    vtkNew<vtkCleanPolyData> unused;
-    unused->PointMergingOff();
-    unused->ConvertPolysToLinesOff();
-    unused->ConvertLinesToPointsOff();
-    unused->ConvertStripsToPolysOff();
-    Run(unused.Get(), fewer);
-    surface->ShallowCopy(unused->GetOutput());
+    vtkQuadCoverInput::RemoveUnusedPoints(fewer, surface);
   }
   return removed;
 }
@@ -322,11 +303,8 @@ void vtkQuadCoverSurfaceRepair::Execute(vtkQuadCoverSurface& in, vtkInformationV
 
   // Triangulate first (the degenerate joins of strips stay degenerate and are removed below);
   // cell data follows the triangles.
-  vtkNew<vtkTriangleFilter> triangles;
-  triangles->PassVertsOff();
-  triangles->PassLinesOff();
-  Run(triangles.Get(), input);
-  vtkPolyData* tri = triangles->GetOutput();
+  vtkNew<vtkPolyData> tri;
+  vtkQuadCoverInput::TriangulateCells(input, tri);
   this->UpdateProgress(0.25);
 
   // Merge coincident points (to round-off); triangles left with a repeated point are removed.

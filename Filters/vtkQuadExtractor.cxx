@@ -2,6 +2,7 @@
 
 #include "vtkQuadCoverArrayNames.h"
 #include "vtkQuadCoverEigen.h"
+#include "vtkQuadCoverInput.h"
 
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
@@ -18,7 +19,6 @@
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
-#include "vtkTriangleFilter.h"
 
 #include "QuadMeshing.h"
 #include "QuadQuality.h"
@@ -147,17 +147,14 @@ void AddHausdorffDistance(vtkFieldData* fd, const Eigen::MatrixX3d& V, const Eig
 void SourceSurface(
   vtkPolyData* source, const vtkQuadCoverSurface& in, Eigen::MatrixX3d& V, Eigen::MatrixX3i& F)
 {
-  vtkNew<vtkTriangleFilter> triangles;
+  vtkNew<vtkPolyData> triangles;
   vtkPolyData* t = source;
   if (!source || source->GetNumberOfStrips() > 0 || source->GetPolys()->IsHomogeneous() != 3)
   {
     // polygons and strips triangulated (a surface of triangles is read as it is, not copied)
-    triangles->PassVertsOff();
-    triangles->PassLinesOff();
     vtkNew<vtkPolyData> none;
-    triangles->SetInputData(source ? source : none.Get());
-    triangles->Update();
-    t = triangles->GetOutput();
+    vtkQuadCoverInput::TriangulateCells(source ? source : none.Get(), triangles);
+    t = triangles;
   }
   if (!source || t->GetNumberOfPolys() == 0 || t->GetPolys()->IsHomogeneous() != 3)
   {
