@@ -59,20 +59,27 @@ double meanQuadEdge(const QuadMesh& mesh)
 std::vector<char> quadMeshBoundary(const QuadMesh& mesh)
 {
   std::vector<char> boundary(mesh.V.rows(), 0);
-  std::map<std::pair<int, int>, int> edgeCount;
+  // the quads' edges sorted, so that each edge's copies are side by side
+  std::vector<std::pair<int, int>> edges;
+  edges.reserve(4 * static_cast<std::size_t>(mesh.Q.rows()));
   for (int i = 0; i < static_cast<int>(mesh.Q.rows()); ++i)
   {
     for (int k = 0; k < 4; ++k)
     {
       const int a = mesh.Q(i, k), b = mesh.Q(i, (k + 1) % 4);
-      ++edgeCount[{ std::min(a, b), std::max(a, b) }];
+      edges.emplace_back(std::min(a, b), std::max(a, b));
     }
   }
-  for (const auto& [edge, count] : edgeCount)
+  std::sort(edges.begin(), edges.end());
+  for (std::size_t i = 0, j = 0; i < edges.size(); i = j)
   {
-    if (count != 2)
+    while (j < edges.size() && edges[j] == edges[i])
     {
-      boundary[edge.first] = boundary[edge.second] = 1;
+      ++j;
+    }
+    if (j - i != 2)
+    {
+      boundary[edges[i].first] = boundary[edges[i].second] = 1;
     }
   }
   return boundary;
