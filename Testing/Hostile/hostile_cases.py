@@ -143,6 +143,17 @@ def truncated_binary_stl(folder):
     return _write(folder, "truncated_binary.stl", m.stl_binary((points, faces[:10]), 1056))
 
 
+def ascii_stl(folder):
+    # a whole sphere as ASCII STL, its points repeated per facet (the reader joins them)
+    return _write(folder, "sphere_ascii.stl", m.stl_ascii(SPHERE))
+
+
+def bad_number_stl(folder):
+    text = m.stl_ascii(SPHERE)
+    at = text.find("vertex", len(text) // 2) + len("vertex ")
+    return _write(folder, "bad_number.stl", text[:at] + "1.0x" + text[at + 1:])
+
+
 def truncated_ascii_stl(folder):
     text = m.stl_ascii(SPHERE)
     cut = text.find("vertex", len(text) // 2)  # in the middle of a facet
@@ -391,6 +402,8 @@ CASES = {
     "huge_header_ply": (huge_header_ply, Refused("more than the file")),
     "truncated_binary_stl": (truncated_binary_stl, Refused("1056 triangles")),
     "truncated_ascii_stl": (truncated_ascii_stl, Refused("ends in the middle of a facet")),
+    "ascii_stl": (ascii_stl, Quads(1, 2)),
+    "bad_number_stl": (bad_number_stl, Refused("a vertex needs three numbers")),
     "truncated_obj": (truncated_obj, Refused("cut short")),
     "truncated_vtp": (truncated_vtp, Refused("cannot read")),
     "vertices_only": (vertices_only, Refused("no polygons")),
