@@ -1,5 +1,5 @@
 // vtkQuadCoverFileChecks.h (private): what VTK 9.1's PLY reader gets wrong on bad files, checked
-// before it reads them; the binary STL check of vtkQuadCoverSTL's reader.
+// before it reads them, and what the readers share.
 #ifndef vtkQuadCoverFileChecks_h
 #define vtkQuadCoverFileChecks_h
 
@@ -33,11 +33,6 @@ bool LooksBinary(const std::string& path);
  * A property type it does not know is left to the reader to judge.
  */
 std::string CheckPly(const std::string& path);
-
-/// For a binary STL file (as vtksys decides it) the header's triangle count must fit in the
-/// file, and a file whose count is not its own (often 0) must end on a triangle (it is then read
-/// to its end, as VTK's reader does). Returns "" or a one-line reason.
-std::string CheckStl(const std::string& path);
 }
 
 #endif

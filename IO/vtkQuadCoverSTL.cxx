@@ -1,8 +1,6 @@
 // VTK-HeaderTest-Exclude: vtkQuadCoverSTL.cxx
 #include "vtkQuadCoverSTL.h"
 
-#include "vtkQuadCoverFileChecks.h"
-
 #include "vtkCellArray.h"
 #include "vtkDoubleArray.h"
 #include "vtkNew.h"
@@ -95,26 +93,55 @@ private:
   vtkNew<vtkCellArray> Polys;
 };
 
+/// The little-endian 32-bit word at p.
+std::uint32_t WordAt(const unsigned char* p)
+{
+  return static_cast<std::uint32_t>(p[0]) | (static_cast<std::uint32_t>(p[1]) << 8) |
+    (static_cast<std::uint32_t>(p[2]) << 16) | (static_cast<std::uint32_t>(p[3]) << 24);
+}
+
 /// The little-endian float at p.
 float FloatAt(const unsigned char* p)
 {
-  const std::uint32_t bits = static_cast<std::uint32_t>(p[0]) |
-    (static_cast<std::uint32_t>(p[1]) << 8) | (static_cast<std::uint32_t>(p[2]) << 16) |
-    (static_cast<std::uint32_t>(p[3]) << 24);
+  const std::uint32_t bits = WordAt(p);
   float value;
   std::memcpy(&value, &bits, sizeof value);
   return value;
 }
 
-/// The binary file's facets (its length checked by vtkQuadCoverFileChecks::CheckStl).
+/// How many triangles the binary file holds: as many as its header says, which must fit in the
+/// file; and where that is not the file's own count (many writers leave 0), the file must end on
+/// a triangle and is read to its end, as VTK's reader read it.
+/// @throws std::runtime_error for a file shorter than its header or count, or cut in a triangle
+long long BinaryTriangles(const std::string& data)
+{
+  const long long size = static_cast<long long>(data.size());
+  if (size < 84)
+  {
+    throw std::runtime_error(
+      "a binary STL file needs 84 bytes for its header, this one has " + std::to_string(size));
+  }
+  const long long claimed = WordAt(reinterpret_cast<const unsigned char*>(data.data()) + 80);
+  const long long present = (size - 84) / 50;
+  if (claimed > present)
+  {
+    throw std::runtime_error("the binary STL header says " + std::to_string(claimed) +
+      " triangles (" + std::to_string(84 + 50 * claimed) + " bytes), but the file has " +
+      std::to_string(size) + " bytes, " + std::to_string(present) + " triangles (cut short?)");
+  }
+  if (claimed != present && (size - 84) % 50 != 0)
+  {
+    throw std::runtime_error("the binary STL file ends in the middle of a triangle (" +
+      std::to_string(size) + " bytes is not 84 and 50 a triangle; cut short?)");
+  }
+  return present; // the header's count, or the file's own where the header says another
+}
+
+/// The binary file's facets.
 void ReadBinary(const std::string& data, Facets& facets)
 {
+  const long long count = BinaryTriangles(data);
   const auto* bytes = reinterpret_cast<const unsigned char*>(data.data());
-  const long long claimed = static_cast<long long>(bytes[80]) |
-    (static_cast<long long>(bytes[81]) << 8) | (static_cast<long long>(bytes[82]) << 16) |
-    (static_cast<long long>(bytes[83]) << 24);
-  const long long size = static_cast<long long>(data.size());
-  const long long count = (size - 84) % 50 == 0 ? (size - 84) / 50 : claimed;
   std::vector<vtkIdType> corners(3);
   for (long long t = 0; t < count; ++t)
   {
@@ -276,11 +303,6 @@ namespace vtkQuadCoverSTL
 {
 std::string Read(const std::string& path, vtkPolyData* output)
 {
-  std::string error = vtkQuadCoverFileChecks::CheckStl(path);
-  if (!error.empty())
-  {
-    return error;
-  }
   std::ifstream in(path, std::ios::binary);
   if (!in)
   {

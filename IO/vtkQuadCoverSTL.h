@@ -15,15 +15,14 @@ namespace vtkQuadCoverSTL
  * triangle count, then 50 bytes a triangle: a normal, three corners as floats, two bytes of
  * attributes), or a polygon per ASCII facet ("facet normal ... outer loop", a "vertex x y z" line
  * per corner, "endloop endfacet", in one or more "solid" blocks). The file is binary unless it
- * reads as text (vtksys's test, as vtkQuadCoverFileChecks::CheckStl's). Points with equal
- * coordinates are one point (STL repeats them per facet), in the order they first appear; a
- * facet left with two corners on one point is dropped. The facets' normals are not kept.
- * Binary files are read to the end when their length is a whole number of triangles (many
- * writers put 0 in the count), else as many triangles as the count says.
- * @return "" or one line: a binary file shorter than its count says or cut in the middle of a
- * triangle (vtkQuadCoverFileChecks::CheckStl), or, naming the line of an ASCII file: a keyword
- * out of place, a vertex without three numbers, a facet of fewer than three corners, a file
- * that ends in the middle of a facet
+ * reads as text (vtksys's test). Points with equal coordinates are one point (STL repeats them
+ * per facet), in the order they first appear; a facet left with two corners on one point is
+ * dropped. The facets' normals are not kept. A binary file whose count is not its own (many
+ * writers put 0 there) is read to its end.
+ * @return "" or one line: a binary file shorter than its header or its count says, or one whose
+ * count is not its own and that ends in the middle of a triangle; or, naming the line of an
+ * ASCII file: a keyword out of place, a vertex without three numbers, a facet of fewer than three
+ * corners, a file that ends in the middle of a facet
  */
 std::string Read(const std::string& path, vtkPolyData* output);
 }
