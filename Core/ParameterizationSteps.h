@@ -116,7 +116,7 @@ struct SeamlessSystem
   SparseMatrix P;                  ///< #symbols x #columns
   /// 4 #F x #symbols: sqrt(A) (grad u . x, grad u . y, grad v . x, grad v . y) per triangle
   SparseMatrix D;
-  SparseMatrix H;           ///< #columns x #columns: P^T D^T D P
+  SparseMatrix H; ///< #columns x #columns: P^T D^T D P, its lower triangle only
   /// 4 #F: sqrt(A) times the combed frame (U', V') / (edgeLength cellScale)
   Eigen::VectorXd rhs;
   Eigen::VectorXd faceArea; ///< #F: 0 for a degenerate triangle (left out of the energy)
