@@ -32,8 +32,12 @@ vtkSmartPointer<vtkAlgorithm> MakeWriter(const std::string& path, vtkPolyData* s
   if (ext == ".vtp")
   {
     auto xml = to(vtkSmartPointer<vtkXMLPolyDataWriter>::New());
+    // raw (not base64) appended data, zlib at level 1: fandisk's 6,539 quads in 7.5 ms and 243 KB
+    // against 13-16 ms and 316 KB with base64 at VTK's default level 5 (level 5 raw: 11 ms, 240 KB)
     xml->SetDataModeToAppended();
+    xml->SetEncodeAppendedData(0);
     xml->SetCompressorTypeToZLib();
+    xml->SetCompressionLevel(1);
     return xml;
   }
   if (ext == ".vtk")

@@ -10,7 +10,6 @@ exception (no output holds a time: the solver's seconds go to --stats only). Whe
 Needs QUADCOVER_CLI (the binary) and QUADCOVER_DATA (Data/); QUADCOVER_SHARED_DATA is optional
 (spot.obj is skipped with a message when absent).
 """
-import base64
 import os
 import struct
 import subprocess
@@ -31,19 +30,15 @@ SHARED = os.environ.get("QUADCOVER_SHARED_DATA", "")
 RUNS = [(1, 1), (1, 2), (1, 0), (2, 1), (2, 2), (2, 0), (1, 1)]
 
 
-def b64_length(n):
-    """Characters of base64 text for n bytes."""
-    return 4 * ((n + 2) // 3)
-
-
 def read_vtp(path):
     """{element path: (attributes without the offset, bytes)} of a VTK XML file in appended
-    base64 mode, zlib-compressed, as vtkQuadCoverWriter writes .vtp."""
+    raw mode, zlib-compressed, as vtkQuadCoverWriter writes .vtp."""
     with open(path, "rb") as f:
         text = f.read()
     start = text.index(b"<AppendedData")
     blob_start = text.index(b"_", start) + 1
-    blob = text[blob_start:text.index(b"</AppendedData>", blob_start)].rstrip()
+    # raw bytes, read by the offsets and sizes: the closing tag is the file's last
+    blob = text[blob_start:text.rindex(b"</AppendedData>")]
     root = ET.fromstring(text[:start] + b"</VTKFile>")
     uint = {"UInt32": ("I", 4), "UInt64": ("Q", 8)}[root.get("header_type", "UInt32")]
     if root.get("compressor") != "vtkZLibDataCompressor":  # what vtkQuadCoverWriter writes
@@ -51,17 +46,15 @@ def read_vtp(path):
 
     def decode(offset):
         # The header (block count, block size, last block size, compressed sizes), then the
-        # compressed blocks, each encoded on its own.
-        first = base64.b64decode(blob[offset:offset + b64_length(uint[1])])
-        blocks = struct.unpack("<" + uint[0], first[:uint[1]])[0]
-        header_bytes = (3 + blocks) * uint[1]
-        header = base64.b64decode(blob[offset:offset + b64_length(header_bytes)])
-        sizes = struct.unpack("<%d%s" % (blocks, uint[0]), header[3 * uint[1]:header_bytes])
-        offset += b64_length(header_bytes)
-        data = base64.b64decode(blob[offset:offset + b64_length(sum(sizes))])
-        out, at = [], 0
+        # compressed blocks.
+        width = uint[1]
+        blocks = struct.unpack("<" + uint[0], blob[offset:offset + width])[0]
+        header_bytes = (3 + blocks) * width
+        sizes = struct.unpack("<%d%s" % (blocks, uint[0]),
+                              blob[offset + 3 * width:offset + header_bytes])
+        out, at = [], offset + header_bytes
         for size in sizes:
-            out.append(zlib.decompress(data[at:at + size]))
+            out.append(zlib.decompress(blob[at:at + size]))
             at += size
         return b"".join(out)
 
