@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <utility>
 
 namespace quadcover
@@ -152,7 +153,7 @@ private:
   double quality(int i) const
   {
     ++evaluations_;
-    return quadWorstOf(surface_, mesh_, i);
+    return std::min(facings_.facing(mesh_, i), quadScaledJacobian(mesh_.V, mesh_.Q, i));
   }
 
   /// Of v's quads: the worst quality, and how many face against the surface (quadFacing below
@@ -169,7 +170,7 @@ private:
     {
       const int i = quadsOf_[j];
       ++evaluations_;
-      const double facing = quadFacing(surface_, mesh_, i);
+      const double facing = facings_.facing(mesh_, i);
       s.worst = std::min({ s.worst, facing, quadScaledJacobian(mesh_.V, mesh_.Q, i) });
       s.against += facing < 0.0;
     }
@@ -286,6 +287,8 @@ private:
   const Eigen::MatrixX3i& F_;
   const MeshTopology& topo_;
   const SurfaceLocator& surface_;
+  /// badQuads passes over every quad, few of them moved since the last
+  mutable QuadFacingMemo facings_{ surface_ };
   QuadMesh& mesh_;
   std::vector<int> offsets_; ///< #V + 1: where each vertex's quads start in quadsOf_
   std::vector<int> quadsOf_;
@@ -414,6 +417,40 @@ std::vector<int> turnedQuads(const SurfaceLocator& surface, const QuadMesh& mesh
 std::vector<int> turnedQuads(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F, const QuadMesh& q)
 {
   return turnedQuads(SurfaceLocator(V, F), q);
+}
+
+double QuadFacingMemo::facing(const QuadMesh& mesh, int i)
+{
+  const std::size_t nQ = static_cast<std::size_t>(mesh.Q.rows());
+  if (facing_.size() != nQ)
+  {
+    corners_.resize(nQ);
+    facing_.assign(nQ, std::numeric_limits<double>::quiet_NaN());
+  }
+  Eigen::Matrix<double, 4, 3> at;
+  for (int k = 0; k < 4; ++k)
+  {
+    at.row(k) = mesh.V.row(mesh.Q(i, k));
+  }
+  if (std::isnan(facing_[i]) || at != corners_[i])
+  {
+    corners_[i] = at;
+    facing_[i] = quadFacing(surface_, mesh, i);
+  }
+  return facing_[i];
+}
+
+std::vector<int> QuadFacingMemo::turned(const QuadMesh& mesh)
+{
+  std::vector<int> list;
+  for (int i = 0; i < static_cast<int>(mesh.Q.rows()); ++i)
+  {
+    if (this->facing(mesh, i) <= 0)
+    {
+      list.push_back(i);
+    }
+  }
+  return list;
 }
 
 FacingRepair repairFacing(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F,

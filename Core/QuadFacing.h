@@ -34,6 +34,32 @@ std::vector<int> turnedQuads(const SurfaceLocator& surface, const QuadMesh& mesh
 /// turnedQuads of the quads q on the surface (V, F).
 std::vector<int> turnedQuads(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F, const QuadMesh& q);
 
+/**
+ * quadFacing of a quad mesh's quads, kept from one call to the next: a quad is measured again
+ * only where its corners are not exactly where they were when it was last measured, so that
+ * each call gives what quadFacing gives. For the passes over every quad of a mesh whose repairs
+ * move a few of its vertices between them (cheburashka at 6,500 quads: 60,000 closest-point
+ * searches over nine passes, 9% of the run).
+ */
+class QuadFacingMemo
+{
+public:
+  explicit QuadFacingMemo(const SurfaceLocator& surface)
+    : surface_(surface)
+  {}
+
+  /// quadFacing(surface, mesh, i)
+  double facing(const QuadMesh& mesh, int i);
+
+  /// turnedQuads(surface, mesh)
+  std::vector<int> turned(const QuadMesh& mesh);
+
+private:
+  const SurfaceLocator& surface_;
+  std::vector<Eigen::Matrix<double, 4, 3>> corners_; ///< per quad, where it was measured
+  std::vector<double> facing_;                       ///< and what it measured (NaN: never)
+};
+
 /// What repairFacing did.
 struct FacingRepair
 {

@@ -22,7 +22,7 @@ namespace
 /// them (QuadRelaxOptions::unfold); kept only when fewer are inside out and none more faces
 /// against the surface (decimated-knight's smoothest field at 3,000 quads: 1 -> 0).
 void unfoldLastInverted(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F,
-  const MeshTopology& topo, const SurfaceLocator& surface, QuadMesh& mesh)
+  const MeshTopology& topo, QuadFacingMemo& facings, QuadMesh& mesh)
 {
   const std::vector<int> inverted = invertedQuads(mesh.V, mesh.Q);
   if (inverted.empty())
@@ -30,11 +30,11 @@ void unfoldLastInverted(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F,
     return;
   }
   const QuadMesh kept = mesh;
-  const std::size_t turned = turnedQuads(surface, mesh).size();
+  const std::size_t turned = facings.turned(mesh).size();
   const auto [before, after] = repairQuads(
     V, F, topo, mesh, [](const QuadMesh& m) { return invertedQuads(m.V, m.Q); }, 2, 10, 3,
     Progress(), true);
-  if (!(after < before) || turnedQuads(surface, mesh).size() > turned)
+  if (!(after < before) || facings.turned(mesh).size() > turned)
   {
     mesh = kept;
   }
@@ -120,12 +120,13 @@ QuadMeshResult buildQuadMesh(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& 
     r.invertedExtracted = countInvertedQuads(r.mesh.V, r.mesh.Q);
   }
   const SurfaceLocator surface(V, F);
-  r.turnedExtracted = static_cast<int>(turnedQuads(surface, r.mesh).size());
+  QuadFacingMemo facings(surface);
+  r.turnedExtracted = static_cast<int>(facings.turned(r.mesh).size());
   if (options.repairInvertedQuads && r.turnedExtracted > 0)
   {
     // quads facing against the surface (or turned inside out): their neighbourhoods relaxed
     auto bad = [&](const QuadMesh& m) {
-      std::vector<int> list = turnedQuads(surface, m), inverted = invertedQuads(m.V, m.Q);
+      std::vector<int> list = facings.turned(m), inverted = invertedQuads(m.V, m.Q);
       list.insert(list.end(), inverted.begin(), inverted.end());
       std::sort(list.begin(), list.end());
       list.erase(std::unique(list.begin(), list.end()), list.end());
@@ -137,7 +138,7 @@ QuadMeshResult buildQuadMesh(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& 
   if (options.repairInvertedQuads)
   {
     r.facing = repairFacing(V, F, topo, surface, r.mesh);
-    unfoldLastInverted(V, F, topo, surface, r.mesh);
+    unfoldLastInverted(V, F, topo, facings, r.mesh);
   }
   // the snapping and the relaxation last, so that the repairs above see the quads as the map
   // made them (moved first, a few vertices changed what the repairs did near the map's defects:
@@ -164,7 +165,7 @@ QuadMeshResult buildQuadMesh(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& 
   // triangles: 21 quads and one more at a corner, at 1,000, 3,000 and 6,500 quads)
   constexpr int FragmentQuads = 2;
   r.fragmentQuads = dropPinchedFragments(r.mesh, topo.faceComponent, FragmentQuads);
-  r.turnedQuads = static_cast<int>(turnedQuads(surface, r.mesh).size());
+  r.turnedQuads = static_cast<int>(facings.turned(r.mesh).size());
   r.splitVertices = splitPinchedVertices(r.mesh);
   r.quality = measureQuads(r.mesh.V, r.mesh.Q);
   for (Eigen::Index i = 0; i < r.quality.scaledJacobian.size(); ++i)
