@@ -122,11 +122,16 @@ private:
   {
     const int nF = static_cast<int>(F.rows());
     normal.resize(nF, 3);
+    centre.resize(nF, 3);
+    radius.resize(nF);
     for (int f = 0; f < nF; ++f)
     {
       const Eigen::Vector3d a = V.row(F(f, 0)), b = V.row(F(f, 1)), c = V.row(F(f, 2));
       const Eigen::Vector3d n = (b - a).cross(c - a);
       normal.row(f) = n.norm() > 0 ? Eigen::Vector3d(n.normalized()) : Eigen::Vector3d::Zero();
+      const Eigen::Vector3d m = (a + b + c) / 3.0;
+      centre.row(f) = m.transpose();
+      radius[f] = std::max({ (a - m).norm(), (b - m).norm(), (c - m).norm() });
     }
   }
 
@@ -402,8 +407,19 @@ private:
     {
       gatherCandidates(f);
       int next = -1;
-      for (const int g : candidates)
+      for (std::size_t i = 0; i < candidates.size(); ++i)
       {
+        // a candidate met before in this step (the fans around f's corners are walked both
+        // ways) cannot gain; nor can one whose bounding sphere lies farther than the closest
+        // point so far (with room for rounding far above it): the same walk, a tenth of the
+        // triangles measured (cheburashka at 6,500 quads: 54,000 of 590,000 listed)
+        const int g = candidates[i];
+        const double beyond = (p - centre.row(g).transpose()).norm() - radius[g];
+        if ((beyond > 0 && beyond > std::sqrt(distance) + 1e-9 * radius[g]) ||
+          std::find(candidates.begin(), candidates.begin() + i, g) != candidates.begin() + i)
+        {
+          continue;
+        }
         const Eigen::Vector3d q = closestIn(g, p);
         const double d = (q - p).squaredNorm();
         if (d < distance * (1.0 - 1e-12) - 1e-300)
@@ -455,6 +471,8 @@ private:
   const QuadRelaxOptions& options;
   const double creaseCos;          ///< cosine of options.featureAngle
   Eigen::MatrixX3d normal;         ///< #F x 3: the input's unit normals (0 where degenerate)
+  Eigen::MatrixX3d centre;         ///< #F x 3: the input triangles' centroids
+  Eigen::VectorXd radius;          ///< #F: their bounding spheres' radii about the centroids
   std::vector<char> blocked;       ///< per input edge: boundary, crease or non-manifold
   std::vector<char> pointOnCrease; ///< per input point: the kinds of blocked edges it is on
   std::vector<char> fixed;         ///< per quad vertex: stays where it is
