@@ -5,7 +5,6 @@
 
 #include <algorithm>
 #include <array>
-#include <map>
 #include <stdexcept>
 #include <utility>
 #include <vector>
@@ -33,30 +32,44 @@ int removeOverlappingQuads(
       progress.report((pass + static_cast<double>(i) / quads.size()) / 3.0);
     }
   };
-  std::map<std::array<int, 4>, int> seen;
-  std::vector<char> keep(quads.size(), 1);
+  // repeats: the same cell from another triangle holding its centre; the first one stays
+  std::vector<std::pair<std::array<int, 4>, int>> cells(quads.size());
   for (std::size_t i = 0; i < quads.size(); ++i)
   {
     tick(0, i);
     std::array<int, 4> key = quads[i];
     std::rotate(key.begin(), std::min_element(key.begin(), key.end()), key.end());
-    if (!seen.emplace(key, static_cast<int>(i)).second)
+    cells[i] = { key, static_cast<int>(i) };
+  }
+  std::sort(cells.begin(), cells.end());
+  std::vector<char> keep(quads.size(), 1);
+  for (std::size_t j = 1; j < cells.size(); ++j)
+  {
+    if (cells[j].first == cells[j - 1].first)
     {
-      keep[i] = 0; // the same cell, from another triangle holding its centre
+      keep[cells[j].second] = 0;
     }
   }
-  std::map<std::pair<int, int>, int> directed;
-  std::map<std::pair<int, int>, int> undirected;
+  // the kept quads' edges, directed and not, sorted to be counted
+  std::vector<std::pair<int, int>> directed, undirected;
+  directed.reserve(4 * quads.size());
+  undirected.reserve(4 * quads.size());
   for (std::size_t i = 0; i < quads.size(); ++i)
   {
     tick(1, i);
     for (int k = 0; k < 4 && keep[i]; ++k)
     {
       const int a = quads[i][k], b = quads[i][(k + 1) % 4];
-      ++directed[{ a, b }];
-      ++undirected[{ std::min(a, b), std::max(a, b) }];
+      directed.emplace_back(a, b);
+      undirected.emplace_back(std::min(a, b), std::max(a, b));
     }
   }
+  std::sort(directed.begin(), directed.end());
+  std::sort(undirected.begin(), undirected.end());
+  const auto count = [](const std::vector<std::pair<int, int>>& list, std::pair<int, int> e) {
+    const auto range = std::equal_range(list.begin(), list.end(), e);
+    return range.second - range.first;
+  };
   int removed = 0;
   std::vector<std::array<int, 4>> kept;
   std::vector<int> keptOwner;
@@ -66,7 +79,8 @@ int removeOverlappingQuads(
     for (int k = 0; k < 4 && keep[i]; ++k)
     {
       const int a = quads[i][k], b = quads[i][(k + 1) % 4];
-      if (directed[{ a, b }] > 1 || undirected[{ std::min(a, b), std::max(a, b) }] > 2)
+      if (count(directed, { a, b }) > 1 ||
+        count(undirected, { std::min(a, b), std::max(a, b) }) > 2)
       {
         keep[i] = 0;
         ++removed;
