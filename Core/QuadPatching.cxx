@@ -286,20 +286,22 @@ private:
 
   std::vector<Loop> boundaryLoops() const
   {
-    std::map<std::pair<int, int>, int> halfEdges;
+    std::vector<std::pair<int, int>> halfEdges; // each once, in order
     for (size_t i = 0; i < quads_.size(); ++i)
     {
       for (int k = 0; !removed_[i] && k < 4; ++k)
       {
-        ++halfEdges[{ quads_[i].corners[k], quads_[i].corners[(k + 1) % 4] }];
+        halfEdges.emplace_back(quads_[i].corners[k], quads_[i].corners[(k + 1) % 4]);
       }
     }
+    std::sort(halfEdges.begin(), halfEdges.end());
+    halfEdges.erase(std::unique(halfEdges.begin(), halfEdges.end()), halfEdges.end());
     std::map<int, std::vector<int>> next; // boundary half-edges leaving each point
-    for (const auto& [edge, count] : halfEdges)
+    for (const auto& [a, b] : halfEdges)
     {
-      if (halfEdges.find({ edge.second, edge.first }) == halfEdges.end())
+      if (!std::binary_search(halfEdges.begin(), halfEdges.end(), std::make_pair(b, a)))
       {
-        next[edge.first].push_back(edge.second);
+        next[a].push_back(b);
       }
     }
     std::vector<Loop> loops;

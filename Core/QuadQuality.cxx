@@ -7,7 +7,6 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <map>
 #include <numeric>
 #include <utility>
 #include <vector>
@@ -29,7 +28,8 @@ struct Tally
     std::iota(boundaryParent.begin(), boundaryParent.end(), 0);
   }
 
-  std::map<std::pair<int, int>, std::array<int, 2>> edges; ///< (faces, same-direction clashes)
+  /// each edge (a < b) once, in order, with (faces, same-direction clashes)
+  std::vector<std::pair<std::pair<int, int>, std::array<int, 2>>> edges;
   std::vector<char> usedVertex;
   std::vector<double> angles;
   std::vector<double> lengths;
@@ -48,7 +48,9 @@ void measureFaces(
   m.scaledJacobian.resize(nQ);
   double jacobianSum = 0.0;
   m.minScaledJacobian = nQ > 0 ? 1.0 : 0.0;
-  std::map<std::pair<int, int>, int> directed;
+  // every side of every face: (smaller end, larger end, from, to)
+  std::vector<std::array<int, 4>> sides;
+  sides.reserve(4 * static_cast<std::size_t>(nQ));
   for (int i = 0; i < nQ; ++i)
   {
     std::array<int, 4> q = { Q(i, 0), Q(i, 1), Q(i, 2), Q(i, 3) };
@@ -59,12 +61,7 @@ void measureFaces(
     {
       tally.usedVertex[q[k]] = 1;
       const int a = q[k], b = q[(k + 1) % 4];
-      auto& e = tally.edges[{ std::min(a, b), std::max(a, b) }];
-      ++e[0];
-      if (++directed[{ a, b }] > 1)
-      {
-        ++e[1];
-      }
+      sides.push_back({ std::min(a, b), std::max(a, b), a, b });
       const Eigen::Vector3d next = V.row(q[(k + 1) % 4]) - V.row(q[k]);
       const Eigen::Vector3d prev = V.row(q[(k + 3) % 4]) - V.row(q[k]);
       const double ln = next.norm(), lp = prev.norm();
@@ -79,6 +76,19 @@ void measureFaces(
     jacobianSum += smallest;
   }
   m.meanScaledJacobian = nQ > 0 ? jacobianSum / nQ : 0.0;
+  // the edges in order: the faces on each, and the sides that repeat one in the same direction
+  std::sort(sides.begin(), sides.end());
+  for (std::size_t j = 0; j < sides.size(); ++j)
+  {
+    const std::pair<int, int> edge{ sides[j][0], sides[j][1] };
+    if (tally.edges.empty() || tally.edges.back().first != edge)
+    {
+      tally.edges.push_back({ edge, { 0, 0 } });
+    }
+    auto& count = tally.edges.back().second;
+    ++count[0];
+    count[1] += j > 0 && sides[j] == sides[j - 1];
+  }
 }
 
 /// The edges: valences, lengths, non-manifold and boundary edges, components and loops.
