@@ -219,7 +219,7 @@ SurfaceLocator::Hit SurfaceLocator::closest(const Eigen::Vector3d& p) const
   Hit hit;
   const Eigen::Vector3i centre = cellOf(p);
   for (int ring = 0; visitRing(centre, ring, [&](int t) {
-         if (lowerBound(t, p) > hit.distance)
+         if (beyond(t, p, hit.distance))
          {
            return;
          }
@@ -248,7 +248,7 @@ std::vector<int> SurfaceLocator::nearlyClosest(const Eigen::Vector3d& p, double 
   double best = std::numeric_limits<double>::infinity();
   const Eigen::Vector3i centre = cellOf(p);
   for (int ring = 0; visitRing(centre, ring, [&](int t) {
-         if (lowerBound(t, p) > best + slack)
+         if (beyond(t, p, best + slack))
          {
            return;
          }

@@ -61,6 +61,16 @@ public:
     return (p - centres_.row(t).transpose()).norm() - radii_[t];
   }
 
+  /// Whether triangle t lies farther from p than `bound` by its bounding sphere, without a
+  /// square root: true only where lowerBound(t, p) > bound would be too, with room for rounding
+  /// (so that a search pruned by it measures the same triangles or a few more, and finds the
+  /// same).
+  bool beyond(int t, const Eigen::Vector3d& p, double bound) const
+  {
+    const double reach = bound + radii_[t];
+    return (p - centres_.row(t).transpose()).squaredNorm() > reach * reach * (1.0 + 1e-12);
+  }
+
 private:
   Eigen::Vector3i cellOf(const Eigen::Vector3d& p) const;
   int cellIndex(int x, int y, int z) const { return (z * size_[1] + y) * size_[0] + x; }
