@@ -40,19 +40,19 @@ void unfoldLastInverted(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F,
   }
 }
 
-/// Is quad i facing against the surface or inside out?
-bool wrongQuad(const SurfaceLocator& surface, const QuadMesh& mesh, int i)
+/// Is quad i facing against the surface or inside out? (quadWorstOf, its facing kept by facings)
+bool wrongQuad(QuadFacingMemo& facings, const QuadMesh& mesh, int i)
 {
-  return !(quadWorstOf(surface, mesh, i) > 0);
+  return !(std::min(facings.facing(mesh, i), quadScaledJacobian(mesh.V, mesh.Q, i)) > 0);
 }
 
 /// Puts the corners of the quads that the relaxation turned against the surface or inside out
 /// back where they were before it, until no quad that was right is wrong: relaxQuads checks each
 /// move against the corners' normals only, not against the input's normal at the quad's centre.
-/// Only quads with a moved corner are measured. (Vertices put back: the truck 6 and 10 at 1,000
-/// and 6,500 quads, the teapot 4 at 6,500; none on armadillo, lion, cheburashka,
-/// decimated-knight and rocker-arm at either.)
-void undoWrongMoves(const SurfaceLocator& surface, const QuadMesh& before, QuadMesh& mesh)
+/// Only quads with a moved corner are measured, those before the relaxation mostly known to
+/// facings already. (Vertices put back: the truck 6 and 10 at 1,000 and 6,500 quads, the teapot
+/// 4 at 6,500; none on armadillo, lion, cheburashka, decimated-knight and rocker-arm at either.)
+void undoWrongMoves(QuadFacingMemo& facings, const QuadMesh& before, QuadMesh& mesh)
 {
   const int nQ = static_cast<int>(mesh.Q.rows());
   auto moved = [&](int q) {
@@ -68,7 +68,7 @@ void undoWrongMoves(const SurfaceLocator& surface, const QuadMesh& before, QuadM
   std::vector<int> watched; // quads with a moved corner that were right before
   for (int q = 0; q < nQ; ++q)
   {
-    if (moved(q) && !wrongQuad(surface, before, q))
+    if (moved(q) && !wrongQuad(facings, before, q))
     {
       watched.push_back(q);
     }
@@ -78,7 +78,7 @@ void undoWrongMoves(const SurfaceLocator& surface, const QuadMesh& before, QuadM
     again = false;
     for (const int q : watched)
     {
-      if (!moved(q) || !wrongQuad(surface, mesh, q))
+      if (!moved(q) || !wrongQuad(facings, mesh, q))
       {
         continue;
       }
@@ -159,7 +159,7 @@ QuadMeshResult buildQuadMesh(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& 
     relax.featureAngle = options.featureAngle;
     const QuadMesh unrelaxed = r.mesh;
     relaxQuads(V, F, topo, r.mesh, relax, progress.part(0.75, 0.95));
-    undoWrongMoves(surface, unrelaxed, r.mesh);
+    undoWrongMoves(facings, unrelaxed, r.mesh);
   }
   // a quad or two hanging by a corner off its component's quads (the truck's disk of 512
   // triangles: 21 quads and one more at a corner, at 1,000, 3,000 and 6,500 quads)
