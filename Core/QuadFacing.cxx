@@ -153,7 +153,7 @@ private:
   double quality(int i) const
   {
     ++evaluations_;
-    return std::min(facings_.facing(mesh_, i), quadScaledJacobian(mesh_.V, mesh_.Q, i));
+    return facings_.worst(mesh_, i);
   }
 
   /// Of v's quads: the worst quality, and how many face against the surface (quadFacing below
@@ -438,6 +438,11 @@ double QuadFacingMemo::facing(const QuadMesh& mesh, int i)
     facing_[i] = quadFacing(surface_, mesh, i);
   }
   return facing_[i];
+}
+
+double QuadFacingMemo::worst(const QuadMesh& mesh, int i)
+{
+  return std::min(this->facing(mesh, i), quadScaledJacobian(mesh.V, mesh.Q, i));
 }
 
 std::vector<int> QuadFacingMemo::turned(const QuadMesh& mesh)

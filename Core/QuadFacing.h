@@ -51,6 +51,9 @@ public:
   /// quadFacing(surface, mesh, i)
   double facing(const QuadMesh& mesh, int i);
 
+  /// quadWorstOf(surface, mesh, i)
+  double worst(const QuadMesh& mesh, int i);
+
   /// turnedQuads(surface, mesh)
   std::vector<int> turned(const QuadMesh& mesh);
 

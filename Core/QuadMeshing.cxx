@@ -40,10 +40,10 @@ void unfoldLastInverted(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F,
   }
 }
 
-/// Is quad i facing against the surface or inside out? (quadWorstOf, its facing kept by facings)
+/// Is quad i facing against the surface or inside out?
 bool wrongQuad(QuadFacingMemo& facings, const QuadMesh& mesh, int i)
 {
-  return !(std::min(facings.facing(mesh, i), quadScaledJacobian(mesh.V, mesh.Q, i)) > 0);
+  return !(facings.worst(mesh, i) > 0);
 }
 
 /// Puts the corners of the quads that the relaxation turned against the surface or inside out
