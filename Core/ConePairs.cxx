@@ -223,11 +223,12 @@ public:
   const Eigen::VectorXd& area() const { return area_; }
 
   /// u~ of the given charges (curvature, each point's sum zero per component); of each column
-  /// of them, solved at once (one pass over each factor for all).
+  /// of them, solved at once (one pass over each factor for all). Several threads may call it
+  /// at once.
   Eigen::MatrixXd response(const Eigen::MatrixXd& charges) const
   {
-    const Eigen::MatrixXd u = laplacian_.solve(charges);
-    return diffusion_.solve(Eigen::MatrixXd(area_.asDiagonal() * u));
+    const Eigen::MatrixXd u = laplacian_.solveColumnsConcurrently(charges);
+    return diffusion_.solveColumnsConcurrently(Eigen::MatrixXd(area_.asDiagonal() * u));
   }
 
   /// u less each component's area-weighted mean.
@@ -513,9 +514,9 @@ ConePairs conePairsForEvenScale(const Eigen::MatrixX3d& V, const Eigen::MatrixX3
   const double minimumGain = options.minimumGain / std::max(model.totalArea() / (h * h), 1.0);
   double variance = model.variance(u);
   result.deviationBefore = std::sqrt(variance);
-  // measures the dipoles; keeps the best, and each other one that still gains enough with
-  // those kept before it and is not near them; returns how many it kept
-  const auto keepMeasured = [&](const std::vector<Dipole>& dipoles) {
+  // measures the dipoles (the variance each leaves alone), reading u and variance only
+  using Measured = std::vector<std::pair<Dipole, Eigen::VectorXd>>;
+  const auto measure = [&](const std::vector<Dipole>& dipoles) {
     const int m = static_cast<int>(dipoles.size());
     Eigen::MatrixXd charge = Eigen::MatrixXd::Zero(n, m);
     for (int i = 0; i < m; ++i)
@@ -524,7 +525,7 @@ ConePairs conePairsForEvenScale(const Eigen::MatrixX3d& V, const Eigen::MatrixX3
       charge(dipoles[i].minus, i) = -Pi / 2;
     }
     const Eigen::MatrixXd responses = model.response(charge);
-    std::vector<std::pair<Dipole, Eigen::VectorXd>> measured;
+    Measured measured;
     for (int i = 0; i < m; ++i)
     {
       Eigen::VectorXd response = responses.col(i);
@@ -532,6 +533,11 @@ ConePairs conePairsForEvenScale(const Eigen::MatrixX3d& V, const Eigen::MatrixX3
       measured.push_back(
         { { dipoles[i].plus, dipoles[i].minus, gain, dipoles[i].from }, std::move(response) });
     }
+    return measured;
+  };
+  // keeps the best measured, and each other one that still gains enough with those kept
+  // before it and is not near them; returns how many it kept
+  const auto keepMeasured = [&](Measured measured) {
     std::stable_sort(measured.begin(), measured.end(),
       [](const auto& a, const auto& b) { return a.first.gain > b.first.gain; });
     int kept = 0;
@@ -590,12 +596,36 @@ ConePairs conePairsForEvenScale(const Eigen::MatrixX3d& V, const Eigen::MatrixX3
       canFollow[i] = canFollow[i + 1] ||
         dipoles[i].gain >= (dipoles[i].from >= 0 ? MoveGain : 1.0) * minimumGain;
     }
-    int kept = 0;
-    for (std::size_t first = 0; kept == 0 && first < dipoles.size() && canFollow[first];
-         first += MeasuredDipoles)
-    {
+    const auto batch = [&](std::size_t first) {
       const std::size_t last = std::min(dipoles.size(), first + MeasuredDipoles);
-      kept = keepMeasured(std::vector<Dipole>(dipoles.begin() + first, dipoles.begin() + last));
+      return std::vector<Dipole>(dipoles.begin() + first, dipoles.begin() + last);
+    };
+    const auto follows = [&](std::size_t first) {
+      return first < dipoles.size() && canFollow[first];
+    };
+    // the first few alone (mostly one is kept); after them two batches measured at once, on
+    // two threads, the second kept from only when the first keeps none (then u and the
+    // variance it was measured against are unchanged: the same as one after the other)
+    int kept = follows(0) ? keepMeasured(measure(batch(0))) : 0;
+    for (std::size_t first = MeasuredDipoles; kept == 0 && follows(first);
+         first += 2 * MeasuredDipoles)
+    {
+      const std::size_t second = first + MeasuredDipoles;
+      Measured a, b;
+      if (follows(second))
+      {
+        runBoth([&]() { a = measure(batch(first)); }, [&]() { b = measure(batch(second)); },
+          options.numberOfThreads);
+      }
+      else
+      {
+        a = measure(batch(first));
+      }
+      kept = keepMeasured(std::move(a));
+      if (kept == 0 && !b.empty())
+      {
+        kept = keepMeasured(std::move(b));
+      }
     }
     if (kept == 0)
     {

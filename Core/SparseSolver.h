@@ -191,15 +191,31 @@ public:
   }
 
   /// solve(b) that several threads may call at once on one factor: CHOLMOD's workspace and
-  /// counters are then a cholmod_common of the call's own, not the solver's.
+  /// counters are then a cholmod_common of the call's own, not the solver's. The same call to
+  /// cholmod_solve as solve(b), so the same numbers.
   Eigen::Matrix<typename MatrixType::Scalar, Eigen::Dynamic, 1> solveConcurrently(
     const Eigen::Matrix<typename MatrixType::Scalar, Eigen::Dynamic, 1>& b) const
   {
-    using Vector = Eigen::Matrix<typename MatrixType::Scalar, Eigen::Dynamic, 1>;
+    return this->solveOwnCommon(b);
+  }
+
+  /// solve(b) of the columns of b, in one pass over the factor, that several threads may call
+  /// at once: the same numbers as solve(b) (not bit for bit those of each column solved alone).
+  Eigen::Matrix<typename MatrixType::Scalar, Eigen::Dynamic, Eigen::Dynamic>
+  solveColumnsConcurrently(
+    const Eigen::Matrix<typename MatrixType::Scalar, Eigen::Dynamic, Eigen::Dynamic>& b) const
+  {
+    return this->solveOwnCommon(b);
+  }
+
+private:
+  template<typename Dense>
+  Dense solveOwnCommon(const Dense& b) const
+  {
     eigen_assert(this->m_factorizationIsOk && "solveConcurrently() needs a factorization");
-    if (!this->m_factorizationIsOk || b.size() != static_cast<Eigen::Index>(this->rows()))
+    if (!this->m_factorizationIsOk || b.rows() != static_cast<Eigen::Index>(this->rows()))
     {
-      return Vector();
+      return Dense();
     }
     const CholmodThreads threads;
     // freed on every way out, the copy's bad_alloc included
@@ -214,14 +230,15 @@ public:
         cholmod_finish(&c);
       }
     } w;
-    Vector rhs = b;
+    Dense rhs = b;
     cholmod_dense B = Eigen::viewAsCholmod(rhs);
     w.X = cholmod_solve(CHOLMOD_A, this->m_cholmodFactor, &B, &w.c);
-    return w.X ? Vector(Eigen::Map<const Vector>(
-                   static_cast<const typename MatrixType::Scalar*>(w.X->x), b.size()))
-               : Vector();
+    return w.X ? Dense(Eigen::Map<const Dense>(
+                   static_cast<const typename MatrixType::Scalar*>(w.X->x), b.rows(), b.cols()))
+               : Dense();
   }
 
+public:
   template<typename Rhs, typename Dest>
   void _solve_impl(const Eigen::MatrixBase<Rhs>& b, Eigen::MatrixBase<Dest>& dest) const
   {
@@ -255,6 +272,11 @@ public:
   /// solve(b); Eigen's solves keep no state in the solver.
   Eigen::Matrix<Scalar, Eigen::Dynamic, 1> solveConcurrently(
     const Eigen::Matrix<Scalar, Eigen::Dynamic, 1>& b) const
+  {
+    return this->solve(b);
+  }
+  Eigen::Matrix<Scalar, Eigen::Dynamic, Eigen::Dynamic> solveColumnsConcurrently(
+    const Eigen::Matrix<Scalar, Eigen::Dynamic, Eigen::Dynamic>& b) const
   {
     return this->solve(b);
   }
