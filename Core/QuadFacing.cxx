@@ -2,6 +2,7 @@
 #include "QuadFacing.h"
 
 #include "BoundaryPaths.h"
+#include "Parallel.h"
 #include "QuadMeshAdjacency.h"
 #include "ScaledJacobian.h"
 
@@ -419,7 +420,17 @@ std::vector<int> turnedQuads(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& 
   return turnedQuads(SurfaceLocator(V, F), q);
 }
 
-double QuadFacingMemo::facing(const QuadMesh& mesh, int i)
+Eigen::Matrix<double, 4, 3> QuadFacingMemo::cornersOf(const QuadMesh& mesh, int i)
+{
+  Eigen::Matrix<double, 4, 3> at;
+  for (int k = 0; k < 4; ++k)
+  {
+    at.row(k) = mesh.V.row(mesh.Q(i, k));
+  }
+  return at;
+}
+
+bool QuadFacingMemo::stale(const QuadMesh& mesh, int i)
 {
   const std::size_t nQ = static_cast<std::size_t>(mesh.Q.rows());
   if (facing_.size() != nQ)
@@ -427,14 +438,14 @@ double QuadFacingMemo::facing(const QuadMesh& mesh, int i)
     corners_.resize(nQ);
     facing_.assign(nQ, std::numeric_limits<double>::quiet_NaN());
   }
-  Eigen::Matrix<double, 4, 3> at;
-  for (int k = 0; k < 4; ++k)
+  return std::isnan(facing_[i]) || cornersOf(mesh, i) != corners_[i];
+}
+
+double QuadFacingMemo::facing(const QuadMesh& mesh, int i)
+{
+  if (this->stale(mesh, i))
   {
-    at.row(k) = mesh.V.row(mesh.Q(i, k));
-  }
-  if (std::isnan(facing_[i]) || at != corners_[i])
-  {
-    corners_[i] = at;
+    corners_[i] = cornersOf(mesh, i);
     facing_[i] = quadFacing(surface_, mesh, i);
   }
   return facing_[i];
@@ -447,10 +458,26 @@ double QuadFacingMemo::worst(const QuadMesh& mesh, int i)
 
 std::vector<int> QuadFacingMemo::turned(const QuadMesh& mesh)
 {
+  std::vector<int> stale;
+  for (int i = 0; i < static_cast<int>(mesh.Q.rows()); ++i)
+  {
+    if (this->stale(mesh, i))
+    {
+      stale.push_back(i);
+    }
+  }
+  // each quad's own entries written: the same figures on any number of threads
+  parallelFor(static_cast<int>(stale.size()), threads_, [&](int begin, int end, int) {
+    for (int j = begin; j < end; ++j)
+    {
+      corners_[stale[j]] = cornersOf(mesh, stale[j]);
+      facing_[stale[j]] = quadFacing(surface_, mesh, stale[j]);
+    }
+  });
   std::vector<int> list;
   for (int i = 0; i < static_cast<int>(mesh.Q.rows()); ++i)
   {
-    if (this->facing(mesh, i) <= 0)
+    if (facing_[i] <= 0)
     {
       list.push_back(i);
     }

@@ -44,8 +44,10 @@ std::vector<int> turnedQuads(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& 
 class QuadFacingMemo
 {
 public:
-  explicit QuadFacingMemo(const SurfaceLocator& surface)
+  /// threads: for the quads turned() measures (0: defaultThreadCount()).
+  explicit QuadFacingMemo(const SurfaceLocator& surface, int threads = 0)
     : surface_(surface)
+    , threads_(threads)
   {}
 
   /// quadFacing(surface, mesh, i)
@@ -54,11 +56,16 @@ public:
   /// quadWorstOf(surface, mesh, i)
   double worst(const QuadMesh& mesh, int i);
 
-  /// turnedQuads(surface, mesh)
+  /// turnedQuads(surface, mesh); the quads to measure again measured on the threads asked.
   std::vector<int> turned(const QuadMesh& mesh);
 
 private:
+  static Eigen::Matrix<double, 4, 3> cornersOf(const QuadMesh& mesh, int i);
+  /// Is quad i to be measured (again)? Sizes the memo to the mesh first.
+  bool stale(const QuadMesh& mesh, int i);
+
   const SurfaceLocator& surface_;
+  int threads_ = 0;
   std::vector<Eigen::Matrix<double, 4, 3>> corners_; ///< per quad, where it was measured
   std::vector<double> facing_;                       ///< and what it measured (NaN: never)
 };
