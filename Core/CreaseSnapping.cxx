@@ -90,7 +90,110 @@ public:
     return apply(target);
   }
 
+  /**
+   * Where a grid line crosses a crease, the snapping leaves a quad with two opposite corners
+   * on the crease and the crease along its diagonal between them (a step): its corner nearer
+   * the crease (of the other two) moves onto it, to StepShare of the way to its closest crease
+   * point, in the triangle on its side, so that two of the quad's edges run along the crease
+   * (the rest of the way left, so that the corner there stays below a straight angle). Kept
+   * where none of the vertex's quads is then worse than StepWorst and worse than before.
+   * Returns the vertices moved.
+   */
+  std::vector<int> straightenSteps()
+  {
+    const int nV = static_cast<int>(mesh_.V.rows());
+    const std::vector<char> boundary = quadMeshBoundary(mesh_);
+    const VertexQuads around = vertexQuads(mesh_);
+    std::vector<char> onCrease(nV, 0), moved(nV, 0);
+    for (int v = 0; v < nV; ++v)
+    {
+      onCrease[v] = liesOnCrease(v);
+    }
+    std::vector<int> result;
+    for (int i = 0; i < static_cast<int>(mesh_.Q.rows()); ++i)
+    {
+      for (int k = 0; k < 2; ++k)
+      {
+        const int a = mesh_.Q(i, k), b = mesh_.Q(i, k + 1), c = mesh_.Q(i, (k + 2) % 4),
+                  d = mesh_.Q(i, (k + 3) % 4);
+        if (!onCrease[a] || !onCrease[c] || onCrease[b] || onCrease[d] || moved[b] || moved[d] ||
+          boundary[b] || boundary[d])
+        {
+          continue;
+        }
+        const int v = stepCorner(a, b, c, d);
+        if (v >= 0 && moveBeside(v, around))
+        {
+          moved[v] = 1;
+          result.push_back(v);
+        }
+      }
+    }
+    return result;
+  }
+
 private:
+  /// Of a quad's corners b and d (a and c on a crease), the one to move onto the crease that
+  /// runs from a to c between them: -1 when none (the crease not along the diagonal, or b and d
+  /// on one side of it).
+  int stepCorner(int a, int b, int c, int d)
+  {
+    const CreasePoint pb = closestCrease(b), pd = closestCrease(d);
+    if (pb.edge < 0 || pd.edge < 0 || atCreaseEnd(pb) || atCreaseEnd(pd))
+    {
+      return -1;
+    }
+    const Eigen::Vector3d middle = 0.5 * (mesh_.V.row(a) + mesh_.V.row(c)).transpose();
+    const double diagonal = (mesh_.V.row(a) - mesh_.V.row(c)).norm();
+    CreasePoint pm;
+    closestOnEdge(middle, pb.edge, pm);
+    closestOnEdge(middle, pd.edge, pm);
+    if (!(pm.distance <= StepDiagonal * diagonal) || side(b, pm) == side(d, pm))
+    {
+      return -1;
+    }
+    return pb.distance <= pd.distance ? b : d;
+  }
+
+  /// Moves v beside its closest crease point (StepShare of the way there); undone, returning
+  /// false, when one of its quads gets worse than StepWorst and worse than it was.
+  bool moveBeside(int v, const VertexQuads& around)
+  {
+    const CreasePoint p = closestCrease(v);
+    const int e = p.edge;
+    if (e < 0 || topo_.edgeFaceCount[e] != 2)
+    {
+      return false;
+    }
+    std::vector<double> before;
+    for (int j = around.offsets[v]; j < around.offsets[v + 1]; ++j)
+    {
+      before.push_back(quadWorstOf(surface_, mesh_, around.quads[j]));
+    }
+    const Eigen::Vector3d old = mesh_.V.row(v);
+    const int oldTriangle = mesh_.vertexTriangle[v], oldPoint = mesh_.vertexPoint[v];
+    const Eigen::Vector3d onEdge =
+      V_.row(topo_.edges(e, 0)) + p.t * (V_.row(topo_.edges(e, 1)) - V_.row(topo_.edges(e, 0)));
+    const int triangle = topo_.edgeFaces(e, side(v, p));
+    mesh_.V.row(v) = surface_.closestIn(triangle, onEdge + (1.0 - StepShare) * (old - onEdge));
+    mesh_.vertexTriangle[v] = triangle;
+    mesh_.vertexPoint[v] = -1;
+    for (int j = around.offsets[v]; j < around.offsets[v + 1]; ++j)
+    {
+      const double now = quadWorstOf(surface_, mesh_, around.quads[j]);
+      if (now < StepWorst && now < before[j - around.offsets[v]])
+      {
+        mesh_.V.row(v) = old;
+        mesh_.vertexTriangle[v] = oldTriangle;
+        mesh_.vertexPoint[v] = oldPoint;
+        return false;
+      }
+    }
+    return true;
+  }
+
+  static constexpr double StepShare = 0.7, StepDiagonal = 0.1, StepWorst = 0.05;
+
   /// #F: 1 for the triangles whose centres lie within the longest reach of a vertex (3 mean
   /// quad edges) of a triangle on a sharp edge, by paths from centre to centre; only the vertices
   /// in them look for a crease.
@@ -383,14 +486,28 @@ private:
 };
 }
 
+namespace
+{
+/// Is there anything to snap: quads, and a sharp edge?
+bool anyCrease(const QuadMesh& mesh, const std::vector<char>& sharp)
+{
+  return mesh.Q.rows() > 0 && std::find(sharp.begin(), sharp.end(), 1) != sharp.end();
+}
+}
+
 std::vector<int> snapToCreases(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F,
   const MeshTopology& topo, const std::vector<char>& sharp, const SurfaceLocator& surface,
   QuadMesh& mesh)
 {
-  if (mesh.Q.rows() == 0 || std::find(sharp.begin(), sharp.end(), 1) == sharp.end())
-  {
-    return {};
-  }
-  return Snapper(V, F, topo, sharp, surface, mesh).run();
+  return anyCrease(mesh, sharp) ? Snapper(V, F, topo, sharp, surface, mesh).run()
+                                : std::vector<int>();
+}
+
+std::vector<int> straightenCreaseSteps(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F,
+  const MeshTopology& topo, const std::vector<char>& sharp, const SurfaceLocator& surface,
+  QuadMesh& mesh)
+{
+  return anyCrease(mesh, sharp) ? Snapper(V, F, topo, sharp, surface, mesh).straightenSteps()
+                                : std::vector<int>();
 }
 }

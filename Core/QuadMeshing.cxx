@@ -145,15 +145,26 @@ QuadMeshResult buildQuadMesh(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& 
   // fandisk with feature lines at 6,500 quads, Hausdorff distance 0.40 -> 0.83%); the snapping
   // before the relaxation, which then evens out the quads beside the creases (the vertices moved
   // onto them stay: its creases are the same edges, at the same angle, and more)
+  std::vector<int> steps; // held by the relaxation: beside a crease, not on it
   if (options.snapToCreases)
   {
     const std::vector<char> sharp = sharpEdges(
       topo, computeFaceBases(V, F, topo), options.featureAngle, options.minimumFeatureLength);
     r.snappedVertices = static_cast<int>(snapToCreases(V, F, topo, sharp, surface, r.mesh).size());
+    steps = straightenCreaseSteps(V, F, topo, sharp, surface, r.mesh);
+    r.snappedVertices += static_cast<int>(steps.size());
   }
   if (options.relaxationIterations > 0)
   {
     QuadRelaxOptions relax;
+    if (!steps.empty())
+    {
+      relax.movable.assign(r.mesh.V.rows(), 1);
+      for (const int v : steps)
+      {
+        relax.movable[v] = 0;
+      }
+    }
     relax.relaxationIterations = options.relaxationIterations;
     relax.holdAcrossBends = true;
     relax.featureAngle = options.featureAngle;

@@ -62,7 +62,8 @@ struct QuadMeshResult
   int turnedQuads = 0;       ///< turnedQuads of the final mesh
   int splitVertices = 0;     ///< copies splitPinchedVertices added
   int fragmentQuads = 0;     ///< quads dropPinchedFragments removed
-  int snappedVertices = 0;   ///< vertices snapToCreases moved onto a sharp edge
+  int snappedVertices = 0;   ///< vertices snapToCreases moved onto a sharp edge, and
+                             ///< straightenCreaseSteps beside one
   int droppedCells() const
   {
     return mesh.cellsOffSurface + mesh.cellsDegenerate + mesh.cellsConflicting;

@@ -98,9 +98,12 @@ public:
    * edge crosses a sharp edge, its end nearer the crease moves to the closest point of it. The
    * frames are held along the sharp edges, so the map's grid lines run beside them and the ends
    * moved form rows of quad edges on the creases; the quads beside a crease grow or shrink by the
-   * grid line's distance from it (at most half a quad). A move that turns a quad against the
-   * input or leaves it a corner's scaled Jacobian below 0.05 is undone. SnappedVertices counts
-   * the vertices moved. Sharp: as vtkFrameSmoother's, FeatureAngle and MinimumFeatureLength. */
+   * grid line's distance from it (at most half a quad). Where a grid line crosses a crease, a
+   * quad lying folded along its diagonal across it gets a third corner moved beside the crease
+   * (quadcover::straightenCreaseSteps), so that two of its edges follow it. A move that turns a
+   * quad against the input or leaves it a corner's scaled Jacobian below 0.05 is undone.
+   * SnappedVertices counts the vertices moved. Sharp: as vtkFrameSmoother's, FeatureAngle and
+   * MinimumFeatureLength. */
   vtkSetMacro(SnapToCreases, bool);
   vtkGetMacro(SnapToCreases, bool);
   vtkBooleanMacro(SnapToCreases, bool);
