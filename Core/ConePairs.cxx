@@ -603,16 +603,17 @@ ConePairs conePairsForEvenScale(const Eigen::MatrixX3d& V, const Eigen::MatrixX3
     const auto follows = [&](std::size_t first) {
       return first < dipoles.size() && canFollow[first];
     };
-    // the first few alone (mostly one is kept); after them two batches measured at once, on
-    // two threads, the second kept from only when the first keeps none (then u and the
+    // the first few alone (mostly one is kept); after them, on two threads, two batches
+    // measured at once, the second kept from only when the first keeps none (then u and the
     // variance it was measured against are unchanged: the same as one after the other)
+    const bool twoAtOnce = threadCount(options.numberOfThreads) > 1;
     int kept = follows(0) ? keepMeasured(measure(batch(0))) : 0;
     for (std::size_t first = MeasuredDipoles; kept == 0 && follows(first);
-         first += 2 * MeasuredDipoles)
+         first += (twoAtOnce ? 2 : 1) * MeasuredDipoles)
     {
       const std::size_t second = first + MeasuredDipoles;
       Measured a, b;
-      if (follows(second))
+      if (twoAtOnce && follows(second))
       {
         runBoth([&]() { a = measure(batch(first)); }, [&]() { b = measure(batch(second)); },
           options.numberOfThreads);

@@ -93,8 +93,8 @@ public:
   /**
    * Where a grid line crosses a crease, the snapping leaves a quad with two opposite corners
    * on the crease and the crease along its diagonal between them (a step): its corner nearer
-   * the crease (of the other two) moves onto it, to StepShare of the way to its closest crease
-   * point, in the triangle on its side, so that two of the quad's edges run along the crease
+   * the crease (of the other two) moves towards it, StepShare of the way to its closest crease
+   * point (on its side: see moveBeside), so that two of the quad's edges run along the crease
    * (the rest of the way left, so that the corner there stays below a straight angle). Kept
    * where none of the vertex's quads is then worse than StepWorst and worse than before.
    * Returns the vertices moved.
@@ -122,7 +122,7 @@ public:
           continue;
         }
         const int v = stepCorner(a, b, c, d);
-        if (v >= 0 && moveBeside(v, around))
+        if (v >= 0 && !onSurfaceBoundary(V_, F_, topo_, mesh_, v) && moveBeside(v, around))
         {
           moved[v] = 1;
           result.push_back(v);
@@ -155,7 +155,9 @@ private:
     return pb.distance <= pd.distance ? b : d;
   }
 
-  /// Moves v beside its closest crease point (StepShare of the way there); undone, returning
+  /// Moves v beside its closest crease point, StepShare of the way there: to the surface's
+  /// point closest to that, which must lie within a tenth of the rest of the way of it (so not
+  /// across the crease, nor clamped into a triangle too narrow for it). Undone, returning
   /// false, when one of its quads gets worse than StepWorst and worse than it was.
   bool moveBeside(int v, const VertexQuads& around)
   {
@@ -165,18 +167,23 @@ private:
     {
       return false;
     }
+    const Eigen::Vector3d old = mesh_.V.row(v);
+    const Eigen::Vector3d onEdge =
+      V_.row(topo_.edges(e, 0)) + p.t * (V_.row(topo_.edges(e, 1)) - V_.row(topo_.edges(e, 0)));
+    const Eigen::Vector3d target = onEdge + (1.0 - StepShare) * (old - onEdge);
+    const SurfaceLocator::Hit hit = surface_.closest(target);
+    if (hit.triangle < 0 || !(hit.distance <= 0.1 * (target - onEdge).norm()))
+    {
+      return false;
+    }
     std::vector<double> before;
     for (int j = around.offsets[v]; j < around.offsets[v + 1]; ++j)
     {
       before.push_back(quadWorstOf(surface_, mesh_, around.quads[j]));
     }
-    const Eigen::Vector3d old = mesh_.V.row(v);
     const int oldTriangle = mesh_.vertexTriangle[v], oldPoint = mesh_.vertexPoint[v];
-    const Eigen::Vector3d onEdge =
-      V_.row(topo_.edges(e, 0)) + p.t * (V_.row(topo_.edges(e, 1)) - V_.row(topo_.edges(e, 0)));
-    const int triangle = topo_.edgeFaces(e, side(v, p));
-    mesh_.V.row(v) = surface_.closestIn(triangle, onEdge + (1.0 - StepShare) * (old - onEdge));
-    mesh_.vertexTriangle[v] = triangle;
+    mesh_.V.row(v) = hit.point;
+    mesh_.vertexTriangle[v] = hit.triangle;
     mesh_.vertexPoint[v] = -1;
     for (int j = around.offsets[v]; j < around.offsets[v + 1]; ++j)
     {

@@ -10,6 +10,7 @@
 #include <Eigen/SparseCholesky>
 
 #include <algorithm>
+#include <new>
 #include <type_traits>
 #include <vector>
 
@@ -192,7 +193,7 @@ public:
 
   /// solve(b) that several threads may call at once on one factor: CHOLMOD's workspace and
   /// counters are then a cholmod_common of the call's own, not the solver's. The same call to
-  /// cholmod_solve as solve(b), so the same numbers.
+  /// cholmod_solve as solve(b), so the same numbers; std::bad_alloc where CHOLMOD fails.
   Eigen::Matrix<typename MatrixType::Scalar, Eigen::Dynamic, 1> solveConcurrently(
     const Eigen::Matrix<typename MatrixType::Scalar, Eigen::Dynamic, 1>& b) const
   {
@@ -233,9 +234,12 @@ private:
     Dense rhs = b;
     cholmod_dense B = Eigen::viewAsCholmod(rhs);
     w.X = cholmod_solve(CHOLMOD_A, this->m_cholmodFactor, &B, &w.c);
-    return w.X ? Dense(Eigen::Map<const Dense>(
-                   static_cast<const typename MatrixType::Scalar*>(w.X->x), b.rows(), b.cols()))
-               : Dense();
+    if (!w.X)
+    {
+      throw std::bad_alloc(); // what cholmod_solve fails on with a factor: its workspace
+    }
+    return Dense(Eigen::Map<const Dense>(
+      static_cast<const typename MatrixType::Scalar*>(w.X->x), b.rows(), b.cols()));
   }
 
 public:

@@ -214,11 +214,12 @@ TEST(CreaseSnapping, StepsAcrossCircularCreasesGetTwoQuadEdgesAlongThem)
   EXPECT_LT(1.0 - after, 0.75 * (1.0 - before)) << before << " -> " << after;
   for (const int v : moved)
   {
-    // beside the crease, nearer than it was, on the surface
-    const double now = distanceToCrease(c, sharp, q.V.row(v).transpose());
+    // beside the crease, nearer than it was, in the triangle it names
+    const Eigen::Vector3d x = q.V.row(v).transpose();
+    const double now = distanceToCrease(c, sharp, x);
     EXPECT_GT(now, 0.0) << v;
     EXPECT_LT(now, 0.5 * distanceToCrease(c, sharp, snapped.V.row(v).transpose())) << v;
-    EXPECT_LT(surface.closest(q.V.row(v).transpose()).distance, 1e-9) << v;
+    EXPECT_LT((surface.closestIn(q.vertexTriangle[v], x) - x).norm(), 1e-9) << v;
   }
   int worseBefore = 0, worseAfter = 0;
   for (int i = 0; i < q.Q.rows(); ++i)
@@ -227,5 +228,5 @@ TEST(CreaseSnapping, StepsAcrossCircularCreasesGetTwoQuadEdgesAlongThem)
     worseAfter += quadWorstOf(surface, q, i) < 0.05;
   }
   EXPECT_LE(worseAfter, worseBefore);
-  EXPECT_EQ(turnedQuads(surface, q).size(), turnedQuads(surface, snapped).size());
+  EXPECT_LE(turnedQuads(surface, q).size(), turnedQuads(surface, snapped).size());
 }
