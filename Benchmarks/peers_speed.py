@@ -13,6 +13,10 @@ Meshes `-v QUADS/4 -d -b` (pure quads: its count applies before its final subdiv
 QuadriFlow `-f QUADS`; QuadCover with its defaults and --target-quad-count QUADS, without the
 Hausdorff distance it measures for its statistics (the peers measure nothing).
 A run that fails or leaves no output shows as "failed".
+Before the first run it waits (up to --settle seconds, default 120) until the one-minute load
+average is below 0.5: right after a build or another benchmark, libgomp's dynamic adjustment
+gives CHOLMOD's parallel loops fewer threads (the cores less the load average), and QuadCover
+then reads slower (armadillo 3.9 against 3.5 s).
 """
 import argparse
 import os
@@ -20,6 +24,7 @@ import statistics
 import subprocess
 import sys
 import tempfile
+import time
 
 import vtk
 
@@ -102,6 +107,18 @@ def shared_meshes(args, script):
             print("%s: skipped, not found: %s" % (script, path), file=sys.stderr)
 
 
+def wait_for_quiet(limit):
+    """Waits until the one-minute load average is below 0.5, at most `limit` seconds; says so on
+    stderr when it gives up."""
+    start = time.monotonic()
+    while os.getloadavg()[0] >= 0.5:
+        if time.monotonic() - start >= limit:
+            print("peers_speed.py: the load average is still %.2f after %.0f s; measuring anyway"
+                  % (os.getloadavg()[0], limit), file=sys.stderr)
+            return
+        time.sleep(5)
+
+
 def cell(values, fmt):
     return fmt % statistics.median(values) if values else "failed"
 
@@ -112,11 +129,14 @@ def main():
     parser.add_argument("--levels", default="0")
     parser.add_argument("--runs", type=int, default=3)
     parser.add_argument("--no-quadriflow", dest="quadriflow", action="store_false")
+    parser.add_argument("--settle", type=float, default=120.0,
+                        help="seconds to wait at most for a quiet machine first (0: none)")
     args = parser.parse_args()
     for tool in (args.quadcover, os.path.join(args.peers, "instant-meshes")):
         if not os.access(tool, os.X_OK):
             sys.exit("peers_speed.py: error: not found: " + tool)
     names = ["QuadCover", "Instant Meshes"] + (["QuadriFlow"] if args.quadriflow else [])
+    wait_for_quiet(args.settle)
     print("| mesh | triangles | " + " | ".join(n + " s" for n in names) + " | " +
           " | ".join(n + " MB" for n in names) + " | time QC/IM | memory QC/IM |")
     print("|---|---:|" + "---:|" * (2 * len(names) + 2))
