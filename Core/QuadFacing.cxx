@@ -38,11 +38,13 @@ class FacingRepairer
 {
 public:
   FacingRepairer(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F, const MeshTopology& topo,
-    const SurfaceLocator& surface, QuadMesh& mesh)
+    const SurfaceLocator& surface, QuadFacingMemo* facings, QuadMesh& mesh)
     : V_(V)
     , F_(F)
     , topo_(topo)
     , surface_(surface)
+    , ownFacings_(surface)
+    , facings_(facings ? *facings : ownFacings_)
     , mesh_(mesh)
     , boundary_(V, F, topo, BoundaryCornerTurn)
   {
@@ -288,8 +290,10 @@ private:
   const Eigen::MatrixX3i& F_;
   const MeshTopology& topo_;
   const SurfaceLocator& surface_;
-  /// badQuads passes over every quad, few of them moved since the last
-  mutable QuadFacingMemo facings_{ surface_ };
+  /// badQuads passes over every quad, few of them moved since the last: the caller's memo when
+  /// given (the quads as it measured them before), else one of its own
+  QuadFacingMemo ownFacings_;
+  QuadFacingMemo& facings_;
   QuadMesh& mesh_;
   std::vector<int> offsets_; ///< #V + 1: where each vertex's quads start in quadsOf_
   std::vector<int> quadsOf_;
@@ -486,9 +490,9 @@ std::vector<int> QuadFacingMemo::turned(const QuadMesh& mesh)
 }
 
 FacingRepair repairFacing(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F,
-  const MeshTopology& topo, const SurfaceLocator& surface, QuadMesh& mesh)
+  const MeshTopology& topo, const SurfaceLocator& surface, QuadMesh& mesh, QuadFacingMemo* facings)
 {
-  FacingRepairer repairer(V, F, topo, surface, mesh);
+  FacingRepairer repairer(V, F, topo, surface, facings, mesh);
   std::vector<int> bad = repairer.badQuads();
   FacingRepair r;
   r.before = r.after = static_cast<int>(bad.size());

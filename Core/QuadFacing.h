@@ -99,10 +99,12 @@ struct FacingRepair
  * @param[in]     V, F, topo the surface the quads lie on
  * @param[in]     surface    SurfaceLocator(V, F)
  * @param[in,out] mesh       the quad mesh: V, vertexTriangle, vertexPoint
+ * @param[in,out] facings    if given, a QuadFacingMemo on `surface` that has measured this mesh's
+ *                           quads before (they are not measured again where they did not move)
  */
 FacingRepair repairFacing(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F,
-  const MeshTopology& topo, const SurfaceLocator& surface, QuadMesh& mesh);
-
+  const MeshTopology& topo, const SurfaceLocator& surface, QuadMesh& mesh,
+  QuadFacingMemo* facings = nullptr);
 }
 
 #endif

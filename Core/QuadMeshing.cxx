@@ -137,7 +137,7 @@ QuadMeshResult buildQuadMesh(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& 
   progress.report(0.75);
   if (options.repairInvertedQuads)
   {
-    r.facing = repairFacing(V, F, topo, surface, r.mesh);
+    r.facing = repairFacing(V, F, topo, surface, r.mesh, &facings);
     unfoldLastInverted(V, F, topo, facings, r.mesh);
   }
   // the snapping and the relaxation last, so that the repairs above see the quads as the map
