@@ -27,7 +27,8 @@
  * RepairInvertedQuads), DroppedCells, FilledHoles, TurnedQuads (before and after it) and
  * SplitQuadVertices (copies of a vertex where separate fans of quads touched: the output is
  * manifold at its vertices), FragmentQuads (quads removed that hung off their component's
- * quads by a corner) and SnappedVertices (quad vertices moved onto creases, SnapToCreases).
+ * quads by a corner) and SnappedVertices (quad vertices moved onto creases, or beside one where
+ * a quad lay folded across it; SnapToCreases).
  * @sa vtkQuadCoverSolver
  */
 #ifndef vtkQuadExtractor_h
