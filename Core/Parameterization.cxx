@@ -119,18 +119,19 @@ void boundGridGrowth(const Eigen::VectorXd& area, double growth, Eigen::VectorXd
   scale = scale.cwiseMax(high);
 }
 
-/// sys.cellScale and countedCell: finer around thin strips (thinStripGridScale) and, with
-/// adaptiveCurvature, where the surface curves sharply (curvatureGridScale, at most
+/// sys.cellScale and countedCell: finer around thin strips and walls (thinStripGridScale) and,
+/// with adaptiveCurvature, where the surface curves sharply (curvatureGridScale, at most
 /// AdaptiveMaximumGrowth times the uniform grid's cells in all); the finer wins.
 void setGridScale(const Inputs& in, SeamlessSystem& sys, Parameterization& out)
 {
   constexpr double AdaptiveMaximumRefinement = 8.0;
-  sys.cellScale =
-    thinStripGridScale(in.V, in.F, in.topo, out.edgeLength, in.options.maximumThinStripRefinement);
-  const std::vector<char> creases = in.options.adaptiveCurvature > 0
+  const std::vector<char> creases =
+    in.options.maximumThinStripRefinement > 1 || in.options.adaptiveCurvature > 0
     ? sharpEdges(
         in.topo, in.geometry.bases, in.options.featureAngle, in.options.minimumFeatureLength)
     : std::vector<char>();
+  sys.cellScale = thinStripGridScale(
+    in.V, in.F, in.topo, out.edgeLength, in.options.maximumThinStripRefinement, creases);
   Eigen::VectorXd curved = curvatureGridScale(in.V, in.F, in.topo, out.edgeLength,
     in.options.adaptiveCurvature, AdaptiveMaximumRefinement, creases);
   if (curved.size() > 0)

@@ -1,6 +1,6 @@
-// ThinStrips.h: where a strip of the surface between two boundary lines is narrower than a grid
-// edge, and the finer grid the map needs there to keep it (the spreading of grid sizes is shared
-// with CurvatureSizing).
+// ThinStrips.h: where a strip of the surface between two boundary lines, or a wall between two
+// creases, is narrower than a grid edge, and the finer grid the map needs there to keep it (the
+// spreading of grid sizes is shared with CurvatureSizing).
 #ifndef quadcover_ThinStrips_h
 #define quadcover_ThinStrips_h
 
@@ -16,18 +16,26 @@ namespace quadcover
 /**
  * The grid edge each triangle needs, over edgeLength, so that no strip of the surface between two
  * boundary lines that face each other is narrower than a grid edge (the bars of a grille, the
- * surface between two slots): a uniform grid rounds both sides of such a strip onto one grid line
- * and cuts it, which joins two holes and changes the topology. Two boundary edges face each other
- * when their inward directions (in their triangles' planes) are opposite within 60 degrees and
- * each one's nearest point to the other lies within 60 degrees of its inward direction; the strip
- * between them is as wide as the edges are apart. Their four points ask for that width (never
- * less than edgeLength / maximumRefinement), and the size grows away from them along the edges
- * of the surface by `gradation` times the distance walked, up to edgeLength.
+ * surface between two slots), nor any wall between two creases (the rim of a thin plate): a
+ * uniform grid rounds both sides of such a strip onto one grid line and cuts it, which joins two
+ * holes and changes the topology; across a wall its quads fold over the rim, turned against the
+ * surface, and cut its corners. Two boundary edges face each other when their inward directions
+ * (in their triangles' planes) are opposite within 60 degrees and each one's nearest point to the
+ * other lies within 60 degrees of its inward direction; the strip between them is as wide as the
+ * edges are apart. A crease edge is a side seen from each of its two triangles; two crease sides
+ * face each other the same way, and bound a wall where the triangles across them face apart (more
+ * than 90 degrees; a step between two creases that turn less is no wall); a wall lower than
+ * edgeLength / maximumRefinement is left alone. Their four points ask for that width (never less
+ * than edgeLength / maximumRefinement), and the size grows away from
+ * them along the edges of the surface by `gradation` times the distance walked (around a wall
+ * twice as fast), up to edgeLength.
+ * @param[in] creases #E (topo's edges), 1 on a crease (sharpEdges); empty: boundary strips only
  * @return #F, the mean over each triangle's points, in [1 / maximumRefinement, 1]; empty when no
  * strip narrower than edgeLength (or maximumRefinement <= 1): the grid stays uniform
  */
 Eigen::VectorXd thinStripGridScale(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F,
-  const MeshTopology& topo, double edgeLength, double maximumRefinement, double gradation = 0.25);
+  const MeshTopology& topo, double edgeLength, double maximumRefinement,
+  const std::vector<char>& creases = {}, double gradation = 0.25);
 
 /// size(v) = min over the points w of size(w) + gradation times the shortest edge path from w to v
 /// (Dijkstra from the smallest sizes up).

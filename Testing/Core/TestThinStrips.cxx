@@ -1,7 +1,10 @@
-// Strips of the surface narrower than a grid edge between two boundary lines: the local grid size
-// asked around them (thinStripGridScale), and the map that keeps them, so that the quads keep the
-// holes apart.
+// Strips of the surface narrower than a grid edge between two boundary lines, and walls between two
+// creases: the local grid size asked around them (thinStripGridScale), and the map that keeps them,
+// so that the quads keep the holes apart and do not fold over a thin plate's rim.
+#include "FrameField.h"
 #include "QuadExtraction.h"
+#include "QuadFacing.h"
+#include "QuadMeshing.h"
 #include "QuadQuality.h"
 #include "TestChain.h"
 #include "ThinStrips.h"
@@ -9,6 +12,8 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
+#include <cstdio>
 #include <map>
 #include <vector>
 
@@ -192,4 +197,119 @@ TEST(ThinStrips, TheMapWidensAStripNarrowerThanACell)
   }
   EXPECT_LT(width[1.0], 0.3) << "a uniform grid: about the strip's own fifth of a cell";
   EXPECT_GT(width[8.0], 0.7) << "a finer grid around the strip: about a cell";
+}
+
+namespace
+{
+/// A profile in the (x, z) plane, each of its segments cut into pieces of about `edge`, swept
+/// along y over [0, 1] in steps of `edge`: an open sheet of two triangles per cell.
+Surface sweptProfile(const std::vector<Eigen::Vector2d>& profile, double edge)
+{
+  std::vector<Eigen::Vector2d> points{ profile.front() };
+  for (std::size_t i = 1; i < profile.size(); ++i)
+  {
+    const Eigen::Vector2d d = profile[i] - profile[i - 1];
+    const int steps = std::max(1, static_cast<int>(std::lround(d.norm() / edge)));
+    for (int k = 1; k <= steps; ++k)
+    {
+      points.push_back(profile[i - 1] + d * static_cast<double>(k) / steps);
+    }
+  }
+  const int m = static_cast<int>(points.size());
+  const int n = std::max(1, static_cast<int>(std::lround(1.0 / edge)));
+  Surface s;
+  s.name = "swept profile";
+  s.V.resize(m * (n + 1), 3);
+  for (int j = 0; j <= n; ++j)
+  {
+    for (int i = 0; i < m; ++i)
+    {
+      s.V.row(j * m + i) << points[i].x(), static_cast<double>(j) / n, points[i].y();
+    }
+  }
+  s.F.resize(2 * (m - 1) * n, 3);
+  int f = 0;
+  for (int j = 0; j < n; ++j)
+  {
+    for (int i = 0; i + 1 < m; ++i)
+    {
+      const int a = j * m + i;
+      s.F.row(f++) << a, a + 1, a + m + 1;
+      s.F.row(f++) << a, a + m + 1, a + m;
+    }
+  }
+  return s;
+}
+
+std::vector<char> creasesOf(const Surface& s, const MeshTopology& topo)
+{
+  return sharpEdges(topo, computeFaceBases(s.V, s.F, topo), 60.0, 3);
+}
+}
+
+TEST(ThinStrips, AWallBetweenTwoCreasesIsAStripAndAStepIsNot)
+{
+  // A sheet folded back on itself: a wall 0.02 high between two right-angle creases, a fifth of
+  // a grid edge of 0.1, its two sheets facing apart (the rim of a thin plate). Across a step of
+  // the same height between two sheets facing the same way the quads can pass: no strip.
+  const double t = 0.02, h = 0.1;
+  const Surface fold = sweptProfile({ { 1, 0 }, { 0, 0 }, { 0, t }, { 1, t } }, t);
+  const MeshTopology foldTopo = buildTopology(fold.F, static_cast<int>(fold.V.rows()));
+  const std::vector<char> foldCreases = creasesOf(fold, foldTopo);
+  ASSERT_EQ(std::count(foldCreases.begin(), foldCreases.end(), 1), 2 * 50) << "two creases";
+  const Eigen::VectorXd scale = thinStripGridScale(fold.V, fold.F, foldTopo, h, 8.0, foldCreases);
+  ASSERT_EQ(scale.size(), fold.F.rows());
+  const Eigen::MatrixX3d c = centres(fold);
+  for (int f = 0; f < fold.F.rows(); ++f)
+  {
+    if (std::abs(c(f, 0)) < 1e-12)
+    {
+      EXPECT_NEAR(scale[f], t / h, 1e-9) << "the wall's own height";
+    }
+    if (c(f, 0) > 0.5)
+    {
+      EXPECT_EQ(scale[f], 1.0) << "far from the wall the grid is uniform";
+    }
+  }
+  EXPECT_EQ(thinStripGridScale(fold.V, fold.F, foldTopo, h, 8.0).size(), 0)
+    << "without the creases no strip";
+  EXPECT_EQ(thinStripGridScale(fold.V, fold.F, foldTopo, t / 2, 8.0, foldCreases).size(), 0)
+    << "a wall higher than a grid edge needs nothing";
+  const Surface step = sweptProfile({ { -1, 0 }, { 0, 0 }, { 0, t }, { 1, t } }, t);
+  const MeshTopology stepTopo = buildTopology(step.F, static_cast<int>(step.V.rows()));
+  const std::vector<char> stepCreases = creasesOf(step, stepTopo);
+  ASSERT_EQ(std::count(stepCreases.begin(), stepCreases.end(), 1), 2 * 50) << "two creases";
+  EXPECT_EQ(thinStripGridScale(step.V, step.F, stepTopo, h, 8.0, stepCreases).size(), 0);
+}
+
+TEST(ThinStrips, AThinPlateKeepsItsRimAndCorners)
+{
+  // A plate 1 x 1 x 0.02 at a grid edge of 1/12: its rim is a quarter of a grid edge high. On a
+  // uniform grid the rim's quads fold over it, and the corners are cut off; with the grid finer
+  // around the rim the quads keep it, and no quad faces against the plate.
+  const Surface plate = makeThinPlate(1.0, 1.0, 0.02, 0.02);
+  std::map<double, double> corner; // refinement -> the farthest plate corner from the quads
+  std::map<double, int> turned;
+  for (const double refinement : { 8.0, 1.0 })
+  {
+    ParameterizationOptions options;
+    options.targetEdgeLength = 1.0 / 12;
+    options.maximumThinStripRefinement = refinement;
+    const Chain c = runChain(plate, 0, options);
+    EXPECT_EQ(c.map.finerGridTriangles > 0, refinement > 1);
+    const QuadMeshResult r = buildQuadMesh(c.s.V, c.s.F, c.topo, c.map.cornerUV);
+    turned[refinement] = static_cast<int>(turnedQuads(c.s.V, c.s.F, r.mesh).size());
+    Eigen::MatrixX3d corners(8, 3);
+    for (int i = 0; i < 8; ++i)
+    {
+      corners.row(i) << (i & 1), (i >> 1) & 1, 0.02 * ((i >> 2) & 1);
+    }
+    corner[refinement] = largestDistance(corners, r.mesh.V, quadTriangles(r.mesh.Q));
+    std::printf("[ refinement %g ] %lld quads, %d turned, farthest corner %.4f\n", refinement,
+      static_cast<long long>(r.mesh.Q.rows()), turned[refinement], corner[refinement]);
+  }
+  EXPECT_GT(turned[1.0], 0) << "on a uniform grid the rim's quads fold over it";
+  EXPECT_EQ(turned[8.0], 0);
+  EXPECT_LT(corner[8.0], 0.25 / 12) << "the corners kept, within a quarter of a grid edge";
+  EXPECT_GT(corner[1.0], 3 * corner[8.0]) << "a uniform grid cuts them";
 }
