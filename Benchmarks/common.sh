@@ -13,7 +13,7 @@ surfaces() {
     [ -f "$1/$name.obj" ] && echo "$1/$name.obj"
   done
   if [ "${2:-}" = and-generated ]; then
-    for name in sphere torus knot roundedcube cylinder components dumbbell plate bracket shaft; do
+    for name in sphere torus knot roundedcube cylinder components dumbbell plate frame bracket shaft; do
       echo "Data/$name.obj"
     done
   fi

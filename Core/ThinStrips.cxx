@@ -25,7 +25,7 @@ constexpr double WallGradation = 2.0;
 /// A side of a strip: a boundary edge, or a crease edge seen from one of its two triangles; its
 /// points, ends and inward direction (in its triangle's plane), and for a crease the unit normal
 /// of the triangle across it (zero for a boundary edge).
-struct BoundaryEdge
+struct StripSide
 {
   int a, b;
   Eigen::Vector3d p, q, inward;
@@ -35,7 +35,7 @@ struct BoundaryEdge
 /// Adds edge k of triangle f as a side of the surface in f, with the unit normal across it (zero
 /// for none); not an edge of no length or a triangle of no area.
 void sideOf(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F, int f, int k,
-  const Eigen::Vector3d& beyond, std::vector<BoundaryEdge>& edges)
+  const Eigen::Vector3d& beyond, std::vector<StripSide>& edges)
 {
   const int a = F(f, k), b = F(f, (k + 1) % 3), c = F(f, (k + 2) % 3);
   const Eigen::Vector3d p = V.row(a).transpose(), q = V.row(b).transpose();
@@ -48,10 +48,10 @@ void sideOf(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F, int f, int k,
 }
 
 /// The boundary edges, then both sides of each crease edge (creases: #E or empty).
-std::vector<BoundaryEdge> stripSides(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F,
+std::vector<StripSide> stripSides(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F,
   const MeshTopology& topo, const std::vector<char>& creases)
 {
-  std::vector<BoundaryEdge> edges;
+  std::vector<StripSide> edges;
   for (int f = 0; f < topo.numFaces; ++f)
   {
     for (int k = 0; k < 3; ++k)
@@ -107,14 +107,14 @@ std::pair<Eigen::Vector3d, Eigen::Vector3d> nearestPoints(const Eigen::Vector3d&
 /// crease sides whose triangles across face apart, turned by more than 90 degrees from each
 /// other (a wall: the rim of a thin plate, between its two faces). Where the surface turns less
 /// across the two creases (a step), quads can cross the strip without turning over.
-bool sidesOfAStrip(const BoundaryEdge& x, const BoundaryEdge& y)
+bool sidesOfAStrip(const StripSide& x, const StripSide& y)
 {
   const bool xCrease = x.beyond.squaredNorm() > 0, yCrease = y.beyond.squaredNorm() > 0;
   return xCrease == yCrease && (!xCrease || x.beyond.dot(y.beyond) < 0);
 }
 
 /// The width of the strip between two sides that face each other, else -1.
-double stripWidth(const BoundaryEdge& x, const BoundaryEdge& y)
+double stripWidth(const StripSide& x, const StripSide& y)
 {
   if (x.a == y.a || x.a == y.b || x.b == y.a || x.b == y.b || x.inward.dot(y.inward) > -0.5 ||
     !sidesOfAStrip(x, y))
@@ -130,12 +130,12 @@ double stripWidth(const BoundaryEdge& x, const BoundaryEdge& y)
 
 /// For each side, the later ones that may lie within `reach` of it: those whose middles
 /// lie within reach plus the longest edge of its own (nearbyPoints).
-std::vector<std::vector<int>> nearbyEdges(const std::vector<BoundaryEdge>& edges, double reach)
+std::vector<std::vector<int>> nearbySides(const std::vector<StripSide>& edges, double reach)
 {
   double longest = 0.0;
   std::vector<Eigen::Vector3d> middles;
   middles.reserve(edges.size());
-  for (const BoundaryEdge& e : edges)
+  for (const StripSide& e : edges)
   {
     longest = std::max(longest, (e.q - e.p).norm());
     middles.push_back(0.5 * (e.p + e.q));
@@ -189,8 +189,8 @@ Eigen::VectorXd thinStripGridScale(const Eigen::MatrixX3d& V, const Eigen::Matri
   {
     return {};
   }
-  const std::vector<BoundaryEdge> edges = stripSides(V, F, topo, creases);
-  const std::vector<std::vector<int>> near = nearbyEdges(edges, edgeLength);
+  const std::vector<StripSide> edges = stripSides(V, F, topo, creases);
+  const std::vector<std::vector<int>> near = nearbySides(edges, edgeLength);
   const double smallest = edgeLength / maximumRefinement;
   // the sizes the strips ask for, and those the walls ask for (which grow back faster)
   std::array<std::vector<double>, 2> size;

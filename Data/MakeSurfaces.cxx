@@ -63,6 +63,9 @@ int main(int argc, char* argv[])
       "two bulbs of radius 0.8 joined by a neck of radius 0.12 (a tube whose width varies)" },
     { "plate.obj", quadcover::makeThinPlate(2.0, 1.0, 0.02, 0.025),
       "a box 2 x 1 x 0.02 with sharp edges (a part thinner than the quads)" },
+    { "frame.obj", quadcover::makeThinFrame(0.025),
+      "a square frame 2 x 2 x 0.02 around a 1 x 1 hole, sharp edges (a thin plate with a hole: "
+      "walls lower than the quads, genus 1)" },
     { "bracket.obj", quadcover::makeBracket(0.05),
       "a square frame with a hole, a wall and a tab, sharp right-angle creases (CAD-like, genus "
       "1)" },

@@ -152,6 +152,24 @@ Surface makeThinPlate(double width, double depth, double thickness, double edge)
   return s;
 }
 
+Surface makeThinFrame(double edge)
+{
+  std::vector<Eigen::Vector3i> cells;
+  for (int x = 0; x < 4; ++x)
+  {
+    for (int y = 0; y < 4; ++y)
+    {
+      if (!(x >= 1 && x <= 2 && y >= 1 && y <= 2))
+      {
+        cells.emplace_back(x, y, 0);
+      }
+    }
+  }
+  Surface s = makeBlocks(cells, Eigen::Vector3d(0.5, 0.5, 0.02), edge);
+  s.name = "frame";
+  return s;
+}
+
 Surface makeBracket(double edge)
 {
   // a square frame of 4 x 4 cells with a 2 x 2 hole (genus 1), a wall of two cells' height along

@@ -69,6 +69,10 @@ Surface makeBlocks(
 /// A box width x depth x thickness (makeBlocks of one cell): a plate thinner than a quad.
 Surface makeThinPlate(double width, double depth, double thickness, double edge);
 
+/// A square frame 2 x 2 x 0.02 around a 1 x 1 hole (makeBlocks; genus 1): a thin plate with a
+/// hole, its rims walls lower than the quads.
+Surface makeThinFrame(double edge);
+
 /// A square frame with a hole, a wall along one side and a tab on it (makeBlocks; genus 1).
 Surface makeBracket(double edge);
 
