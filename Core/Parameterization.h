@@ -134,10 +134,12 @@ struct ParameterizationOptions
   /// cells (a CAD export's slivers across a flat face folded the map around its holes); 0: none.
   double maximumTriangleEdge = 3.0;
   /// Where a strip of the surface between two boundary lines that face each other is narrower
-  /// than a grid edge (the bars of a grille, the surface between two slots), the map's grid is
-  /// made finer around it, down to the strip's width but at most this many times finer
+  /// than a grid edge (the bars of a grille, the surface between two slots), or a wall between
+  /// two creases is lower than one (the rim of a thin plate), the map's grid is made finer
+  /// around it, down to the strip's width but at most this many times finer
   /// (thinStripGridScale): on a uniform grid both sides of the strip round onto one grid line,
-  /// which cuts it and joins the holes. 1: a uniform grid everywhere.
+  /// which cuts it and joins the holes, and the quads fold over a wall. 1: a uniform grid
+  /// everywhere.
   double maximumThinStripRefinement = 8.0;
   /// Adaptive density: where the surface curves sharply against the grid (a thin ear, finger or
   /// horn, a small bump), the grid edge is about this many times the radius of curvature, seen

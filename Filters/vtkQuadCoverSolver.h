@@ -233,10 +233,12 @@ public:
 
   ///@{
   /** Where a strip of the surface between two boundary lines that face each other is narrower
-   * than a grid edge (the bars of a grille, the surface between two slots), the map's grid is
+   * than a grid edge (the bars of a grille, the surface between two slots), or a wall between
+   * two creases (FeatureAngle) is lower than one (the rim of a thin plate), the map's grid is
    * made finer around it, down to the strip's width but at most this many times finer, in
    * [1, 64] (default 8; 1: a uniform grid): on a uniform grid both sides of such a strip round
-   * onto one grid line, which cuts it and joins the holes. Counted in FinerGridTriangles. */
+   * onto one grid line, which cuts it and joins the holes, and the quads fold over a wall,
+   * turned against the surface. Counted in FinerGridTriangles. */
   vtkSetClampMacro(MaximumThinStripRefinement, double, 1.0, 64.0);
   vtkGetMacro(MaximumThinStripRefinement, double);
   ///@}
