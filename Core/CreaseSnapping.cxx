@@ -55,7 +55,7 @@ public:
   /// Each quad edge whose ends lie on the two sides of the crease nearest to its nearer end
   /// moves that end onto it. Vertices on the boundary (the quads' or the surface's) stay, and so
   /// do those whose nearest crease point is the end of a crease (beside it, not across it) or
-  /// which lie on a crease already.
+  /// which lie on a crease already. Then acrossWalls.
   std::vector<int> run()
   {
     const int nV = static_cast<int>(mesh_.V.rows());
@@ -87,7 +87,64 @@ public:
         }
       }
     }
+    acrossWalls(closest, target);
     return apply(target);
+  }
+
+  /// On a wall about a quad high between two creases (a thin plate's rim, thinStripGridScale),
+  /// a quad edge up the wall can have its lower end moved onto the lower crease while its upper
+  /// end, beside the upper crease but no nearer to it than the lower end is to the lower one,
+  /// stays: the row of quads then reaches past the upper crease (the 0.02-high frame of Data/ at
+  /// 6,500 quads: Hausdorff distance 0.41%; with this, 0.00%). So where one end of a quad edge
+  /// moves onto a crease and the other, not moved, lies across its own nearest crease from the
+  /// first end, and the two creases bound a wall (wallBetween), the other end moves onto its
+  /// crease too.
+  void acrossWalls(const std::vector<CreasePoint>& closest, std::vector<CreasePoint>& target) const
+  {
+    const std::vector<CreasePoint> first = target;
+    for (int i = 0; i < static_cast<int>(mesh_.Q.rows()); ++i)
+    {
+      for (int k = 0; k < 4; ++k)
+      {
+        for (int turn = 0; turn < 2; ++turn)
+        {
+          const int a = mesh_.Q(i, (k + turn) % 4), b = mesh_.Q(i, (k + 1 - turn) % 4);
+          const CreasePoint& p = closest[b];
+          if (first[a].edge >= 0 && first[b].edge < 0 && target[b].edge < 0 && p.edge >= 0 &&
+            p.edge != first[a].edge && side(a, p) != side(b, p) && !atCreaseEnd(p) &&
+            wallBetween(first[a].edge, p.edge))
+          {
+            target[b] = p;
+          }
+        }
+      }
+    }
+  }
+
+  /// Whether sharp edges e and g bound a wall: a triangle at e and one at g nearly parallel (the
+  /// wall, cosine above 0.9), and their other two triangles facing apart (the plate's faces).
+  bool wallBetween(int e, int g) const
+  {
+    for (int i = 0; i < 2; ++i)
+    {
+      for (int j = 0; j < 2; ++j)
+      {
+        const int we = topo_.edgeFaces(e, i), wg = topo_.edgeFaces(g, j);
+        const int oe = topo_.edgeFaces(e, 1 - i), og = topo_.edgeFaces(g, 1 - j);
+        if (we >= 0 && wg >= 0 && oe >= 0 && og >= 0 && unitNormal(we).dot(unitNormal(wg)) > 0.9 &&
+          unitNormal(oe).dot(unitNormal(og)) < 0)
+        {
+          return true;
+        }
+      }
+    }
+    return false;
+  }
+
+  Eigen::Vector3d unitNormal(int f) const
+  {
+    const Eigen::Vector3d a = V_.row(F_(f, 0)), b = V_.row(F_(f, 1)), c = V_.row(F_(f, 2));
+    return (b - a).cross(c - a).normalized();
   }
 
   /**

@@ -24,7 +24,9 @@ namespace quadcover
  * row of quad edges on it: the quads on one side of the row grow and those on the other shrink by
  * the grid line's distance from the crease (about half a quad at most). Where the grid line
  * crosses the crease, a quad across it is left folded along its diagonal (a step, which
- * straightenCreaseSteps then straightens). Then, quad by quad, the
+ * straightenCreaseSteps then straightens). On a wall about a quad high between two creases (a
+ * thin plate's rim), where one end of a quad edge moves onto one crease and the other end lies
+ * across its own nearest crease, the other end moves onto that one too. Then, quad by quad, the
  * longest move of a quad left facing against the surface or with a corner's scaled Jacobian below
  * 0.05 (quadWorstOf below 0.05), and worse than it was, is undone. Updates mesh.V, vertexTriangle
  * and vertexPoint.
