@@ -141,6 +141,7 @@ public:
     return false;
   }
 
+  /// Triangle f's unit normal (not finite for one of no area: then no wall).
   Eigen::Vector3d unitNormal(int f) const
   {
     const Eigen::Vector3d a = V_.row(F_(f, 0)), b = V_.row(F_(f, 1)), c = V_.row(F_(f, 2));
