@@ -119,17 +119,24 @@ void boundGridGrowth(const Eigen::VectorXd& area, double growth, Eigen::VectorXd
   scale = scale.cwiseMax(high);
 }
 
+/// The creases (sharpEdges) where a step reads them: the cone pairs (conePairGain), the grid
+/// around thin walls (maximumThinStripRefinement) and adaptiveCurvature; else none.
+std::vector<char> creasesForTheSteps(const Inputs& in)
+{
+  const ParameterizationOptions& o = in.options;
+  return o.conePairGain > 0 || o.maximumThinStripRefinement > 1 || o.adaptiveCurvature > 0
+    ? sharpEdges(in.topo, in.geometry.bases, o.featureAngle, o.minimumFeatureLength)
+    : std::vector<char>();
+}
+
 /// sys.cellScale and countedCell: finer around thin strips and walls (thinStripGridScale) and,
 /// with adaptiveCurvature, where the surface curves sharply (curvatureGridScale, at most
 /// AdaptiveMaximumGrowth times the uniform grid's cells in all); the finer wins.
-void setGridScale(const Inputs& in, SeamlessSystem& sys, Parameterization& out)
+/// creases: creasesForTheSteps.
+void setGridScale(
+  const Inputs& in, const std::vector<char>& creases, SeamlessSystem& sys, Parameterization& out)
 {
   constexpr double AdaptiveMaximumRefinement = 8.0;
-  const std::vector<char> creases =
-    in.options.maximumThinStripRefinement > 1 || in.options.adaptiveCurvature > 0
-    ? sharpEdges(
-        in.topo, in.geometry.bases, in.options.featureAngle, in.options.minimumFeatureLength)
-    : std::vector<char>();
   sys.cellScale = thinStripGridScale(
     in.V, in.F, in.topo, out.edgeLength, in.options.maximumThinStripRefinement, creases);
   Eigen::VectorXd curved = curvatureGridScale(in.V, in.F, in.topo, out.edgeLength,
@@ -227,9 +234,10 @@ void fitFrames(const Inputs& in, const Eigen::MatrixX3i& newMatching, const std:
 /// and moves of its own quarters (conePairsForEvenScale, options.conePairGain), made along paths
 /// (addConePairs); all frames then turn to agree but those along the boundary and sharp edges.
 /// Returns the pairs added and `moved` the quarters moved; frameU and matching are set when
-/// either is above 0.
-int addConePairsForEvenScale(const Inputs& in, const FrameTopology& given, double edgeLength,
-  Eigen::MatrixX3d& frameU, Eigen::MatrixX3i& matching, int& moved)
+/// either is above 0. sharp: creasesForTheSteps.
+int addConePairsForEvenScale(const Inputs& in, const std::vector<char>& sharp,
+  const FrameTopology& given, double edgeLength, Eigen::MatrixX3d& frameU,
+  Eigen::MatrixX3i& matching, int& moved)
 {
   moved = 0;
   if (!(in.options.conePairGain > 0))
@@ -239,8 +247,6 @@ int addConePairsForEvenScale(const Inputs& in, const FrameTopology& given, doubl
   ConePairOptions options;
   options.minimumGain = in.options.conePairGain;
   options.numberOfThreads = in.options.numberOfThreads;
-  const std::vector<char> sharp = sharpEdges(
-    in.topo, in.geometry.bases, in.options.featureAngle, in.options.minimumFeatureLength);
   const ConePairs chosen = conePairsForEvenScale(
     in.V, in.F, in.topo, in.geometry.defect, given.index, edgeLength, sharp, options);
   if (chosen.pairs.empty())
@@ -520,8 +526,10 @@ Parameterization mapComponent(const Inputs& given, const Progress& progress)
   Eigen::MatrixX3d pairedFrames;
   Eigen::MatrixX3i pairedMatching;
   int movedByScale = 0;
+  // the creases, the same for every frame field on this surface
+  const std::vector<char> creases = creasesForTheSteps(given);
   out.addedConePairs = addConePairsForEvenScale(
-    settled, field.topology, out.edgeLength, pairedFrames, pairedMatching, movedByScale);
+    settled, creases, field.topology, out.edgeLength, pairedFrames, pairedMatching, movedByScale);
   out.movedSingularities += movedByScale;
   const bool paired = out.addedConePairs + movedByScale > 0;
   const Inputs in =
@@ -543,7 +551,7 @@ Parameterization mapComponent(const Inputs& given, const Progress& progress)
   // ---- the seamless system: unknowns, constraints eliminated, the energy ----
   Eliminator elim = constrainUnknowns(in, field, out, progress.part(0.04, 0.07));
   SeamlessSystem sys = numberUnknowns(elim, out);
-  setGridScale(in, sys, out);
+  setGridScale(in, creases, sys, out);
   progress.report(0.08);
   assembleEnergy(in, field, out, sys, progress.part(0.08, 0.22));
 
