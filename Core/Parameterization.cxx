@@ -124,9 +124,31 @@ void boundGridGrowth(const Eigen::VectorXd& area, double growth, Eigen::VectorXd
 std::vector<char> creasesForTheSteps(const Inputs& in)
 {
   const ParameterizationOptions& o = in.options;
-  return o.conePairGain > 0 || o.maximumThinStripRefinement > 1 || o.adaptiveCurvature > 0
+  return o.conePairGain > 0 || o.maximumThinStripRefinement > 1 || o.adaptiveCurvature > 0 ||
+      o.defectAdaptiveCurvature > 0
     ? sharpEdges(in.topo, in.geometry.bases, o.featureAngle, o.minimumFeatureLength)
     : std::vector<char>();
+}
+
+/// The adaptive grid's scale (curvatureGridScale: the grid edge about edgeOverRadius times the
+/// radius of curvature, at most 8 times finer, creases left out), bounded to at most
+/// AdaptiveMaximumGrowth times the uniform grid's cells; empty where the grid stays uniform.
+Eigen::VectorXd adaptiveGridScale(
+  const Inputs& in, const std::vector<char>& creases, double edgeLength, double edgeOverRadius)
+{
+  constexpr double AdaptiveMaximumRefinement = 8.0;
+  Eigen::VectorXd curved = curvatureGridScale(
+    in.V, in.F, in.topo, edgeLength, edgeOverRadius, AdaptiveMaximumRefinement, creases);
+  if (curved.size() > 0)
+  {
+    Eigen::VectorXd area(in.numFaces());
+    for (int f = 0; f < in.numFaces(); ++f)
+    {
+      area[f] = triangleArea(in.V, in.F, f);
+    }
+    boundGridGrowth(area, AdaptiveMaximumGrowth, curved);
+  }
+  return curved;
 }
 
 /// sys.cellScale and countedCell: finer around thin strips and walls (thinStripGridScale) and,
@@ -136,19 +158,12 @@ std::vector<char> creasesForTheSteps(const Inputs& in)
 void setGridScale(
   const Inputs& in, const std::vector<char>& creases, SeamlessSystem& sys, Parameterization& out)
 {
-  constexpr double AdaptiveMaximumRefinement = 8.0;
   sys.cellScale = thinStripGridScale(
     in.V, in.F, in.topo, out.edgeLength, in.options.maximumThinStripRefinement, creases);
-  Eigen::VectorXd curved = curvatureGridScale(in.V, in.F, in.topo, out.edgeLength,
-    in.options.adaptiveCurvature, AdaptiveMaximumRefinement, creases);
+  const Eigen::VectorXd curved =
+    adaptiveGridScale(in, creases, out.edgeLength, in.options.adaptiveCurvature);
   if (curved.size() > 0)
   {
-    Eigen::VectorXd area(in.numFaces());
-    for (int f = 0; f < in.numFaces(); ++f)
-    {
-      area[f] = triangleArea(in.V, in.F, f);
-    }
-    boundGridGrowth(area, AdaptiveMaximumGrowth, curved);
     const Eigen::VectorXd strips =
       sys.cellScale.size() > 0 ? sys.cellScale : Eigen::VectorXd::Ones(in.numFaces());
     sys.cellScale = strips.cwiseMin(curved);
@@ -379,6 +394,95 @@ void repairFirstThenRegrid(const Inputs& in, const Field& field, SeamlessSystem&
   progress.report(1.0);
 }
 
+/// What a trial on other cells changes of sys, to put back when the trial is not kept.
+struct SavedCells
+{
+  explicit SavedCells(const SeamlessSystem& sys)
+    : rhs(sys.rhs)
+    , energyNorm(sys.energyNorm)
+    , cellScale(sys.cellScale)
+    , countedCell(sys.countedCell)
+  {}
+  void restore(SeamlessSystem& sys) const
+  {
+    sys.rhs = rhs;
+    sys.energyNorm = energyNorm;
+    sys.cellScale = cellScale;
+    sys.countedCell = countedCell;
+  }
+  const Eigen::VectorXd rhs;
+  const double energyNorm;
+  const Eigen::VectorXd cellScale, countedCell;
+};
+
+/// sys's cells scaled to `scale` (#F, grid edge over h): the right-hand side and the energy's
+/// norm follow them; the energy's matrix, and so the factorization, does not change.
+void setCellScale(const Eigen::VectorXd& scale, double h, SeamlessSystem& sys)
+{
+  const Eigen::Index nF = scale.size();
+  const Eigen::VectorXd old = sys.cellScale.size() > 0 ? sys.cellScale : Eigen::VectorXd::Ones(nF);
+  for (Eigen::Index f = 0; f < nF; ++f)
+  {
+    sys.rhs.segment<4>(4 * f) *= old[f] / scale[f];
+    sys.energyNorm +=
+      2.0 / (h * h) * sys.faceArea[f] * (1.0 / (scale[f] * scale[f]) - 1.0 / (old[f] * old[f]));
+  }
+  sys.cellScale = scale;
+}
+
+/// The map made again on sys's cells as they are now: the continuous map solved with the same
+/// factor (its edge length corrected for the quad count when `correctLength`), rounded and
+/// repaired. Returns the new map (its untangling counted afresh) with x and its defects.
+Parameterization remapOnCells(const Inputs& in, const Field& field, SeamlessSystem& sys,
+  const HessianFactor& factor, bool greedy, bool correctLength, const Parameterization& out,
+  Eigen::VectorXd& x, Defects& found, const Progress& progress)
+{
+  x = factor.solver.solve(Eigen::VectorXd(sys.P.transpose() * (sys.D.transpose() * sys.rhs)));
+  Parameterization trial = out;
+  trial.untangleRegions = 0;
+  trial.untangleEvaluations = 0;
+  trial.untangleSeconds = 0.0;
+  trial.untangleBudgetSpent = false;
+  trial.separatedBranchPoints = 0;
+  trial.separatedBoundaryLines = 0;
+  if (correctLength)
+  {
+    correctEdgeLength(in, sys, x, trial);
+  }
+  const Eigen::VectorXd integers =
+    roundIntegers(in, field, sys, x, factor, greedy, trial, progress.part(0.0, 0.1));
+  solveWithIntegersFixed(sys, factor, integers, greedy, x, trial);
+  found.flipped = flippedFaces(sys.uv(x), trial.cornerSector);
+  trial.flippedRounded = static_cast<int>(found.flipped.size());
+  trial.energyRounded = sys.energy(x);
+  found.wrong = wrongWindings(in, field, trial, sys.uv(x));
+  repairMap(in, field, sys, x, found, trial, progress.part(0.1, 1.0));
+  return trial;
+}
+
+/// The trial map kept in place of out when it has fewer defects (the work and time of both
+/// maps count, whichever is kept); else sys's cells put back. Returns whether it was kept.
+bool keepFewerDefects(Parameterization&& trial, Eigen::VectorXd&& xt, Defects&& found,
+  const SavedCells& saved, SeamlessSystem& sys, Eigen::VectorXd& x, Defects& defects,
+  Parameterization& out)
+{
+  out.untangleEvaluations += trial.untangleEvaluations;
+  out.untangleSeconds += trial.untangleSeconds;
+  if (found.count() < defects.count())
+  {
+    trial.untangleEvaluations = out.untangleEvaluations;
+    trial.untangleSeconds = out.untangleSeconds;
+    trial.untangleRegions += out.untangleRegions;
+    trial.finerGridTriangles = static_cast<int>((sys.cellScale.array() < 1.0).count());
+    out = std::move(trial);
+    x = std::move(xt);
+    defects = std::move(found);
+    return true;
+  }
+  saved.restore(sys);
+  return false;
+}
+
 /// Where the repaired map x keeps defects, the grid ParameterizationOptions::defectGridRefinement
 /// times finer around them (growing back by a quarter of the distance walked, as around thin
 /// strips): the continuous map solved again with the same factor (only the right-hand side
@@ -420,53 +524,58 @@ void refineAroundDefects(const Inputs& in, const Field& field, SeamlessSystem& s
   }
   spreadGridSizes(in.V, in.topo, 0.25, size);
   Eigen::VectorXd newScale = oldScale;
-  const Eigen::VectorXd oldRhs = sys.rhs;
-  const double oldNorm = sys.energyNorm;
   for (int f = 0; f < nF; ++f)
   {
     const double s = (size[in.F(f, 0)] + size[in.F(f, 1)] + size[in.F(f, 2)]) / (3 * h);
     newScale[f] = std::min(oldScale[f], s);
-    sys.rhs.segment<4>(4 * f) *= oldScale[f] / newScale[f];
-    sys.energyNorm += 2.0 / (h * h) * sys.faceArea[f] *
-      (1.0 / (newScale[f] * newScale[f]) - 1.0 / (oldScale[f] * oldScale[f]));
   }
-  const Eigen::VectorXd oldCell = sys.cellScale;
-  sys.cellScale = newScale;
-  Eigen::VectorXd xt =
-    factor.solver.solve(Eigen::VectorXd(sys.P.transpose() * (sys.D.transpose() * sys.rhs)));
-  Parameterization trial = out;
-  trial.untangleRegions = 0;
-  trial.untangleEvaluations = 0;
-  trial.untangleSeconds = 0.0;
-  trial.untangleBudgetSpent = false;
-  trial.separatedBranchPoints = 0;
-  trial.separatedBoundaryLines = 0;
-  const Eigen::VectorXd integers =
-    roundIntegers(in, field, sys, xt, factor, greedy, trial, progress.part(0.0, 0.1));
-  solveWithIntegersFixed(sys, factor, integers, greedy, xt, trial);
+  const SavedCells saved(sys);
+  setCellScale(newScale, h, sys);
+  Eigen::VectorXd xt;
   Defects found;
-  found.flipped = flippedFaces(sys.uv(xt), trial.cornerSector);
-  trial.flippedRounded = static_cast<int>(found.flipped.size());
-  trial.energyRounded = sys.energy(xt);
-  found.wrong = wrongWindings(in, field, trial, sys.uv(xt));
-  repairMap(in, field, sys, xt, found, trial, progress.part(0.1, 1.0));
-  // the work and time of both maps count, whichever is kept
-  out.untangleEvaluations += trial.untangleEvaluations;
-  out.untangleSeconds += trial.untangleSeconds;
-  if (found.count() < defects.count())
+  Parameterization trial =
+    remapOnCells(in, field, sys, factor, greedy, false, out, xt, found, progress);
+  keepFewerDefects(std::move(trial), std::move(xt), std::move(found), saved, sys, x, defects, out);
+}
+
+/// Where the repaired map keeps defects, the adaptive grid (curvatureGridScale with
+/// ParameterizationOptions::defectAdaptiveCurvature, creases left out, finer still where the grid
+/// already was): the map made again on it, its edge length corrected so that the quads count as
+/// with adaptiveCurvature, kept when it has fewer defects.
+void adaptAroundThinParts(const Inputs& in, const std::vector<char>& creases, const Field& field,
+  SeamlessSystem& sys, const HessianFactor& factor, bool greedy, Eigen::VectorXd& x,
+  Defects& defects, Parameterization& out, const Progress& progress)
+{
+  constexpr int AdaptiveTrialBudgetShare = 4;
+  const double edgeOverRadius = in.options.defectAdaptiveCurvature;
+  // a map whose repair spent its whole budget is beyond a local repair: the trial would only
+  // add time (a tube narrowing to a point at 500 and 1,000 quads: 41 -> 49 s, 2,000 defects more)
+  if (defects.count() == 0 || !(edgeOverRadius > 0) || in.options.adaptiveCurvature > 0 ||
+    out.untangleBudgetSpent)
   {
-    trial.untangleEvaluations = out.untangleEvaluations;
-    trial.untangleSeconds = out.untangleSeconds;
-    trial.untangleRegions += out.untangleRegions;
-    trial.finerGridTriangles = static_cast<int>((newScale.array() < 1.0).count());
-    out = std::move(trial);
-    x = std::move(xt);
-    defects = std::move(found);
     return;
   }
-  sys.rhs = oldRhs;
-  sys.energyNorm = oldNorm;
-  sys.cellScale = oldCell;
+  const double h = out.edgeLength;
+  const Eigen::VectorXd curved = adaptiveGridScale(in, creases, h, edgeOverRadius);
+  if (curved.size() == 0)
+  {
+    return;
+  }
+  const Eigen::VectorXd given =
+    sys.cellScale.size() > 0 ? sys.cellScale : Eigen::VectorXd::Ones(in.numFaces());
+  const SavedCells saved(sys);
+  setCellScale(given.cwiseMin(curved), h, sys);
+  sys.countedCell = sys.cellScale.cwiseQuotient(curved);
+  // a quarter of the untangling budget: on a map that no grid repairs (a tube narrowing to a
+  // point) the trial would cost as much as the first map's repair again
+  ParameterizationOptions trialOptions = in.options;
+  trialOptions.untangleWork = std::max(1, in.options.untangleWork / AdaptiveTrialBudgetShare);
+  const Inputs trialIn{ in.V, in.F, in.topo, in.geometry, in.frameU, in.matching, trialOptions };
+  Eigen::VectorXd xt;
+  Defects found;
+  Parameterization trial =
+    remapOnCells(trialIn, field, sys, factor, greedy, true, out, xt, found, progress);
+  keepFewerDefects(std::move(trial), std::move(xt), std::move(found), saved, sys, x, defects, out);
 }
 
 /// out.branchPointsOnGrid: the branch points mapped to integer (u, v).
@@ -592,7 +701,9 @@ Parameterization mapComponent(const Inputs& given, const Progress& progress)
     in, field, sys, factor, continuous, greedy, round, x, defects, out, progress.part(0.6, 0.9));
   if (round)
   {
-    refineAroundDefects(in, field, sys, factor, greedy, x, defects, out, progress.part(0.9, 0.98));
+    adaptAroundThinParts(
+      in, creases, field, sys, factor, greedy, x, defects, out, progress.part(0.9, 0.94));
+    refineAroundDefects(in, field, sys, factor, greedy, x, defects, out, progress.part(0.94, 0.98));
   }
   out.wrongWindings = static_cast<int>(defects.wrong.size());
   out.flipped = static_cast<int>(defects.flipped.size());

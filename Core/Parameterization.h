@@ -155,6 +155,13 @@ struct ParameterizationOptions
   /// repaired again (the same factorization, a new right-hand side); the new map is kept when it
   /// has fewer defects. 1: no second map.
   double defectGridRefinement = 2.0;
+  /// Where the repaired map keeps defects, first the adaptive grid (as adaptiveCurvature with
+  /// this value, its quads counted the same way) is tried: the map made again on it (the same
+  /// factorization, a quarter of the untangling budget), kept when it has fewer defects; then
+  /// the grid defectGridRefinement times finer around those left. A thin finger or claw a grid
+  /// cell around keeps its shape (armadillo at 1,000 quads: Hausdorff distance 11.2 -> 8.1%,
+  /// at 3,000 quads 3.9 -> 1.4%). 0 (or adaptiveCurvature set): not tried.
+  double defectAdaptiveCurvature = 1.5;
 };
 
 /**

@@ -173,6 +173,7 @@ vtkQuadCoverSolver::vtkQuadCoverSolver()
   this->MaximumThinStripRefinement = defaults.maximumThinStripRefinement;
   this->AdaptiveCurvature = defaults.adaptiveCurvature;
   this->DefectGridRefinement = defaults.defectGridRefinement;
+  this->DefectAdaptiveCurvature = defaults.defectAdaptiveCurvature;
   this->NumberOfThreads = defaults.numberOfThreads;
   this->SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_CELLS, names::FrameU);
   this->SetInputArrayToProcess(1, 0, 0, vtkDataObject::FIELD_ASSOCIATION_CELLS, names::Matching);
@@ -306,7 +307,8 @@ void vtkQuadCoverSolver::Execute(vtkQuadCoverSurface& in, vtkInformationVector* 
     { "MaximumTriangleEdge", this->MaximumTriangleEdge }, { "ConePairGain", this->ConePairGain },
     { "MaximumThinStripRefinement", this->MaximumThinStripRefinement },
     { "AdaptiveCurvature", this->AdaptiveCurvature },
-    { "DefectGridRefinement", this->DefectGridRefinement } });
+    { "DefectGridRefinement", this->DefectGridRefinement },
+    { "DefectAdaptiveCurvature", this->DefectAdaptiveCurvature } });
   quadcover::ParameterizationOptions options;
   options.targetEdgeLength = in.InCoreUnits(this->TargetEdgeLength); // for the scaled surface
   options.targetQuadCount = this->TargetQuadCount;
@@ -329,6 +331,7 @@ void vtkQuadCoverSolver::Execute(vtkQuadCoverSurface& in, vtkInformationVector* 
   options.maximumThinStripRefinement = this->MaximumThinStripRefinement;
   options.adaptiveCurvature = this->AdaptiveCurvature;
   options.defectGridRefinement = this->DefectGridRefinement;
+  options.defectAdaptiveCurvature = this->DefectAdaptiveCurvature;
   options.numberOfThreads = this->NumberOfThreads;
   CheckQuadCount(in, options, this->TargetEdgeLength);
   const int refined = RefineLongEdges(in, options, m, U, matching);
@@ -419,6 +422,7 @@ void vtkQuadCoverSolver::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "MaximumThinStripRefinement: " << this->MaximumThinStripRefinement << "\n";
   os << indent << "AdaptiveCurvature: " << this->AdaptiveCurvature << "\n";
   os << indent << "DefectGridRefinement: " << this->DefectGridRefinement << "\n";
+  os << indent << "DefectAdaptiveCurvature: " << this->DefectAdaptiveCurvature << "\n";
   os << indent << "NumberOfThreads: " << this->NumberOfThreads << "\n";
   os << indent << "SplitSeams: " << (this->SplitSeams ? "On" : "Off") << "\n";
 }

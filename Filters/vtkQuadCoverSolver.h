@@ -268,6 +268,16 @@ public:
   ///@}
 
   ///@{
+  /** Where the repaired map keeps defects (a thin finger or claw a grid cell around), first the
+   * adaptive grid of AdaptiveCurvature with this value is tried: the map is made again on it
+   * and kept when it has fewer defects (then DefectGridRefinement around those left), in
+   * [0, 10] (default 1.5; 0: not tried; unused when AdaptiveCurvature is set). Counted in
+   * FinerGridTriangles. */
+  vtkSetClampMacro(DefectAdaptiveCurvature, double, 0.0, 10.0);
+  vtkGetMacro(DefectAdaptiveCurvature, double);
+  ///@}
+
+  ///@{
   /** Number of threads for the untangling and for the maps of the components (each component
    * on its own), 0 for all cores (default 0). The result does not depend on it. */
   vtkSetClampMacro(NumberOfThreads, int, 0, 1024);
@@ -321,6 +331,7 @@ protected:
   double MaximumThinStripRefinement;
   double AdaptiveCurvature;
   double DefectGridRefinement;
+  double DefectAdaptiveCurvature;
   int NumberOfThreads;
   bool SplitSeams = false;
 

@@ -420,6 +420,9 @@ std::vector<Option> StageOptions(Pipeline& p)
     QC_NUMBER("param", solver, DefectGridRefinement,
       "where the repaired map keeps defects the grid is this many times finer and the map made "
       "again, kept with fewer defects, 1: not"),
+    QC_NUMBER("param", solver, DefectAdaptiveCurvature,
+      "where the repaired map keeps defects, first the adaptive grid of --adaptive-curvature X "
+      "is tried, kept with fewer defects, 0: not"),
     QC_SWITCH("param", solver, SplitSeams,
       "write the surface cut open along the seams, with UV texture coordinates"),
     QC_SWITCH("quads", extractor, RepairInvertedQuads,

@@ -941,6 +941,30 @@ struct SmoothestComponents
     return computeParameterization(
       s.V, s.F, topo, geometry, field.frameU, field.topology.matching, options);
   }
+
+  /// 6,500 quads, no other grids, no limit from the curvature: their maps keep defects
+  static ParameterizationOptions defectOptions()
+  {
+    ParameterizationOptions options;
+    options.targetQuadCount = 6500;
+    options.curvatureEdgeLength = 0.0;
+    options.minimumComponentQuadCount = 12;
+    options.maximumRegrids = 0;
+    return options;
+  }
+
+  /// The second map, on a finer grid where the first kept defects, keeps fewer, and stays
+  /// seamless with its branch points on the grid; the work of both is counted.
+  static void expectFewerDefects(const Parameterization& first, const Parameterization& second)
+  {
+    ASSERT_GT(first.flipped + first.wrongWindings, 0) << "the case the test is about";
+    EXPECT_EQ(first.finerGridTriangles, 0);
+    EXPECT_GT(second.finerGridTriangles, 0);
+    EXPECT_LT(second.flipped + second.wrongWindings, first.flipped + first.wrongWindings);
+    EXPECT_EQ(second.branchPointsOnGrid, second.branchPoints);
+    EXPECT_LT(second.maxSeamError, 1e-9) << "still seamless";
+    EXPECT_GE(second.untangleEvaluations, first.untangleEvaluations) << "both maps' work counted";
+  }
 };
 }
 
@@ -1039,22 +1063,36 @@ TEST(Parameterization, AFinerGridAroundTheDefectsRepairsTheMapsOfTheSmallTori)
   // the same small tori without other grids: a second map, on a grid twice as fine around the
   // defects the first kept, keeps fewer, and stays seamless with its branch points on the grid
   const SmoothestComponents components;
-  ParameterizationOptions options;
-  options.targetQuadCount = 6500;
-  options.curvatureEdgeLength = 0.0;
-  options.minimumComponentQuadCount = 12;
-  options.maximumRegrids = 0;
+  ParameterizationOptions options = SmoothestComponents::defectOptions();
+  options.defectAdaptiveCurvature = 0.0; // the finer grid around the defects alone
   options.defectGridRefinement = 1.0;
   const Parameterization first = components.map(options);
   options.defectGridRefinement = 2.0;
   const Parameterization second = components.map(options);
-  ASSERT_GT(first.flipped + first.wrongWindings, 0) << "the case this test is about";
-  EXPECT_EQ(first.finerGridTriangles, 0);
-  EXPECT_GT(second.finerGridTriangles, 0);
-  EXPECT_LT(second.flipped + second.wrongWindings, first.flipped + first.wrongWindings);
-  EXPECT_EQ(second.branchPointsOnGrid, second.branchPoints);
-  EXPECT_LT(second.maxSeamError, 1e-9) << "still seamless";
-  EXPECT_GE(second.untangleEvaluations, first.untangleEvaluations) << "both maps' work counted";
+  SmoothestComponents::expectFewerDefects(first, second);
+}
+
+TEST(Parameterization, AnAdaptiveGridRepairsTheMapsOfTheSmallTori)
+{
+  // the same small tori, neither other grids nor a finer one around the defects: a second map,
+  // on the adaptive grid (defectAdaptiveCurvature; the tori are thin against the grid), keeps
+  // fewer defects, and stays seamless with its branch points on the grid
+  const SmoothestComponents components;
+  ParameterizationOptions options = SmoothestComponents::defectOptions();
+  options.defectGridRefinement = 1.0;
+  options.defectAdaptiveCurvature = 0.0;
+  const Parameterization first = components.map(options);
+  options.defectAdaptiveCurvature = 1.5;
+  const Parameterization second = components.map(options);
+  SmoothestComponents::expectFewerDefects(first, second);
+  // with adaptiveCurvature itself set, the trial is not made again
+  options.adaptiveCurvature = 1.5;
+  options.defectAdaptiveCurvature = 0.0;
+  const Parameterization adaptive = components.map(options);
+  options.defectAdaptiveCurvature = 1.5;
+  const Parameterization both = components.map(options);
+  EXPECT_EQ(both.untangleEvaluations, adaptive.untangleEvaluations);
+  EXPECT_EQ(both.finerGridTriangles, adaptive.finerGridTriangles);
 }
 
 TEST(Parameterization, AComponentGetsItsMinimumOfQuadsForEachHandle)

@@ -122,6 +122,14 @@ TEST(vtkQuadCoverSolver, DefaultsClampsAndPrintSelf)
   std::ostringstream again;
   s->Print(again);
   EXPECT_NE(again.str().find("DefectGridRefinement: 8"), std::string::npos);
+  // ParameterizationOptions::defectAdaptiveCurvature
+  EXPECT_EQ(s->GetDefectAdaptiveCurvature(), 1.5);
+  s->SetDefectAdaptiveCurvature(11.0);
+  EXPECT_EQ(s->GetDefectAdaptiveCurvature(), 10.0);
+  s->SetDefectAdaptiveCurvature(0.0);
+  std::ostringstream curved;
+  s->Print(curved);
+  EXPECT_NE(curved.str().find("DefectAdaptiveCurvature: 0"), std::string::npos);
   EXPECT_NE(os.str().find("RoundingMode: Simple"), std::string::npos);
   EXPECT_NE(os.str().find("PureQuads: On"), std::string::npos);
 }
@@ -346,6 +354,34 @@ TEST(vtkQuadCoverSolver, LongEdgesAreSplitBeforeTheMapCarryingTheArrays)
   EXPECT_EQ(checks::seamViolations(F, topo, CornerUV(out), 1e-6), 0);
 }
 
+namespace
+{
+/// The chain's map keeps defects, on a uniform grid.
+void ExpectDefects(Chain& chain)
+{
+  vtkPolyData* out = chain.Run();
+  ASSERT_EQ(chain.errors->GetError(), "");
+  EXPECT_GT(Field(out, names::FlippedTriangles, 2) + Field(out, names::WindingErrors), 0)
+    << "the uniform grid's map should keep defects (else the test proves nothing)";
+  EXPECT_EQ(Field(out, names::FinerGridTriangles), 0);
+}
+
+/// The chain's map keeps no defect, on a grid finer somewhere, and is seamless.
+void ExpectRepairedOnAFinerGrid(Chain& chain)
+{
+  vtkPolyData* out = chain.Run();
+  ASSERT_EQ(chain.errors->GetError(), "");
+  EXPECT_EQ(Field(out, names::FlippedTriangles, 2), 0);
+  EXPECT_EQ(Field(out, names::WindingErrors), 0);
+  EXPECT_GT(Field(out, names::FinerGridTriangles), 0);
+  const Eigen::MatrixXd uv = CornerUV(out);
+  const Eigen::MatrixX3i F = vtkQuadCoverEigen::Triangles(out);
+  const MeshTopology topo = buildTopology(F, static_cast<int>(out->GetNumberOfPoints()));
+  EXPECT_EQ(checks::flippedTriangles(uv), 0);
+  EXPECT_EQ(checks::seamViolations(F, topo, uv), 0) << "the finer grid's map is still seamless";
+}
+}
+
 TEST(vtkQuadCoverSolver, AFinerGridAroundTheDefectsRepairsTheMap)
 {
   // decimated-knight at 2,500 quads: its repaired map keeps 2 defects; on a grid twice as fine
@@ -362,23 +398,30 @@ TEST(vtkQuadCoverSolver, AFinerGridAroundTheDefectsRepairsTheMap)
   Chain chain(surface);
   chain.solver->SetTargetQuadCount(2500);
   chain.solver->SetMaximumThinStripRefinement(1.0);
+  chain.solver->SetDefectAdaptiveCurvature(0.0);
   chain.solver->SetDefectGridRefinement(1.0);
-  vtkPolyData* out = chain.Run();
-  ASSERT_EQ(chain.errors->GetError(), "");
-  EXPECT_GT(Field(out, names::FlippedTriangles, 2) + Field(out, names::WindingErrors), 0)
-    << "the uniform grid's map should keep defects (else the test proves nothing)";
-  EXPECT_EQ(Field(out, names::FinerGridTriangles), 0);
+  ExpectDefects(chain);
   chain.solver->SetDefectGridRefinement(2.0);
-  out = chain.Run();
-  ASSERT_EQ(chain.errors->GetError(), "");
-  EXPECT_EQ(Field(out, names::FlippedTriangles, 2), 0);
-  EXPECT_EQ(Field(out, names::WindingErrors), 0);
-  EXPECT_GT(Field(out, names::FinerGridTriangles), 0);
-  const Eigen::MatrixXd uv = CornerUV(out);
-  const Eigen::MatrixX3i F = vtkQuadCoverEigen::Triangles(out);
-  const MeshTopology topo = buildTopology(F, static_cast<int>(out->GetNumberOfPoints()));
-  EXPECT_EQ(checks::flippedTriangles(uv), 0);
-  EXPECT_EQ(checks::seamViolations(F, topo, uv), 0) << "the finer grid's map is still seamless";
+  ExpectRepairedOnAFinerGrid(chain);
+}
+
+TEST(vtkQuadCoverSolver, AnAdaptiveGridRepairsAMapThatKeepsDefects)
+{
+  // spot at 1,000 quads: the repaired map keeps 2 defects at its ears and horns, and so does the
+  // grid twice as fine around them; on the adaptive grid (DefectAdaptiveCurvature) the map
+  // keeps none.
+  std::string path;
+  vtkSmartPointer<vtkPolyData> surface = LoadTestSurface("spot", path);
+  if (!surface)
+  {
+    GTEST_SKIP() << "mesh not found: " << path;
+  }
+  Chain chain(surface);
+  chain.solver->SetTargetQuadCount(1000);
+  chain.solver->SetDefectAdaptiveCurvature(0.0);
+  ExpectDefects(chain);
+  chain.solver->SetDefectAdaptiveCurvature(1.5);
+  ExpectRepairedOnAFinerGrid(chain);
 }
 
 TEST(vtkQuadCoverSolver, AdaptiveCurvatureMakesTheGridFinerWhereTheSurfaceCurves)

@@ -1,0 +1,266 @@
+#!/usr/bin/python3
+"""Nine generated surfaces for measuring robustness on shapes outside the shared set.
+
+    /usr/bin/python3 Benchmarks/generated_shapes.py OUTDIR
+
+Writes OUTDIR/NAME.obj for: vase (a surface of revolution with a thin neck), spiral (a conic
+spiral tube narrowing to a point, open at its wide end), superellipsoid and supertoroid
+(exponents 0.25: rounded boxes), gear (20 teeth around a hole, extruded), thinring (an annulus
+0.02 thick), urchin (a sphere with six spikes), wavysheet (an open wavy square) and helixtube (a
+long capped helical tube of radius 0.05). `Benchmarks/count_sweep.py ... --meshes
+OUTDIR/vase.obj,...` measures them (Benchmarks/README.md).
+"""
+import os
+import sys
+from collections import Counter
+
+import numpy as np
+import vtk
+from vtk.util.numpy_support import vtk_to_numpy
+
+
+def write(out, name, V, F):
+    with open(os.path.join(out, name + ".obj"), "w") as f:
+        for p in V:
+            f.write("v %.9g %.9g %.9g\n" % tuple(p))
+        for t in F:
+            f.write("f %d %d %d\n" % tuple(np.asarray(t) + 1))
+
+
+def from_polydata(pd):
+    """Triangulated, points merged: (V, F)."""
+    t = vtk.vtkTriangleFilter()
+    t.SetInputData(pd)
+    c = vtk.vtkCleanPolyData()
+    c.SetInputConnection(t.GetOutputPort())
+    c.SetTolerance(1e-9)
+    c.Update()
+    p = c.GetOutput()
+    V = vtk_to_numpy(p.GetPoints().GetData()).astype(float)
+    F = vtk_to_numpy(p.GetPolys().GetData()).reshape(-1, 4)[:, 1:]
+    return V, F
+
+
+def parametric(function, u, v):
+    source = vtk.vtkParametricFunctionSource()
+    source.SetParametricFunction(function)
+    source.SetUResolution(u)
+    source.SetVResolution(v)
+    source.Update()
+    return from_polydata(source.GetOutput())
+
+
+def revolve(radius, height, nu, nv):
+    """A closed surface of revolution, poles at t = 0 and pi."""
+    V = [[0, 0, height(0.0)]]
+    F = []
+    ts = np.linspace(0, np.pi, nv + 1)[1:-1]
+    for t in ts:
+        for j in range(nu):
+            a = 2 * np.pi * j / nu
+            V.append([radius(t) * np.cos(a), radius(t) * np.sin(a), height(t)])
+    V.append([0, 0, height(np.pi)])
+    last = len(V) - 1
+
+    def idx(i, j):
+        return 1 + i * nu + (j % nu)
+
+    for j in range(nu):
+        F.append([0, idx(0, j), idx(0, j + 1)])
+    for i in range(len(ts) - 1):
+        for j in range(nu):
+            F.append([idx(i, j), idx(i + 1, j), idx(i + 1, j + 1)])
+            F.append([idx(i, j), idx(i + 1, j + 1), idx(i, j + 1)])
+    for j in range(nu):
+        F.append([last, idx(len(ts) - 1, j + 1), idx(len(ts) - 1, j)])
+    return np.array(V), np.array(F)
+
+
+def extrude(V2, F2, thickness):
+    """A closed slab from a planar triangulation (counter-clockwise) of points V2 (n x 2 or 3)."""
+    n = len(V2)
+    flat = np.c_[V2[:, :2], np.zeros(n)]
+    V = np.vstack([flat + [0, 0, thickness], flat])
+    F = [t for t in F2] + [t[::-1] + n for t in F2]
+    edges = Counter()
+    for t in F2:
+        for k in range(3):
+            edges[(t[k], t[(k + 1) % 3])] += 1
+    for (a, b) in edges:
+        if (b, a) not in edges:  # a boundary edge a -> b: a wall down to the bottom
+            F.append([b, a, a + n])
+            F.append([b, a + n, b + n])
+    return V, np.array(F)
+
+
+def vase():
+    return revolve(lambda t: np.sin(t) * (0.55 + 0.45 * np.cos(3 * t)) + 0.02 * np.sin(t),
+                   lambda t: -3 * np.cos(t), 96, 240)
+
+
+def spiral():
+    s = vtk.vtkParametricConicSpiral()
+    s.SetA(0.2)
+    s.SetB(1)
+    s.SetC(0.1)
+    s.SetN(2)
+    return parametric(s, 300, 60)
+
+
+def super_shape(function):
+    function.SetN1(0.25)
+    function.SetN2(0.25)
+    return parametric(function, 160, 160)
+
+
+def gear():
+    n = 20
+    outline = []
+    for k in range(n):
+        for a, r in ((0, 1.0), (0.18, 1.0), (0.28, 1.2), (0.42, 1.2), (0.52, 1.0)):
+            angle = 2 * np.pi * (k + a) / n
+            outline.append((r * np.cos(angle), r * np.sin(angle)))
+    m = len(outline)
+    hole = [(0.35 * np.cos(2 * np.pi * k / 40), 0.35 * np.sin(2 * np.pi * k / 40))
+            for k in range(40)]
+    inner = []
+    for r in np.linspace(0.45, 0.95, 6):
+        for k in range(int(60 * r)):
+            a = 2 * np.pi * k / int(60 * r) + r
+            inner.append((r * np.cos(a), r * np.sin(a)))
+    points = vtk.vtkPoints()
+    for x, y in outline + hole + inner:
+        points.InsertNextPoint(x, y, 0)
+    cloud = vtk.vtkPolyData()
+    cloud.SetPoints(points)
+    polys = vtk.vtkCellArray()
+    for ids in (list(range(m)), [m + 39 - i for i in range(40)]):
+        polygon = vtk.vtkPolygon()
+        polygon.GetPointIds().SetNumberOfIds(len(ids))
+        for i, v in enumerate(ids):
+            polygon.GetPointIds().SetId(i, v)
+        polys.InsertNextCell(polygon)
+    bounds = vtk.vtkPolyData()
+    bounds.SetPoints(points)
+    bounds.SetPolys(polys)
+    delaunay = vtk.vtkDelaunay2D()
+    delaunay.SetInputData(cloud)
+    delaunay.SetSourceData(bounds)
+    delaunay.Update()
+    face = delaunay.GetOutput()
+    Vf = vtk_to_numpy(face.GetPoints().GetData()).astype(float)
+    Ff = vtk_to_numpy(face.GetPolys().GetData()).reshape(-1, 4)[:, 1:]
+
+    def up(t):
+        a, b, c = Vf[t]
+        return np.cross(b - a, c - a)[2] > 0
+
+    Ff = np.array([t if up(t) else t[::-1] for t in Ff])
+    V, F = extrude(Vf, Ff, 0.3)
+    slab = vtk.vtkPolyData()
+    pts = vtk.vtkPoints()
+    for p in V:
+        pts.InsertNextPoint(*p)
+    cells = vtk.vtkCellArray()
+    for t in F:
+        cells.InsertNextCell(3)
+        for i in t:
+            cells.InsertCellPoint(int(i))
+    slab.SetPoints(pts)
+    slab.SetPolys(cells)
+    subdivided = vtk.vtkLinearSubdivisionFilter()
+    subdivided.SetInputData(slab)
+    subdivided.SetNumberOfSubdivisions(2)
+    subdivided.Update()
+    return from_polydata(subdivided.GetOutput())
+
+
+def thin_ring():
+    nu, nr = 180, 12
+    V = []
+    for i in range(nr + 1):
+        r = 0.5 + 0.5 * i / nr
+        for j in range(nu):
+            a = 2 * np.pi * j / nu
+            V.append([r * np.cos(a), r * np.sin(a)])
+    F = []
+    for i in range(nr):
+        for j in range(nu):
+            a, b = i * nu + j, i * nu + (j + 1) % nu
+            F += [[a, b, b + nu], [a, b + nu, a + nu]]
+    return extrude(np.array(V), np.array(F), 0.02)
+
+
+def urchin():
+    sphere = vtk.vtkSphereSource()
+    sphere.SetThetaResolution(200)
+    sphere.SetPhiResolution(200)
+    sphere.Update()
+    V, F = from_polydata(sphere.GetOutput())
+    V = V / np.linalg.norm(V, axis=1)[:, None]
+    dirs = np.array([[1, 0, 0], [-1, 0, 0], [0, 1, 0], [0, -1, 0], [0, 0, 1], [0, 0, -1.0]])
+    dirs = dirs + 0.3 * np.array([[0, 1, 0.2]])
+    dirs /= np.linalg.norm(dirs, axis=1)[:, None]
+    bump = np.zeros(len(V))
+    for d in dirs:
+        bump += 1.2 * np.exp(-(1 - V @ d) / 0.01)
+    return V * (1 + bump)[:, None], F
+
+
+def wavy_sheet():
+    n = 120
+    xs = np.linspace(-1, 1, n)
+    X, Y = np.meshgrid(xs, xs)
+    V = np.c_[X.ravel(), Y.ravel(), (0.25 * np.sin(3 * X) * np.cos(2 * Y)).ravel()]
+    F = []
+    for i in range(n - 1):
+        for j in range(n - 1):
+            a = i * n + j
+            F += [[a, a + 1, a + n + 1], [a, a + n + 1, a + n]]
+    return V, np.array(F)
+
+
+def helix_tube():
+    spline = vtk.vtkParametricSpline()
+    points = vtk.vtkPoints()
+    for t in np.linspace(0, 6 * np.pi, 200):
+        points.InsertNextPoint(np.cos(t), np.sin(t), 0.15 * t)
+    spline.SetPoints(points)
+    source = vtk.vtkParametricFunctionSource()
+    source.SetParametricFunction(spline)
+    source.SetUResolution(1000)
+    tube = vtk.vtkTubeFilter()
+    tube.SetInputConnection(source.GetOutputPort())
+    tube.SetRadius(0.05)
+    tube.SetNumberOfSides(24)
+    tube.CappingOn()
+    tube.Update()
+    return from_polydata(tube.GetOutput())
+
+
+SHAPES = {
+    "vase": vase,
+    "spiral": spiral,
+    "superellipsoid": lambda: super_shape(vtk.vtkParametricSuperEllipsoid()),
+    "supertoroid": lambda: super_shape(vtk.vtkParametricSuperToroid()),
+    "gear": gear,
+    "thinring": thin_ring,
+    "urchin": urchin,
+    "wavysheet": wavy_sheet,
+    "helixtube": helix_tube,
+}
+
+
+def main():
+    if len(sys.argv) != 2:
+        sys.exit(__doc__)
+    out = sys.argv[1]
+    os.makedirs(out, exist_ok=True)
+    for name, make in SHAPES.items():
+        V, F = make()
+        write(out, name, V, F)
+        print("%s.obj: %d points, %d triangles" % (name, len(V), len(F)))
+
+
+if __name__ == "__main__":
+    main()
