@@ -122,7 +122,8 @@ public:
   }
 
   /// Whether sharp edges e and g bound a wall: a triangle at e and one at g nearly parallel (the
-  /// wall, cosine above 0.9), and their other two triangles facing apart (the plate's faces).
+  /// wall, cosine above 0.9), and their other two triangles facing apart (the plate's faces); a
+  /// triangle of no area (zero normal, SurfaceLocator::normal) bounds none.
   bool wallBetween(int e, int g) const
   {
     for (int i = 0; i < 2; ++i)
@@ -131,21 +132,15 @@ public:
       {
         const int we = topo_.edgeFaces(e, i), wg = topo_.edgeFaces(g, j);
         const int oe = topo_.edgeFaces(e, 1 - i), og = topo_.edgeFaces(g, 1 - j);
-        if (we >= 0 && wg >= 0 && oe >= 0 && og >= 0 && unitNormal(we).dot(unitNormal(wg)) > 0.9 &&
-          unitNormal(oe).dot(unitNormal(og)) < 0)
+        if (we >= 0 && wg >= 0 && oe >= 0 && og >= 0 &&
+          surface_.normal(we).dot(surface_.normal(wg)) > 0.9 &&
+          surface_.normal(oe).dot(surface_.normal(og)) < 0)
         {
           return true;
         }
       }
     }
     return false;
-  }
-
-  /// Triangle f's unit normal (not finite for one of no area: then no wall).
-  Eigen::Vector3d unitNormal(int f) const
-  {
-    const Eigen::Vector3d a = V_.row(F_(f, 0)), b = V_.row(F_(f, 1)), c = V_.row(F_(f, 2));
-    return (b - a).cross(c - a).normalized();
   }
 
   /**
