@@ -8,7 +8,8 @@ Runs each quadcover binary (an installed copy of each build, or a script that ru
 mesh at every quad count, and prints per binary the map's defects summed over all runs (points
 wound unlike the field, triangles left flipped), the median, mean and largest Hausdorff distance
 of the quads (quadcover's own figure, % of the diagonal), how many runs are above 4%, and the
-median edge-length RSD; then per mesh the Hausdorff distance of each binary at each count. One
+median edge-length RSD, and the seconds the stages took (their sum, the median run, the
+slowest runs); then per mesh the Hausdorff distance of each binary at each count. One
 mesh at one count is chaotic (a map's defects move with any change); the sums over the sweep are
 what to compare. Two runs at a time by default. A mesh named with an extension
 (`--meshes /tmp/armadillo4.vtp,spot`) is that file, not one of the shared meshes: refined or
@@ -74,11 +75,14 @@ def main():
             d = json.load(f)
         return job, (d["param"]["winding_errors"], d["param"]["flipped_triangles"][2],
                      d["quads"]["hausdorff_distance"][0], 100 * d["quads"]["edge_length_rsd"],
-                     evaluate(out, mesh) if a.evaluate else None)
+                     evaluate(out, mesh) if a.evaluate else None, sum(d["seconds"].values()))
 
     jobs = [(b, m, q) for m in meshes for q in counts for b in range(len(a.binaries))]
     with ThreadPoolExecutor(a.jobs) as pool:
         found = dict(pool.map(run, jobs))
+    # the inputs' own Euler characteristic, as the evaluator reads them (once: the evaluator
+    # also measures their distance to themselves)
+    input_euler = {m: evaluate(path_of(m), m)[1] for m in meshes} if a.evaluate else {}
     for b, binary in enumerate(a.binaries):
         rows = [found[(b, m, q)] for m in meshes for q in counts if found[(b, m, q)]]
         failed = sum(1 for m in meshes for q in counts if not found[(b, m, q)])
@@ -88,8 +92,14 @@ def main():
                   binary, sum(r[0] for r in rows), sum(r[1] for r in rows), statistics.median(h),
                   statistics.mean(h), max(h), sum(x > 4 for x in h),
                   statistics.median(r[3] for r in rows), failed))
+        timed = sorted(((found[(b, m, q)][5], m, q) for m in meshes for q in counts
+                        if found[(b, m, q)]), reverse=True)
+        print("  seconds (the stages', %d runs at a time): total %.1f, median %.2f, over 5 s: %d,"
+              " slowest %s" % (a.jobs, sum(t[0] for t in timed), statistics.median(t[0] for t in timed),
+                               sum(t[0] > 5 for t in timed), ", ".join(
+                                   "%s at %d %.1f" % (os.path.basename(m), q, t)
+                                   for t, m, q in timed[:5])))
         if a.evaluate:
-            input_euler = {m: evaluate(path_of(m), m)[1] for m in meshes}
             judged = [(m, found[(b, m, q)][4]) for m in meshes for q in counts
                       if found[(b, m, q)] and found[(b, m, q)][4]]
             print("  faces against the input's normal %d (in %d runs), Euler characteristic not the"

@@ -1,5 +1,5 @@
 // MapRepair.cxx: the integer-grid map's flipped triangles untangled and its fans wound the wrong
-// way laid out again (the winding check, three untangling attempts and a held run).
+// way laid out again (the winding check and up to three untangling attempts).
 #include "ParameterizationSteps.h"
 
 #include "Untangler.h"
@@ -95,10 +95,6 @@ public:
         defects.flipped = flippedIn(x);
         untangleRings(8, xs, x, defects.flipped, frozen);
       }
-      if (attempt == 0)
-      {
-        firstHeld_ = { xs, x, defects.flipped, frozen };
-      }
       regions += untangleRings(16, xs, x, defects.flipped, {});
       defects.wrong = wrongIn(x);
       const std::pair<int, std::size_t> attemptScore = score(x, defects);
@@ -120,28 +116,6 @@ public:
   bool spent() const { return untangler_.spent(); }
   /// The triangle energy evaluations spent so far.
   long long used() const { return given_ - work_; }
-  /// Freed, a fan laid out again can close up once more as its surroundings untangle (on fine
-  /// meshes a cone's fan is small against a grid cell); held, it cannot, though its
-  /// surroundings may then keep folds. This runs the first attempt again with its fans held
-  /// throughout; the better run (score) wins, the attempts' map on a tie. (Nothing to run when
-  /// no attempt ran: the budget was spent before the first.)
-  void heldRun(Eigen::VectorXd& x, Defects& defects, int& regions)
-  {
-    Snapshot& held = firstHeld_;
-    if (held.xr.size() == 0)
-    {
-      return;
-    }
-    const int heldRegions = untangleRings(16, held.xs, held.xr, held.flipped, held.frozen);
-    Defects heldDefects{ held.flipped, wrongIn(held.xr) };
-    if (score(held.xr, heldDefects) < score(x, defects))
-    {
-      x = held.xr;
-      defects = std::move(heldDefects);
-      regions = heldRegions;
-    }
-  }
-
   /// How good the map x is, lower better: its defects, and before them, on a rounded map small
   /// enough to cut its quads out, its rank (mapRank: whether its quads keep the surface's
   /// topology, then whether it has defects but flat triangles). Fewer
@@ -154,15 +128,6 @@ public:
   }
 
 private:
-  /// The state after the first attempt has laid out and held its fans, before everything
-  /// untangles: where the held run starts from.
-  struct Snapshot
-  {
-    Eigen::VectorXd xs, xr; // symbols, columns
-    std::vector<int> flipped;
-    std::vector<char> frozen;
-  };
-
   bool isCone(int p) const { return field_.topology.layerShift[p] != 0; }
   std::vector<int> flippedIn(const Eigen::VectorXd& x) const
   {
@@ -291,7 +256,6 @@ private:
   const long long given_;     // the untangling's budget
   long long work_;            // what the untangling may still spend, in triangle energy evaluations
   const Untangler untangler_; // in symbols: only the real ones move, and they are the real columns
-  Snapshot firstHeld_;
   /// How many untangling runs there will be is not known beforehand: run k of the repair gets
   /// the part halving(progress_, k).
   const Progress progress_;
@@ -340,18 +304,6 @@ void repairMap(const Inputs& in, const Field& field, const SeamlessSystem& sys, 
   const Eigen::VectorXd before = x;
   const Defects found = defects;
   repair.attempts(x, defects, out.untangleRegions);
-  const std::size_t left = defects.count();
-  // (with no cone among the fans wound the wrong way nothing would be held: the held run would
-  // repeat the first attempt)
-  const bool cones = std::any_of(found.wrong.begin(), found.wrong.end(),
-    [&](int p) { return field.topology.layerShift[p] != 0; });
-  if (left > 0 && left <= 8 && cones)
-  {
-    // Only for a handful left: where many are, holding their fans blocks the untangling (spot
-    // refined 64 times: 20 wrong fans, and 50 s more for nothing). (The first attempt always
-    // ran: there were defects.)
-    repair.heldRun(x, defects, out.untangleRegions);
-  }
   if (repair.score(before, found) < repair.score(x, defects))
   {
     x = before;

@@ -246,11 +246,10 @@ std::vector<int> wrongWindings(
   const Inputs& in, const Field& field, const Parameterization& out, const Eigen::MatrixX2d& uv);
 
 /// Untangles the flipped triangles of x and lays out again the fans wound the wrong way (up to
-/// three attempts on a map ranked by its quads, else one, and a held run), keeping the best map:
-/// the one with the fewest defects, or on a rounded map small enough to cut its quads out
-/// (rankedByQuads) the best by mapRank first. Ties go to the later attempt, then to the attempts'
-/// map over the held run's, then to the repaired map over x as it was given. Updates `defects` and
-/// out.untangleRegions, untangleSeconds.
+/// three attempts on a map ranked by its quads, else one), keeping the best map: the one with
+/// the fewest defects, or on a rounded map small enough to cut its quads out (rankedByQuads) the
+/// best by mapRank first. Ties go to the later attempt, then to the repaired map over x as it was
+/// given. Updates `defects` and out.untangleRegions, untangleSeconds.
 void repairMap(const Inputs& in, const Field& field, const SeamlessSystem& sys, Eigen::VectorXd& x,
   Defects& defects, Parameterization& out, const Progress& progress);
 
