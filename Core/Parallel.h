@@ -3,8 +3,11 @@
 #define quadcover_Parallel_h
 
 #include <algorithm>
+#include <chrono>
+#include <condition_variable>
 #include <cstdlib>
 #include <exception>
+#include <mutex>
 #include <thread>
 #include <vector>
 
@@ -69,6 +72,54 @@ void runBoth(First&& first, Second&& second, int numThreads)
   {
     std::rethrow_exception(failed);
   }
+}
+
+/// runBoth(first, second), except that on two threads, once first has returned, this thread
+/// calls report() every 10 ms until second has returned (and returns as soon as it has): the
+/// calling thread's progress reports, and the cancel they may throw, go on while the other
+/// thread works. An exception from first or report is rethrown once second has returned (they
+/// should tell second to stop first). On one thread: first(), then second().
+template<typename First, typename Second, typename Report>
+void runBothReporting(First&& first, Second&& second, Report&& report, int numThreads)
+{
+  if (threadCount(numThreads) == 1)
+  {
+    first();
+    second();
+    return;
+  }
+  bool ended = false; // under mutex
+  std::mutex mutex;
+  std::condition_variable wake;
+  runBoth(
+    [&]() {
+      first();
+      std::unique_lock<std::mutex> lock(mutex);
+      while (!wake.wait_for(lock, std::chrono::milliseconds(10), [&]() { return ended; }))
+      {
+        lock.unlock();
+        report();
+        lock.lock();
+      }
+    },
+    [&]() {
+      struct End // also when second throws: the first thread must not wait for ever
+      {
+        bool& ended;
+        std::mutex& mutex;
+        std::condition_variable& wake;
+        ~End()
+        {
+          {
+            const std::lock_guard<std::mutex> lock(mutex);
+            ended = true;
+          }
+          wake.notify_one();
+        }
+      } end{ ended, mutex, wake };
+      second();
+    },
+    numThreads);
 }
 
 /// Calls body(begin, end, threadIndex) on contiguous blocks covering [0, n). Each index is
