@@ -51,9 +51,10 @@ struct Untangler
   /// Work left, in triangle energy evaluations, shared by every run of one repair: runs stop
   /// when it is spent (nullptr: no limit); a Newton step's Hessian and its factorization count
   /// as LocalEnergy::HessianCost evaluations a face, about what they take in time on a
-  /// neighbourhood of a few rings; on a wide one (16 rings around a hundred flips) the
-  /// factorization costs about four times that (Benchmarks/README.md, 2026-12-06 (5)). Counting
-  /// work, not seconds, keeps the result the same on every machine.
+  /// neighbourhood of a few rings; a pass on a wide one (16 rings around a hundred flips) took
+  /// about four times as long per evaluation counted, its larger factorizations the likely
+  /// cause (Benchmarks/README.md, 2026-12-06 (5)). Counting work, not seconds, keeps the result
+  /// the same on every machine.
   long long* work = nullptr;
   static constexpr double DefaultTheta = 0.25;
   double theta = DefaultTheta;
