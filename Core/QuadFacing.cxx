@@ -380,30 +380,201 @@ double quadWorstOf(const SurfaceLocator& surface, const QuadMesh& mesh, int i)
   return std::min(quadFacing(surface, mesh, i), quadScaledJacobian(mesh.V, mesh.Q, i));
 }
 
-double quadFacing(const SurfaceLocator& surface, const QuadMesh& mesh, int i)
+namespace
+{
+/// Rounds of liftOffOtherComponents: the second lifts what the first left below its sheet.
+constexpr int LiftRounds = 2;
+/// The facing (cosine) at most of another component's sheet that a quad may be lifted off: one
+/// facing back, as a hollow part's other wall does (-1); not one that crosses the quad's sheet, as
+/// a teapot's handle does its body (a quad there at -0.02, which the repairs turn).
+constexpr double OppositeSheet = -0.5;
+
+/// A quad's centre, unit normal (zero for a quad of zero area) and mean edge.
+struct QuadFrame
 {
   Eigen::Vector3d centre = Eigen::Vector3d::Zero();
+  Eigen::Vector3d normal = Eigen::Vector3d::Zero();
+  double edge = 0.0;
+};
+
+QuadFrame frameOf(const QuadMesh& mesh, int i)
+{
+  QuadFrame q;
   for (int k = 0; k < 4; ++k)
   {
-    centre += corner(mesh, i, k) / 4.0;
+    q.centre += corner(mesh, i, k) / 4.0;
+    q.edge += (corner(mesh, i, k) - corner(mesh, i, (k + 1) % 4)).norm() / 4.0;
   }
-  Eigen::Vector3d n = quadAreaVector(mesh.V, mesh.Q, i);
-  double edges = 0.0;
+  const Eigen::Vector3d n = quadAreaVector(mesh.V, mesh.Q, i);
+  if (n.norm() > 0)
+  {
+    q.normal = n.normalized();
+  }
+  return q;
+}
+
+/// The triangle corner k of quad i lies in, or -1.
+int cornerTriangle(const QuadMesh& mesh, int i, int k)
+{
+  const int v = mesh.Q(i, k);
+  return v < static_cast<int>(mesh.vertexTriangle.size()) ? mesh.vertexTriangle[v] : -1;
+}
+
+/// Whether the triangles `nearest` (to quad i's centre) all lie on components that none of the
+/// quad's corners lies on; false where the surface's triangles are not labelled.
+bool nearerAnotherComponent(
+  const SurfaceLocator& surface, const QuadMesh& mesh, int i, const std::vector<int>& nearest)
+{
+  if (nearest.empty() || surface.component(nearest.front()) < 0)
+  {
+    return false;
+  }
+  for (const int t : nearest)
+  {
+    for (int k = 0; k < 4; ++k)
+    {
+      const int own = cornerTriangle(mesh, i, k);
+      if (own >= 0 && surface.component(own) == surface.component(t))
+      {
+        return false;
+      }
+    }
+  }
+  return true;
+}
+
+/// The facing of a quad against the triangles its corners lie in: the smallest cosine (1 when
+/// no corner has a triangle).
+double facingOwnTriangles(
+  const SurfaceLocator& surface, const QuadMesh& mesh, int i, const Eigen::Vector3d& normal)
+{
+  double facing = 1.0;
   for (int k = 0; k < 4; ++k)
   {
-    edges += (corner(mesh, i, k) - corner(mesh, i, (k + 1) % 4)).norm() / 4.0;
+    const int t = cornerTriangle(mesh, i, k);
+    if (t >= 0)
+    {
+      facing = std::min(facing, normal.dot(surface.normal(t)));
+    }
   }
-  if (!(n.norm() > 0))
+  return facing;
+}
+
+/// How far a quad's centre lies below its own sheet: half its mean depth below its corners'
+/// tangent planes (on a sphere the sheet under the centre lies half as deep as the centre); 0
+/// where no corner has a triangle or the centre lies above them.
+double depthBelowOwnSheet(
+  const SurfaceLocator& surface, const QuadMesh& mesh, int i, const QuadFrame& q)
+{
+  double depth = 0.0;
+  int corners = 0;
+  for (int k = 0; k < 4; ++k)
+  {
+    const int t = cornerTriangle(mesh, i, k);
+    if (t >= 0)
+    {
+      depth += (corner(mesh, i, k) - q.centre).dot(surface.normal(t));
+      ++corners;
+    }
+  }
+  return corners > 0 ? std::max(0.0, 0.5 * depth / corners) : 0.0;
+}
+
+/// quadFacing's measure against the surface closest to the centre (over every component), and
+/// whether the quad is one liftOffOtherComponents lifts: that surface faces back at it (at most
+/// OppositeSheet) and lies on other components than its corners, while the quad faces as its
+/// corners' triangles do, its centre lies below them, and lifted onto its own sheet along the
+/// quad's normal it faces the surface closest to it there (the walls of a hollow part closer than
+/// the quad bulges). Elsewhere (components that cross, as a teapot's spout and body) the quad is
+/// measured as closest, for the repairs to move its corners.
+std::pair<double, bool> facingClosest(
+  const SurfaceLocator& surface, const QuadMesh& mesh, int i, const QuadFrame& q)
+{
+  const std::vector<int> nearest = surface.nearlyClosest(q.centre, 1e-3 * q.edge);
+  double facing = 1.0;
+  for (const int t : nearest)
+  {
+    facing = std::min(facing, q.normal.dot(surface.normal(t)));
+  }
+  if (!(facing <= OppositeSheet) || !nearerAnotherComponent(surface, mesh, i, nearest) ||
+    facingOwnTriangles(surface, mesh, i, q.normal) <= 0)
+  {
+    return { facing, false };
+  }
+  const double depth = depthBelowOwnSheet(surface, mesh, i, q);
+  if (!(depth > 0))
+  {
+    return { facing, false };
+  }
+  // the centre lifted onto its own sheet faces the surface closest to it there
+  const Eigen::Vector3d lifted = q.centre + depth * q.normal;
+  for (const int t : surface.nearlyClosest(lifted, 1e-3 * q.edge))
+  {
+    if (!(q.normal.dot(surface.normal(t)) > 0))
+    {
+      return { facing, false };
+    }
+  }
+  return { facing, true };
+}
+}
+
+double quadFacing(const SurfaceLocator& surface, const QuadMesh& mesh, int i)
+{
+  const QuadFrame q = frameOf(mesh, i);
+  if (!(q.normal.squaredNorm() > 0))
   {
     return -1.0;
   }
-  n.normalize();
-  double facing = 1.0;
-  for (const int t : surface.nearlyClosest(centre, 1e-3 * edges))
+  const auto [facing, liftable] = facingClosest(surface, mesh, i, q);
+  return liftable ? facingOwnTriangles(surface, mesh, i, q.normal) : facing;
+}
+
+SheetLift liftOffOtherComponents(const SurfaceLocator& surface, QuadMesh& mesh)
+{
+  SheetLift result;
+  const int nQ = static_cast<int>(mesh.Q.rows());
+  std::vector<char> moved(static_cast<std::size_t>(mesh.V.rows()), 0);
+  auto liftable = [&](int i, const QuadFrame& q) {
+    return q.normal.squaredNorm() > 0 && facingClosest(surface, mesh, i, q).second;
+  };
+  for (int round = 0; round < LiftRounds; ++round)
   {
-    facing = std::min(facing, n.dot(surface.normal(t)));
+    std::vector<double> lift(moved.size(), 0.0);
+    bool any = false;
+    for (int i = 0; i < nQ; ++i)
+    {
+      const QuadFrame q = frameOf(mesh, i);
+      if (liftable(i, q))
+      {
+        const double depth = depthBelowOwnSheet(surface, mesh, i, q);
+        for (int k = 0; k < 4; ++k)
+        {
+          lift[mesh.Q(i, k)] = std::max(lift[mesh.Q(i, k)], depth);
+        }
+        any = true;
+      }
+    }
+    if (!any)
+    {
+      break;
+    }
+    for (int v = 0; v < static_cast<int>(lift.size()); ++v)
+    {
+      const int t = v < static_cast<int>(mesh.vertexTriangle.size()) ? mesh.vertexTriangle[v] : -1;
+      if (lift[v] > 0 && t >= 0)
+      {
+        mesh.V.row(v) += lift[v] * surface.normal(t).transpose();
+        moved[v] = 1;
+      }
+    }
   }
-  return facing;
+  for (int i = 0; i < nQ; ++i)
+  {
+    result.remaining += liftable(i, frameOf(mesh, i));
+  }
+  result.liftedVertices = static_cast<int>(std::count(moved.begin(), moved.end(), 1));
+  return result;
 }
 
 std::vector<int> turnedQuads(const SurfaceLocator& surface, const QuadMesh& mesh)

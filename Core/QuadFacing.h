@@ -19,9 +19,33 @@ namespace quadcover
  * products about its centre) and the normal of the surface triangle closest to its centre, over
  * the whole surface (the smallest over the triangles within a thousandth of the quad's mean edge
  * of the closest distance, so that a tie above a crease or where components cross is not left to
- * chance). In [-1, 1]; -1 for a quad of zero area.
+ * chance). In [-1, 1]; -1 for a quad of zero area. Where those triangles face back at the quad
+ * (a cosine of -0.5 or less), lie on other components than its corners' triangles
+ * (mesh.vertexTriangle; the locator's triangles labelled, SurfaceLocator::setComponents), while the
+ * quad faces as its corners' triangles do, its centre lies below them and, lifted onto its own
+ * sheet, faces the surface closest to it there, the quad is measured against its corners' triangles
+ * instead: two sheets closer than the quad bulges (the walls of a hollow part, 1% of its size
+ * apart, at 1,000 quads), which no move of its corners on the surface mends; liftOffOtherComponents
+ * does. Components that cross (a teapot's spout in its body) are measured as closest.
  */
 double quadFacing(const SurfaceLocator& surface, const QuadMesh& mesh, int i);
+
+/// What liftOffOtherComponents did.
+struct SheetLift
+{
+  int liftedVertices = 0; ///< quad vertices moved off the surface
+  int remaining = 0;      ///< quads it would still lift (they face against the closest surface)
+};
+
+/**
+ * The corners of the quads whose centre lies nearer another component's surface, facing against
+ * it, than their own (quadFacing's exception) lifted off their own triangles along those
+ * triangles' normals, each by the most its quads' centres lie below their own sheet (half their
+ * depth below their corners' tangent planes), so that the centres come onto it (two rounds). The
+ * vertices leave the surface by about a quad's bulge over it (its sagitta); elsewhere nothing
+ * moves.
+ */
+SheetLift liftOffOtherComponents(const SurfaceLocator& surface, QuadMesh& mesh);
 
 /// The smaller of quadFacing and quadScaledJacobian: at most 0 for a quad facing against the
 /// surface or with a corner inside out (what repairFacing repairs).

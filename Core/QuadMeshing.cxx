@@ -119,7 +119,8 @@ QuadMeshResult buildQuadMesh(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& 
   {
     r.invertedExtracted = countInvertedQuads(r.mesh.V, r.mesh.Q);
   }
-  const SurfaceLocator surface(V, F);
+  SurfaceLocator surface(V, F);
+  surface.setComponents(topo.faceComponent);
   QuadFacingMemo facings(surface);
   r.turnedExtracted = static_cast<int>(facings.turned(r.mesh).size());
   if (options.repairInvertedQuads && r.turnedExtracted > 0)
@@ -176,7 +177,13 @@ QuadMeshResult buildQuadMesh(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& 
   // triangles: 21 quads and one more at a corner, at 1,000, 3,000 and 6,500 quads)
   constexpr int FragmentQuads = 2;
   r.fragmentQuads = dropPinchedFragments(r.mesh, topo.faceComponent, FragmentQuads);
-  r.turnedQuads = static_cast<int>(facings.turned(r.mesh).size());
+  // the quads whose centre lies nearer another component's sheet, the last move: the
+  // relaxation's projections would put their corners back onto the surface (one more search a
+  // quad, so only where there are other components)
+  const SheetLift lift =
+    topo.numComponents() > 1 ? liftOffOtherComponents(surface, r.mesh) : SheetLift();
+  r.liftedVertices = lift.liftedVertices;
+  r.turnedQuads = static_cast<int>(facings.turned(r.mesh).size()) + lift.remaining;
   r.splitVertices = splitPinchedVertices(r.mesh);
   r.quality = measureQuads(r.mesh.V, r.mesh.Q);
   for (Eigen::Index i = 0; i < r.quality.scaledJacobian.size(); ++i)

@@ -64,6 +64,7 @@ struct QuadMeshResult
   int fragmentQuads = 0;     ///< quads dropPinchedFragments removed
   int snappedVertices = 0;   ///< vertices snapToCreases moved onto a sharp edge, and
                              ///< straightenCreaseSteps beside one
+  int liftedVertices = 0;    ///< vertices liftOffOtherComponents moved off the surface
   int droppedCells() const
   {
     return mesh.cellsOffSurface + mesh.cellsDegenerate + mesh.cellsConflicting;
@@ -76,8 +77,9 @@ struct QuadMeshResult
  * QuadRelaxOptions::unfold for the quads still inside out (kept when fewer stay so and none more
  * faces against the surface), relaxQuads with options.relaxationIterations sweeps
  * (QuadRelaxOptions::holdAcrossBends; the corners of a quad it made face against the surface or
- * turn inside out are put back), dropPinchedFragments (of at most 2 quads), splitPinchedVertices,
- * then measureQuads.
+ * turn inside out are put back), dropPinchedFragments (of at most 2 quads),
+ * liftOffOtherComponents, splitPinchedVertices, then measureQuads. The quads' facing is measured
+ * by quadFacing with the surface's triangles labelled by their components.
  * @throws std::invalid_argument as extractQuads does
  */
 QuadMeshResult buildQuadMesh(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F,

@@ -47,6 +47,11 @@ public:
   /// (a point above a crease, or where two components cross), in index order.
   std::vector<int> nearlyClosest(const Eigen::Vector3d& p, double slack) const;
 
+  /// Labels the triangles with their components (#F, MeshTopology::faceComponent), for
+  /// component(); without labels every triangle is in component -1.
+  void setComponents(const Eigen::VectorXi& faceComponent) { components_ = faceComponent; }
+  /// The component of triangle t (-1 when the triangles are not labelled).
+  int component(int t) const { return components_.size() > 0 ? components_[t] : -1; }
   /// The unit normal of triangle t (zero for a triangle of zero area).
   Eigen::Vector3d normal(int t) const { return normals_.row(t).transpose(); }
 
@@ -89,6 +94,7 @@ private:
   Eigen::Vector3d origin_ = Eigen::Vector3d::Zero();
   double cell_ = 1.0;
   Eigen::Vector3i size_ = Eigen::Vector3i::Ones();
+  Eigen::VectorXi components_; ///< #F, or empty: see setComponents
   std::vector<int> offsets_;   ///< per cell + 1: where its triangles start in triangles_
   std::vector<int> triangles_; ///< the triangles of each cell, one cell after the other
 };

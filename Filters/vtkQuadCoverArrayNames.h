@@ -209,6 +209,9 @@ constexpr const char* SplitQuadVertices = "SplitQuadVertices";
 constexpr const char* FragmentQuads = "FragmentQuads";
 /// field, 1 x int: quad vertices moved onto a sharp edge of the input (SnapToCreases).
 constexpr const char* SnappedVertices = "SnappedVertices";
+/// field, 1 x int: quad vertices lifted off the input, where a quad's centre lay nearer another
+/// component's surface than its own (two sheets closer than the quad bulges).
+constexpr const char* LiftedVertices = "LiftedVertices";
 }
 
 #endif

@@ -124,6 +124,7 @@ void AddFigures(vtkFieldData* fd, const quadcover::QuadMeshResult& r)
   AddField<vtkIntArray>(fd, names::SplitQuadVertices, { double(r.splitVertices) });
   AddField<vtkIntArray>(fd, names::FragmentQuads, { double(r.fragmentQuads) });
   AddField<vtkIntArray>(fd, names::SnappedVertices, { double(r.snappedVertices) });
+  AddField<vtkIntArray>(fd, names::LiftedVertices, { double(r.liftedVertices) });
 }
 
 /// Field data HausdorffDistance: two-sided, surface to quads, quads to surface, in % of the

@@ -27,8 +27,9 @@
  * RepairInvertedQuads), DroppedCells, FilledHoles, TurnedQuads (before and after it) and
  * SplitQuadVertices (copies of a vertex where separate fans of quads touched: the output is
  * manifold at its vertices), FragmentQuads (quads removed that hung off their component's
- * quads by a corner) and SnappedVertices (quad vertices moved onto creases, or beside one where
- * a quad lay folded across it; SnapToCreases).
+ * quads by a corner), SnappedVertices (quad vertices moved onto creases, or beside one where
+ * a quad lay folded across it; SnapToCreases) and LiftedVertices (quad vertices lifted off the
+ * input where a quad's centre lay nearer another component's surface than its own).
  * @sa vtkQuadCoverSolver
  */
 #ifndef vtkQuadExtractor_h

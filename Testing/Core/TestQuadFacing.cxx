@@ -4,6 +4,7 @@
 #include "QuadExtraction.h"
 #include "QuadFacing.h"
 #include "QuadMeshAdjacency.h"
+#include "QuadMeshing.h"
 #include "QuadQuality.h"
 #include "ScaledJacobian.h"
 #include "SurfaceLocator.h"
@@ -28,6 +29,17 @@ Surface joined(const Surface& a, const Surface& b, const Eigen::RowVector3d& off
   s.F.resize(a.F.rows() + b.F.rows(), 3);
   s.F << a.F, b.F.array() + static_cast<int>(a.V.rows());
   return s;
+}
+
+/// A hollow ball: the unit icosphere and, `gap` inside it, the same turned inward (the walls of a
+/// hollow part, two components).
+Surface hollowBall(double gap)
+{
+  const Surface outer = testSurface("sphere");
+  Surface inner = outer;
+  inner.V *= 1.0 - gap;
+  inner.F.col(1).swap(inner.F.col(2));
+  return joined(outer, inner, Eigen::RowVector3d::Zero());
 }
 
 double bruteForceDistance(const Surface& s, const Eigen::Vector3d& p)
@@ -199,6 +211,37 @@ TEST(QuadFacing, SlidesABoundaryVertexBackAlongTheBoundary)
       EXPECT_NEAR(std::abs(q.V(u, 2)), 1.0, 1e-12) << "vertex " << u;
     }
   }
+}
+
+TEST(QuadFacing, LiftsQuadsWhoseCentreLiesNearerAnotherComponent)
+{
+  // 400 quads a sphere: a quad's centre lies about 0.008 inside the outer sphere, nearer the inner
+  // one, 0.005 inside it and facing the other way; as extracted, most of the outer sphere's quads
+  // face against the surface closest to their centre
+  const Chain c = runChain(hollowBall(0.005), 800);
+  const QuadMesh extracted = extractQuads(c.s.V, c.s.F, c.topo, c.map.cornerUV);
+  ASSERT_GT(turnedQuads(c.s.V, c.s.F, extracted).size(), 100u) << "the test needs such quads";
+  const QuadMeshResult r =
+    buildQuadMesh(c.s.V, c.s.F, c.topo, c.map.cornerUV, QuadMeshOptions(), Progress());
+  EXPECT_GT(r.liftedVertices, 100);
+  EXPECT_EQ(r.turnedQuads, 0);
+  EXPECT_EQ(r.invertedFinal, 0);
+  // over the whole surface, as an evaluator that knows no components measures them
+  EXPECT_TRUE(turnedQuads(c.s.V, c.s.F, r.mesh).empty());
+  // the quads keep their shape, and the lifted vertices stay within a tenth of an edge
+  EXPECT_GT(r.quality.scaledJacobian.minCoeff(), 0.5);
+  const double edge = edgeLengthForQuadCount(c.s.V, c.s.F, 800);
+  const SurfaceLocator locator(c.s.V, c.s.F);
+  for (int v = 0; v < r.mesh.V.rows(); ++v)
+  {
+    EXPECT_LT(locator.closest(r.mesh.V.row(v).transpose()).distance, 0.1 * edge) << v;
+  }
+  // walls far apart: nothing is lifted, nothing faces against the surface
+  const Chain far = runChain(hollowBall(0.5), 800);
+  const QuadMeshResult apart =
+    buildQuadMesh(far.s.V, far.s.F, far.topo, far.map.cornerUV, QuadMeshOptions(), Progress());
+  EXPECT_EQ(apart.liftedVertices, 0);
+  EXPECT_EQ(apart.turnedQuads, 0);
 }
 
 TEST(QuadMeshAdjacency, SplitsPinchedVerticesIntoTheirFans)
