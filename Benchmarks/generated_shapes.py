@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Nine generated surfaces for measuring robustness on shapes outside the shared set.
+"""Sixteen generated surfaces for measuring robustness on shapes outside the shared set.
 
     /usr/bin/python3 Benchmarks/generated_shapes.py OUTDIR
 
@@ -7,7 +7,11 @@ Writes OUTDIR/NAME.obj for: vase (a surface of revolution with a thin neck), spi
 spiral tube narrowing to a point, open at its wide end), superellipsoid and supertoroid
 (exponents 0.25: rounded boxes), gear (20 teeth around a hole, extruded), thinring (an annulus
 0.02 thick), urchin (a sphere with six spikes), wavysheet (an open wavy square) and helixtube (a
-long capped helical tube of radius 0.05). `Benchmarks/count_sweep.py ... --meshes
+long capped helical tube of radius 0.05); since 2026-12-06 (6) also gyroid (a gyroid cut by a
+ball, genus 13) and perforated (a slab with 16 round holes), both by marching cubes, blobs (seven
+metaballs), noisysphere (1% radial noise), nested (a sphere with another of half its radius
+inside, turned inward), thinshell (the same 1% apart: the walls of a hollow ball) and
+longtriangles (a closed cylinder of 300 sides and one ring). `Benchmarks/count_sweep.py ... --meshes
 OUTDIR/vase.obj,...` measures them (Benchmarks/README.md).
 """
 import os
@@ -238,6 +242,90 @@ def helix_tube():
     return from_polydata(tube.GetOutput())
 
 
+def implicit(f, bounds, n):
+    """The zero level set of f(X, Y, Z) on an n^3 grid over bounds ((lo, hi) per axis): a
+    triangulation with the slivers that marching cubes leaves."""
+    from vtk.util.numpy_support import numpy_to_vtk
+
+    image = vtk.vtkImageData()
+    image.SetDimensions(n, n, n)
+    image.SetOrigin(*(lo for lo, _ in bounds))
+    image.SetSpacing(*((hi - lo) / (n - 1) for lo, hi in bounds))
+    axes = [np.linspace(lo, hi, n) for lo, hi in bounds]
+    Z, Y, X = np.meshgrid(axes[2], axes[1], axes[0], indexing="ij")
+    values = numpy_to_vtk(f(X, Y, Z).ravel().astype(np.float64), deep=1)
+    values.SetName("f")
+    image.GetPointData().SetScalars(values)
+    contour = vtk.vtkFlyingEdges3D()
+    contour.SetInputData(image)
+    contour.SetValue(0, 0.0)
+    contour.ComputeNormalsOff()
+    contour.Update()
+    return from_polydata(contour.GetOutput())
+
+
+def gyroid():
+    """A gyroid cut by a ball: genus 13, closed."""
+    return implicit(lambda X, Y, Z: np.maximum(
+        np.sin(X) * np.cos(Y) + np.sin(Y) * np.cos(Z) + np.sin(Z) * np.cos(X) - 0.3,
+        X ** 2 + Y ** 2 + Z ** 2 - 36.0), [(-6.5, 6.5)] * 3, 120)
+
+
+def perforated():
+    """A slab 0.6 thick with a 4 x 4 grid of round holes: genus 16."""
+    def f(X, Y, Z):
+        slab = np.maximum(np.abs(Z) - 0.3, np.maximum(np.abs(X) - 4.0, np.abs(Y) - 4.0))
+        holes = np.full(X.shape, np.inf)
+        for cx in (-3, -1, 1, 3):
+            for cy in (-3, -1, 1, 3):
+                holes = np.minimum(holes, np.hypot(X - cx, Y - cy) - 0.6)
+        return np.maximum(slab, -holes)
+    return implicit(f, [(-4.5, 4.5), (-4.5, 4.5), (-1, 1)], 140)
+
+
+def blobs():
+    """Seven metaballs of radii 0.4 to 1.4 melted into one surface."""
+    rng = np.random.default_rng(3)
+    centres, radii = rng.uniform(-2, 2, (7, 3)), rng.uniform(0.4, 1.4, 7)
+
+    def f(X, Y, Z):
+        s = np.zeros(X.shape)
+        for c, r in zip(centres, radii):
+            s += r ** 2 / ((X - c[0]) ** 2 + (Y - c[1]) ** 2 + (Z - c[2]) ** 2 + 1e-9)
+        return 1.0 - s
+    return implicit(f, [(-4, 4)] * 3, 110)
+
+
+def sphere_source():
+    s = vtk.vtkSphereSource()
+    s.SetThetaResolution(120)
+    s.SetPhiResolution(60)
+    s.Update()
+    return from_polydata(s.GetOutput())
+
+
+def noisy_sphere():
+    """A sphere with 1% of radial noise at every point, as a scan."""
+    V, F = sphere_source()
+    return V * (1 + 0.01 * np.random.default_rng(3).standard_normal((len(V), 1))), F
+
+
+def two_spheres(inner_scale):
+    """A sphere and, inside it, the same scaled and turned inward: two components."""
+    V, F = sphere_source()
+    return np.vstack([V, inner_scale * V]), np.vstack([F, F[:, ::-1] + len(V)])
+
+
+def long_triangles():
+    """A closed cylinder of 300 sides and one ring: triangles 300 times longer than wide."""
+    c = vtk.vtkCylinderSource()
+    c.SetResolution(300)
+    c.SetHeight(3.0)
+    c.CappingOn()
+    c.Update()
+    return from_polydata(c.GetOutput())
+
+
 SHAPES = {
     "vase": vase,
     "spiral": spiral,
@@ -248,6 +336,13 @@ SHAPES = {
     "urchin": urchin,
     "wavysheet": wavy_sheet,
     "helixtube": helix_tube,
+    "gyroid": gyroid,
+    "perforated": perforated,
+    "blobs": blobs,
+    "noisysphere": noisy_sphere,
+    "nested": lambda: two_spheres(0.5),
+    "thinshell": lambda: two_spheres(0.99),
+    "longtriangles": long_triangles,
 }
 
 
