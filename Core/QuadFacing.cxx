@@ -106,12 +106,15 @@ public:
       return false;
     }
     const Eigen::Vector3d old = mesh_.V.row(v);
+    const int oldTriangle = mesh_.vertexTriangle[v];
     double best = now.worst + 1e-3;
     const Candidate* chosen = nullptr;
     const std::vector<Candidate> candidates = candidatesOf(v);
     for (const Candidate& c : candidates)
     {
+      // scored on its own triangle, which quadFacing reads where another component is nearer
       mesh_.V.row(v) = c.point.transpose();
+      mesh_.vertexTriangle[v] = c.triangle;
       if (vertexShape(v) <= best)
       {
         continue; // the score is at most the shape's
@@ -124,6 +127,7 @@ public:
       }
     }
     mesh_.V.row(v) = old.transpose();
+    mesh_.vertexTriangle[v] = oldTriangle;
     if (!chosen)
     {
       return false;
@@ -382,8 +386,6 @@ double quadWorstOf(const SurfaceLocator& surface, const QuadMesh& mesh, int i)
 
 namespace
 {
-/// Rounds of liftOffOtherComponents: the second lifts what the first left below its sheet.
-constexpr int LiftRounds = 2;
 /// The facing (cosine) at most of another component's sheet that a quad may be lifted off: one
 /// facing back, as a hollow part's other wall does (-1); not one that crosses the quad's sheet, as
 /// a teapot's handle does its body (a quad there at -0.02, which the repairs turn).
@@ -413,11 +415,12 @@ QuadFrame frameOf(const QuadMesh& mesh, int i)
   return q;
 }
 
-/// The triangle corner k of quad i lies in, or -1.
-int cornerTriangle(const QuadMesh& mesh, int i, int k)
+/// The triangle (of `surface`) corner k of quad i lies in, or -1.
+int cornerTriangle(const SurfaceLocator& surface, const QuadMesh& mesh, int i, int k)
 {
   const int v = mesh.Q(i, k);
-  return v < static_cast<int>(mesh.vertexTriangle.size()) ? mesh.vertexTriangle[v] : -1;
+  const int t = v < static_cast<int>(mesh.vertexTriangle.size()) ? mesh.vertexTriangle[v] : -1;
+  return t < surface.numTriangles() ? t : -1;
 }
 
 /// Whether the triangles `nearest` (to quad i's centre) all lie on components that none of the
@@ -433,7 +436,7 @@ bool nearerAnotherComponent(
   {
     for (int k = 0; k < 4; ++k)
     {
-      const int own = cornerTriangle(mesh, i, k);
+      const int own = cornerTriangle(surface, mesh, i, k);
       if (own >= 0 && surface.component(own) == surface.component(t))
       {
         return false;
@@ -451,7 +454,7 @@ double facingOwnTriangles(
   double facing = 1.0;
   for (int k = 0; k < 4; ++k)
   {
-    const int t = cornerTriangle(mesh, i, k);
+    const int t = cornerTriangle(surface, mesh, i, k);
     if (t >= 0)
     {
       facing = std::min(facing, normal.dot(surface.normal(t)));
@@ -470,7 +473,7 @@ double depthBelowOwnSheet(
   int corners = 0;
   for (int k = 0; k < 4; ++k)
   {
-    const int t = cornerTriangle(mesh, i, k);
+    const int t = cornerTriangle(surface, mesh, i, k);
     if (t >= 0)
     {
       depth += (corner(mesh, i, k) - q.centre).dot(surface.normal(t));
@@ -530,50 +533,43 @@ double quadFacing(const SurfaceLocator& surface, const QuadMesh& mesh, int i)
   return liftable ? facingOwnTriangles(surface, mesh, i, q.normal) : facing;
 }
 
+std::vector<int> quadsToLift(const SurfaceLocator& surface, const QuadMesh& mesh)
+{
+  std::vector<int> list;
+  for (int i = 0; i < static_cast<int>(mesh.Q.rows()); ++i)
+  {
+    const QuadFrame q = frameOf(mesh, i);
+    if (q.normal.squaredNorm() > 0 && facingClosest(surface, mesh, i, q).second)
+    {
+      list.push_back(i);
+    }
+  }
+  return list;
+}
+
 SheetLift liftOffOtherComponents(const SurfaceLocator& surface, QuadMesh& mesh)
 {
+  std::vector<double> lift(static_cast<std::size_t>(mesh.V.rows()), 0.0);
+  for (const int i : quadsToLift(surface, mesh))
+  {
+    const double depth = depthBelowOwnSheet(surface, mesh, i, frameOf(mesh, i));
+    for (int k = 0; k < 4; ++k)
+    {
+      lift[mesh.Q(i, k)] = std::max(lift[mesh.Q(i, k)], depth);
+    }
+  }
   SheetLift result;
-  const int nQ = static_cast<int>(mesh.Q.rows());
-  std::vector<char> moved(static_cast<std::size_t>(mesh.V.rows()), 0);
-  auto liftable = [&](int i, const QuadFrame& q) {
-    return q.normal.squaredNorm() > 0 && facingClosest(surface, mesh, i, q).second;
-  };
-  for (int round = 0; round < LiftRounds; ++round)
+  for (int v = 0; v < static_cast<int>(lift.size()); ++v)
   {
-    std::vector<double> lift(moved.size(), 0.0);
-    bool any = false;
-    for (int i = 0; i < nQ; ++i)
+    const int t = v < static_cast<int>(mesh.vertexTriangle.size()) ? mesh.vertexTriangle[v] : -1;
+    if (lift[v] > 0 && t >= 0 && t < surface.numTriangles())
     {
-      const QuadFrame q = frameOf(mesh, i);
-      if (liftable(i, q))
-      {
-        const double depth = depthBelowOwnSheet(surface, mesh, i, q);
-        for (int k = 0; k < 4; ++k)
-        {
-          lift[mesh.Q(i, k)] = std::max(lift[mesh.Q(i, k)], depth);
-        }
-        any = true;
-      }
-    }
-    if (!any)
-    {
-      break;
-    }
-    for (int v = 0; v < static_cast<int>(lift.size()); ++v)
-    {
-      const int t = v < static_cast<int>(mesh.vertexTriangle.size()) ? mesh.vertexTriangle[v] : -1;
-      if (lift[v] > 0 && t >= 0)
-      {
-        mesh.V.row(v) += lift[v] * surface.normal(t).transpose();
-        moved[v] = 1;
-      }
+      mesh.V.row(v) += lift[v] * surface.normal(t).transpose();
+      mesh.vertexPoint[v] = -1; // off the input: on none of its points (its triangle kept)
+      ++result.liftedVertices;
     }
   }
-  for (int i = 0; i < nQ; ++i)
-  {
-    result.remaining += liftable(i, frameOf(mesh, i));
-  }
-  result.liftedVertices = static_cast<int>(std::count(moved.begin(), moved.end(), 1));
+  result.remaining = static_cast<int>(quadsToLift(surface, mesh).size());
   return result;
 }
 

@@ -37,13 +37,17 @@ struct SheetLift
   int remaining = 0;      ///< quads it would still lift (they face against the closest surface)
 };
 
+/// The quads quadFacing measures against their corners' triangles (its exception), in index
+/// order: those liftOffOtherComponents lifts; each faces against the triangle closest to its
+/// centre over the whole surface.
+std::vector<int> quadsToLift(const SurfaceLocator& surface, const QuadMesh& mesh);
+
 /**
- * The corners of the quads whose centre lies nearer another component's surface, facing against
- * it, than their own (quadFacing's exception) lifted off their own triangles along those
- * triangles' normals, each by the most its quads' centres lie below their own sheet (half their
- * depth below their corners' tangent planes), so that the centres come onto it (two rounds). The
- * vertices leave the surface by about a quad's bulge over it (its sagitta); elsewhere nothing
- * moves.
+ * The corners of quadsToLift lifted off their own triangles along those triangles' normals, each
+ * by the most its quads' centres lie below their own sheet (half their depth below their corners'
+ * tangent planes), so that the centres come onto it. The vertices leave the surface by about a
+ * quad's bulge over it (its sagitta; their vertexTriangle kept, vertexPoint -1); elsewhere
+ * nothing moves.
  */
 SheetLift liftOffOtherComponents(const SurfaceLocator& surface, QuadMesh& mesh);
 

@@ -13,7 +13,8 @@ struct QuadMesh
 {
   Eigen::MatrixX3d V;              ///< quad vertices, on the input surface
   Eigen::MatrixX4i Q;              ///< quads, counterclockwise seen from the surface's orientation
-  std::vector<int> vertexTriangle; ///< the input triangle each vertex lies in
+  std::vector<int> vertexTriangle; ///< the input triangle each vertex lies in (or was lifted off:
+                                   ///< liftOffOtherComponents)
   std::vector<int> vertexPoint;    ///< the input point a vertex sits on, or -1
   std::vector<int> quadTriangle;   ///< the input triangle holding each quad's centre
   // what could not become a quad (all 0 on a seamless, flip-free map)

@@ -122,8 +122,12 @@ QuadMeshResult buildQuadMesh(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& 
   SurfaceLocator surface(V, F);
   surface.setComponents(topo.faceComponent);
   QuadFacingMemo facings(surface);
-  r.turnedExtracted = static_cast<int>(facings.turned(r.mesh).size());
-  if (options.repairInvertedQuads && r.turnedExtracted > 0)
+  const std::size_t turned = facings.turned(r.mesh).size();
+  // as the evaluator counts them: with the quads measured by their own triangles (quadsToLift)
+  const bool components = topo.numComponents() > 1;
+  r.turnedExtracted =
+    static_cast<int>(turned + (components ? quadsToLift(surface, r.mesh).size() : 0));
+  if (options.repairInvertedQuads && turned > 0)
   {
     // quads facing against the surface (or turned inside out): their neighbourhoods relaxed
     auto bad = [&](const QuadMesh& m) {
@@ -180,8 +184,7 @@ QuadMeshResult buildQuadMesh(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& 
   // the quads whose centre lies nearer another component's sheet, the last move: the
   // relaxation's projections would put their corners back onto the surface (one more search a
   // quad, so only where there are other components)
-  const SheetLift lift =
-    topo.numComponents() > 1 ? liftOffOtherComponents(surface, r.mesh) : SheetLift();
+  const SheetLift lift = components ? liftOffOtherComponents(surface, r.mesh) : SheetLift();
   r.liftedVertices = lift.liftedVertices;
   r.turnedQuads = static_cast<int>(facings.turned(r.mesh).size()) + lift.remaining;
   r.splitVertices = splitPinchedVertices(r.mesh);

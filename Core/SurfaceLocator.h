@@ -6,6 +6,7 @@
 #include <Eigen/Core>
 
 #include <limits>
+#include <stdexcept>
 #include <vector>
 
 namespace quadcover
@@ -48,8 +49,16 @@ public:
   std::vector<int> nearlyClosest(const Eigen::Vector3d& p, double slack) const;
 
   /// Labels the triangles with their components (#F, MeshTopology::faceComponent), for
-  /// component(); without labels every triangle is in component -1.
-  void setComponents(const Eigen::VectorXi& faceComponent) { components_ = faceComponent; }
+  /// component(); without labels every triangle is in component -1. Throws
+  /// std::invalid_argument unless there is one label a triangle.
+  void setComponents(const Eigen::VectorXi& faceComponent)
+  {
+    if (faceComponent.size() != F_.rows())
+    {
+      throw std::invalid_argument("SurfaceLocator::setComponents: one label a triangle is needed");
+    }
+    components_ = faceComponent;
+  }
   /// The component of triangle t (-1 when the triangles are not labelled).
   int component(int t) const { return components_.size() > 0 ? components_[t] : -1; }
   /// The unit normal of triangle t (zero for a triangle of zero area).

@@ -242,6 +242,8 @@ TEST(QuadFacing, LiftsQuadsWhoseCentreLiesNearerAnotherComponent)
     buildQuadMesh(far.s.V, far.s.F, far.topo, far.map.cornerUV, QuadMeshOptions(), Progress());
   EXPECT_EQ(apart.liftedVertices, 0);
   EXPECT_EQ(apart.turnedQuads, 0);
+  // the figure as extracted counts the quads to lift, as the evaluator does
+  EXPECT_EQ(r.turnedExtracted, static_cast<int>(turnedQuads(c.s.V, c.s.F, extracted).size()));
 }
 
 TEST(QuadMeshAdjacency, SplitsPinchedVerticesIntoTheirFans)
