@@ -415,12 +415,17 @@ QuadFrame frameOf(const QuadMesh& mesh, int i)
   return q;
 }
 
+/// The triangle (of `surface`) vertex v lies in, or -1.
+int vertexTriangleOf(const SurfaceLocator& surface, const QuadMesh& mesh, int v)
+{
+  const int t = v < static_cast<int>(mesh.vertexTriangle.size()) ? mesh.vertexTriangle[v] : -1;
+  return t < surface.numTriangles() ? t : -1;
+}
+
 /// The triangle (of `surface`) corner k of quad i lies in, or -1.
 int cornerTriangle(const SurfaceLocator& surface, const QuadMesh& mesh, int i, int k)
 {
-  const int v = mesh.Q(i, k);
-  const int t = v < static_cast<int>(mesh.vertexTriangle.size()) ? mesh.vertexTriangle[v] : -1;
-  return t < surface.numTriangles() ? t : -1;
+  return vertexTriangleOf(surface, mesh, mesh.Q(i, k));
 }
 
 /// Whether the triangles `nearest` (to quad i's centre) all lie on components that none of the
@@ -533,13 +538,22 @@ double quadFacing(const SurfaceLocator& surface, const QuadMesh& mesh, int i)
   return liftable ? facingOwnTriangles(surface, mesh, i, q.normal) : facing;
 }
 
+namespace
+{
+/// Whether quad i is one liftOffOtherComponents lifts (facingClosest's flag).
+bool liftable(const SurfaceLocator& surface, const QuadMesh& mesh, int i)
+{
+  const QuadFrame q = frameOf(mesh, i);
+  return q.normal.squaredNorm() > 0 && facingClosest(surface, mesh, i, q).second;
+}
+}
+
 std::vector<int> quadsToLift(const SurfaceLocator& surface, const QuadMesh& mesh)
 {
   std::vector<int> list;
   for (int i = 0; i < static_cast<int>(mesh.Q.rows()); ++i)
   {
-    const QuadFrame q = frameOf(mesh, i);
-    if (q.normal.squaredNorm() > 0 && facingClosest(surface, mesh, i, q).second)
+    if (liftable(surface, mesh, i))
     {
       list.push_back(i);
     }
@@ -559,17 +573,26 @@ SheetLift liftOffOtherComponents(const SurfaceLocator& surface, QuadMesh& mesh)
     }
   }
   SheetLift result;
+  std::vector<char> moved(lift.size(), 0);
   for (int v = 0; v < static_cast<int>(lift.size()); ++v)
   {
-    const int t = v < static_cast<int>(mesh.vertexTriangle.size()) ? mesh.vertexTriangle[v] : -1;
-    if (lift[v] > 0 && t >= 0 && t < surface.numTriangles())
+    const int t = vertexTriangleOf(surface, mesh, v);
+    if (lift[v] > 0 && t >= 0)
     {
       mesh.V.row(v) += lift[v] * surface.normal(t).transpose();
       mesh.vertexPoint[v] = -1; // off the input: on none of its points (its triangle kept)
+      moved[v] = 1;
       ++result.liftedVertices;
     }
   }
-  result.remaining = static_cast<int>(quadsToLift(surface, mesh).size());
+  // whether a quad is to lift depends on its own corners only: only those with a corner moved
+  // can have changed
+  for (int i = 0; i < static_cast<int>(mesh.Q.rows()); ++i)
+  {
+    const bool touched =
+      moved[mesh.Q(i, 0)] || moved[mesh.Q(i, 1)] || moved[mesh.Q(i, 2)] || moved[mesh.Q(i, 3)];
+    result.remaining += touched && liftable(surface, mesh, i);
+  }
   return result;
 }
 
