@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Sixteen generated surfaces for measuring robustness on shapes outside the shared set.
+"""Twenty-four generated surfaces for measuring robustness on shapes outside the shared set.
 
     /usr/bin/python3 Benchmarks/generated_shapes.py OUTDIR
 
@@ -11,8 +11,14 @@ long capped helical tube of radius 0.05); since 2026-12-06 (6) also gyroid (a gy
 ball, genus 13) and perforated (a slab with 16 round holes), both by marching cubes, blobs (seven
 metaballs), noisysphere (1% radial noise), nested (a sphere with another of half its radius
 inside, turned inward), thinshell (the same 1% apart: the walls of a hollow ball) and
-longtriangles (a closed cylinder of 300 sides and one ring). `Benchmarks/count_sweep.py ... --meshes
-OUTDIR/vase.obj,...` measures them (Benchmarks/README.md).
+longtriangles (a closed cylinder of 300 sides and one ring); since 2026-12-06 (7) also holey (a
+sphere with 25 round holes cut out along its triangles: jagged boundaries, as a scan's), noisyblobs
+(blobs with noise of 0.3 edge lengths at every point), spindle (a torus whose tube passes through
+its axis: self-intersecting, nearly pinched there), crossing (two spheres through each other, two
+components), terrain (an open wavy heightfield), sawtooth (a flat disk whose boundary zigzags),
+cone (512 sides: its apex on 512 triangles, its cap one polygon) and mixedbox (a box whose top is
+a fine grid and whose other sides are a few long triangles). `Benchmarks/count_sweep.py ...
+--meshes OUTDIR/vase.obj,...` measures them (Benchmarks/README.md).
 """
 import os
 import sys
@@ -117,6 +123,28 @@ def super_shape(function):
     return parametric(function, 160, 160)
 
 
+def delaunay_inside(points, loops):
+    """The Delaunay triangulation of vtkPoints `points` in the plane z = 0 inside the polygons
+    `loops` (lists of point ids; a hole's loop clockwise)."""
+    cloud = vtk.vtkPolyData()
+    cloud.SetPoints(points)
+    polys = vtk.vtkCellArray()
+    for ids in loops:
+        polygon = vtk.vtkPolygon()
+        polygon.GetPointIds().SetNumberOfIds(len(ids))
+        for i, v in enumerate(ids):
+            polygon.GetPointIds().SetId(i, v)
+        polys.InsertNextCell(polygon)
+    bounds = vtk.vtkPolyData()
+    bounds.SetPoints(points)
+    bounds.SetPolys(polys)
+    delaunay = vtk.vtkDelaunay2D()
+    delaunay.SetInputData(cloud)
+    delaunay.SetSourceData(bounds)
+    delaunay.Update()
+    return delaunay.GetOutput()
+
+
 def gear():
     n = 20
     outline = []
@@ -135,23 +163,7 @@ def gear():
     points = vtk.vtkPoints()
     for x, y in outline + hole + inner:
         points.InsertNextPoint(x, y, 0)
-    cloud = vtk.vtkPolyData()
-    cloud.SetPoints(points)
-    polys = vtk.vtkCellArray()
-    for ids in (list(range(m)), [m + 39 - i for i in range(40)]):
-        polygon = vtk.vtkPolygon()
-        polygon.GetPointIds().SetNumberOfIds(len(ids))
-        for i, v in enumerate(ids):
-            polygon.GetPointIds().SetId(i, v)
-        polys.InsertNextCell(polygon)
-    bounds = vtk.vtkPolyData()
-    bounds.SetPoints(points)
-    bounds.SetPolys(polys)
-    delaunay = vtk.vtkDelaunay2D()
-    delaunay.SetInputData(cloud)
-    delaunay.SetSourceData(bounds)
-    delaunay.Update()
-    face = delaunay.GetOutput()
+    face = delaunay_inside(points, (list(range(m)), [m + 39 - i for i in range(40)]))
     Vf = vtk_to_numpy(face.GetPoints().GetData()).astype(float)
     Ff = vtk_to_numpy(face.GetPolys().GetData()).reshape(-1, 4)[:, 1:]
 
@@ -326,6 +338,117 @@ def long_triangles():
     return from_polydata(c.GetOutput())
 
 
+def holey():
+    """A sphere with 25 round holes cut out along its triangles (some overlapping): the jagged
+    boundaries of a scan's holes."""
+    s = vtk.vtkSphereSource()
+    s.SetThetaResolution(200)
+    s.SetPhiResolution(100)
+    s.Update()
+    V, F = from_polydata(s.GetOutput())
+    centres = np.random.default_rng(5).standard_normal((25, 3))
+    centres /= np.linalg.norm(centres, axis=1)[:, None]
+    mid = V[F].mean(axis=1)
+    mid /= np.linalg.norm(mid, axis=1)[:, None]
+    keep = np.ones(len(F), bool)
+    for k, c in enumerate(centres):
+        keep &= mid @ c < np.cos(0.08 + 0.04 * (k % 3))
+    F = F[keep]
+    used = np.unique(F)
+    renumber = -np.ones(len(V), int)
+    renumber[used] = np.arange(len(used))
+    return V[used], renumber[F]
+
+
+def noisy_blobs():
+    """The blobs with noise of 0.3 mean edge lengths at every point, as a rough scan."""
+    V, F = blobs()
+    edge = np.linalg.norm(V[F[:, 0]] - V[F[:, 1]], axis=1).mean()
+    return V + 0.3 * edge * np.random.default_rng(4).standard_normal(V.shape), F
+
+
+def spindle():
+    """A torus whose tube (radius 0.8) passes through its axis (ring radius 0.6): it intersects
+    itself, and its points nearly meet where the tube crosses the axis."""
+    torus = vtk.vtkParametricTorus()
+    torus.SetRingRadius(0.6)
+    torus.SetCrossSectionRadius(0.8)
+    return parametric(torus, 80, 40)
+
+
+def crossing():
+    """Two spheres of radius 0.5 whose centres lie 0.5 apart: two components through each other."""
+    V, F = sphere_source()
+    return np.vstack([V, V + [0.5, 0.0, 0.0]]), np.vstack([F, F + len(V)])
+
+
+def terrain():
+    """An open heightfield of five waves on a 120 x 120 grid."""
+    n = 120
+    x, y = np.meshgrid(np.linspace(0, 1, n), np.linspace(0, 1, n))
+    rng = np.random.default_rng(7)
+    z = np.zeros_like(x)
+    for k in range(1, 6):
+        a, b, phase = rng.uniform(-1, 1, 3) * 3 * 2 ** k
+        z += 0.15 / 2 ** k * np.sin(a * x + b * y + phase)
+    V = np.c_[x.ravel(), y.ravel(), z.ravel()]
+    v = (np.arange(n - 1)[:, None] * n + np.arange(n - 1)[None, :]).ravel()
+    F = np.vstack([np.c_[v, v + 1, v + n + 1], np.c_[v, v + n + 1, v + n]])
+    return V, F
+
+
+def sawtooth():
+    """A flat disk whose boundary zigzags between radii 1 and 0.8 (60 teeth), Delaunay
+    triangulated over 2,000 random points."""
+    m = 120
+    t = np.linspace(0, 2 * np.pi, m, endpoint=False)
+    r = np.where(np.arange(m) % 2 == 0, 1.0, 0.8)
+    points = vtk.vtkPoints()
+    for ti, ri in zip(t, r):
+        points.InsertNextPoint(ri * np.cos(ti), ri * np.sin(ti), 0.0)
+    for p in np.random.default_rng(2).uniform(-1, 1, (2000, 2)):
+        if np.hypot(*p) < 0.78:
+            points.InsertNextPoint(p[0], p[1], 0.0)
+    return from_polydata(delaunay_inside(points, [list(range(m))]))
+
+
+def cone():
+    """A closed cone of 512 sides: its apex on 512 triangles, its cap one polygon triangulated."""
+    c = vtk.vtkConeSource()
+    c.SetResolution(512)
+    c.SetHeight(1.5)
+    c.SetRadius(0.6)
+    c.CappingOn()
+    c.Update()
+    return from_polydata(c.GetOutput())
+
+
+def mixed_box():
+    """A unit box whose top is a 100 x 100 grid and whose four sides are fans of long triangles
+    from the top's edges down to the bottom's corners (the bottom two triangles)."""
+    n = 100
+    top = lambda i, j: i * (n + 1) + j
+    V = [[i / n, j / n, 1.0] for i in range(n + 1) for j in range(n + 1)]
+    F = []
+    for i in range(n):
+        for j in range(n):
+            F += [[top(i, j), top(i + 1, j), top(i + 1, j + 1)],
+                  [top(i, j), top(i + 1, j + 1), top(i, j + 1)]]
+    b = len(V)
+    V += [[0, 0, 0], [1, 0, 0], [1, 1, 0], [0, 1, 0]]
+    F += [[b, b + 2, b + 1], [b, b + 3, b + 2]]
+
+    def side(edge, b0, b1):
+        for k in range(n):
+            F.append([b0 if k < n // 2 else b1, edge[k + 1], edge[k]])
+        F.append([b0, b1, edge[n // 2]])
+    side([top(i, 0) for i in range(n + 1)], b, b + 1)
+    side([top(n, j) for j in range(n + 1)], b + 1, b + 2)
+    side([top(i, n) for i in range(n, -1, -1)], b + 2, b + 3)
+    side([top(0, j) for j in range(n, -1, -1)], b + 3, b)
+    return np.array(V, float), np.array(F)
+
+
 SHAPES = {
     "vase": vase,
     "spiral": spiral,
@@ -343,6 +466,14 @@ SHAPES = {
     "nested": lambda: two_spheres(0.5),
     "thinshell": lambda: two_spheres(0.99),
     "longtriangles": long_triangles,
+    "holey": holey,
+    "noisyblobs": noisy_blobs,
+    "spindle": spindle,
+    "crossing": crossing,
+    "terrain": terrain,
+    "sawtooth": sawtooth,
+    "cone": cone,
+    "mixedbox": mixed_box,
 }
 
 
