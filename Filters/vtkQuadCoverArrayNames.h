@@ -32,6 +32,9 @@ constexpr const char* RefinedTriangles = "RefinedTriangles";
 /// edges collapsed (points removed) to bring a surface finer than the quads need down to
 /// MaximumTriangleCount triangles
 constexpr const char* CollapsedEdges = "CollapsedEdges";
+/// points of rough components (noise at the triangle scale) moved by smoothing
+/// (SmoothRoughSurfaces)
+constexpr const char* SmoothedPoints = "SmoothedPoints";
 
 // ---- vtkCurvatureFrames (cell data, one tuple per triangle) ----
 /// 2 x double: kappa1 >= kappa2. Positive where the surface bends away from its normal

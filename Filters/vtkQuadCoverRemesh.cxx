@@ -206,7 +206,9 @@ int vtkQuadCoverRemesh::RequestData(
       : vtkQuadCoverSurfaceRepair::MaximumTriangleCountFor(
           this->Surface, this->GetTargetQuadCount(), this->GetTargetEdgeLength()));
   this->Repair->Update();
+  // (a smoothed surface keeps its quads: the input's noise is what it took out)
   const bool simplified = vtkQuadCoverSurfaceRepair::Simplified(this->Repair->GetOutput()) &&
+    !vtkQuadCoverSurfaceRepair::Smoothed(this->Repair->GetOutput()) &&
     !this->Repair->GetAbortExecute();
   if (simplified != (this->Extractor->GetNumberOfInputConnections(1) > 0))
   {

@@ -90,7 +90,8 @@ public:
   ///@{
   /**
    * A surface of more triangles is simplified to about this many first (vtkQuadCoverSurfaceRepair's
-   * MaximumTriangleCount) and the quads put back onto it (vtkQuadExtractor's source) (default -1:
+   * MaximumTriangleCount) and the quads put back onto it (vtkQuadExtractor's source; not when
+   * the repair smoothed a rough surface: its quads stay on the smoothed one) (default -1:
    * 16 triangles a quad asked, at least 100,000, vtkQuadCoverSurfaceRepair::
    * MaximumTriangleCountFor; 0: never).
    */

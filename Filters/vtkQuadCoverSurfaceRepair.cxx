@@ -20,6 +20,7 @@
 #include "SurfaceRefinement.h"
 #include "SurfaceRepair.h"
 #include "SurfaceSimplification.h"
+#include "SurfaceSmoothing.h"
 
 #include <Eigen/Geometry>
 
@@ -44,6 +45,7 @@ struct Counts
   vtkIdType splitVertices = 0;
   vtkIdType refinedTriangles = 0;
   vtkIdType collapsedEdges = 0;
+  vtkIdType smoothedPoints = 0;
 };
 
 /// Removes the repeated triangles and the components of zero area (quadcover::
@@ -198,6 +200,25 @@ void MakeManifold(vtkPolyData* surface, const vtkQuadCoverSurface& in, Counts& c
   surface->SetPolys(made->GetPolys());
 }
 
+/// Each triangle's unit normal written into `normals` (a cell normals array in its own type, or
+/// nullptr: nothing to do).
+void RemakeCellNormals(vtkDataArray* normals, const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F)
+{
+  if (!normals)
+  {
+    return;
+  }
+  for (Eigen::Index f = 0; f < F.rows(); ++f)
+  {
+    const Eigen::Vector3d a = V.row(F(f, 0)), b = V.row(F(f, 1)), c = V.row(F(f, 2));
+    const Eigen::Vector3d n = (b - a).cross(c - a).normalized();
+    for (int k = 0; k < 3 && k < normals->GetNumberOfComponents(); ++k)
+    {
+      normals->SetComponent(f, k, std::isfinite(n[k]) ? n[k] : 0.0);
+    }
+  }
+}
+
 /// Brings `surface` down to about `maximum` triangles (quadcover::simplifySurface, on the
 /// points scaled as `in` says): the kept points with their point data, the kept triangles with
 /// their cell data. Counts go to `counts`.
@@ -237,23 +258,45 @@ void Simplify(
     polys->InsertNextCell(3, ids);
     cellData->CopyData(surface->GetCellData(), s.triangleSource[f], f);
   }
-  if (vtkDataArray* normals = cellData->GetNormals())
-  {
-    // a kept triangle may have a corner moved: its normal made again (unit, in its own type)
-    for (Eigen::Index f = 0; f < F.rows(); ++f)
-    {
-      const Eigen::Vector3d a = V.row(F(f, 0)), b = V.row(F(f, 1)), c = V.row(F(f, 2));
-      const Eigen::Vector3d n = (b - a).cross(c - a).normalized();
-      for (int k = 0; k < 3 && k < normals->GetNumberOfComponents(); ++k)
-      {
-        normals->SetComponent(f, k, std::isfinite(n[k]) ? n[k] : 0.0);
-      }
-    }
-  }
+  // a kept triangle may have a corner moved: its normal made again
+  RemakeCellNormals(cellData->GetNormals(), V, F);
   surface->SetPoints(points);
   surface->SetPolys(polys);
   surface->GetPointData()->ShallowCopy(pointData);
   surface->GetCellData()->ShallowCopy(cellData);
+}
+
+/// Smooths the rough components of `surface` (quadcover::smoothRoughComponents, on the points
+/// scaled as `in` says); counts go to `counts`.
+void SmoothRoughComponents(vtkPolyData* surface, const vtkQuadCoverSurface& in, Counts& counts)
+{
+  Eigen::MatrixX3d V = in.InCoreUnits(vtkQuadCoverEigen::Points(surface));
+  const Eigen::MatrixX3i F = vtkQuadCoverEigen::Triangles(surface);
+  counts.smoothedPoints = quadcover::smoothRoughComponents(V, F);
+  if (counts.smoothedPoints == 0)
+  {
+    return;
+  }
+  const Eigen::MatrixX3d moved = in.InWorldUnits(V);
+  vtkNew<vtkPoints> points;
+  points->SetDataType(surface->GetPoints()->GetDataType());
+  points->SetNumberOfPoints(moved.rows());
+  for (Eigen::Index i = 0; i < moved.rows(); ++i)
+  {
+    const Eigen::RowVector3d x = moved.row(i); // (a row of V is not contiguous)
+    points->SetPoint(i, x.data());
+  }
+  surface->SetPoints(points);
+  // the moved triangles' normals made again (in a copy: the input's array may be shared); point
+  // normals no longer the surface's: dropped
+  if (vtkDataArray* normals = surface->GetCellData()->GetNormals())
+  {
+    vtkSmartPointer<vtkDataArray> remade = vtk::TakeSmartPointer(normals->NewInstance());
+    remade->DeepCopy(normals);
+    RemakeCellNormals(remade, V, F);
+    surface->GetCellData()->SetNormals(remade);
+  }
+  surface->GetPointData()->SetNormals(nullptr);
 }
 
 /// Refines the components of `surface` with fewer than `minimum` triangles
@@ -282,6 +325,7 @@ void RefineCoarseComponents(vtkPolyData* surface, int minimum, Counts& counts)
 vtkQuadCoverSurfaceRepair::vtkQuadCoverSurfaceRepair()
   : vtkQuadCoverAlgorithm(ANY_POLYDATA, "repair the surface")
   , MinimumComponentTriangleCount(quadcover::RefinementOptions().minimumComponentTriangleCount)
+  , SmoothRoughSurfaces(quadcover::RoughSurfaceOptions().smoothRoughSurfaces)
 {}
 
 //------------------------------------------------------------------------------
@@ -324,6 +368,10 @@ void vtkQuadCoverSurfaceRepair::Execute(vtkQuadCoverSurface& in, vtkInformationV
   cleaned = nullptr;
   counts.removedCells += RemoveRedundantTriangles(output, in);
   MakeManifold(output, in, counts);
+  if (this->SmoothRoughSurfaces)
+  {
+    SmoothRoughComponents(output, in, counts);
+  }
   Simplify(output, in, this->MaximumTriangleCount, counts);
   RefineCoarseComponents(output, this->MinimumComponentTriangleCount, counts);
 
@@ -338,6 +386,7 @@ void vtkQuadCoverSurfaceRepair::Execute(vtkQuadCoverSurface& in, vtkInformationV
   AddField<vtkIntArray>(fd, names::SplitVertices, { double(counts.splitVertices) });
   AddField<vtkIntArray>(fd, names::RefinedTriangles, { double(counts.refinedTriangles) });
   AddField<vtkIntArray>(fd, names::CollapsedEdges, { double(counts.collapsedEdges) });
+  AddField<vtkIntArray>(fd, names::SmoothedPoints, { double(counts.smoothedPoints) });
 }
 
 //------------------------------------------------------------------------------
@@ -400,9 +449,17 @@ bool vtkQuadCoverSurfaceRepair::Simplified(vtkPolyData* repaired)
 }
 
 //------------------------------------------------------------------------------
+bool vtkQuadCoverSurfaceRepair::Smoothed(vtkPolyData* repaired)
+{
+  vtkDataArray* a = repaired->GetFieldData()->GetArray(vtkQuadCoverArrayNames::SmoothedPoints);
+  return a && a->GetNumberOfTuples() > 0 && a->GetTuple1(0) > 0;
+}
+
+//------------------------------------------------------------------------------
 void vtkQuadCoverSurfaceRepair::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "MinimumComponentTriangleCount: " << this->MinimumComponentTriangleCount << "\n";
   os << indent << "MaximumTriangleCount: " << this->MaximumTriangleCount << "\n";
+  os << indent << "SmoothRoughSurfaces: " << (this->SmoothRoughSurfaces ? "On" : "Off") << "\n";
 }

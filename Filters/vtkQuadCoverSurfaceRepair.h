@@ -24,6 +24,11 @@
  * - triangles are turned over where they disagree with their neighbours; each connected
  *   component keeps the orientation of most of its area (ReorientedTriangles; a cell `Normals`
  *   array turns with its triangles);
+ * - a rough component, one whose surface folds over at the triangle scale and whose curvature
+ *   changes sign from point to point (noise of a third of an edge: a raw scan), is smoothed by
+ *   Taubin's steps, its boundary held (SmoothedPoints; SmoothRoughSurfaces,
+ *   quadcover::smoothRoughComponents). The frame field would otherwise have a singularity at
+ *   nearly every other point. The quads then lie on the smoothed surface;
  * - every triangle of a component with fewer than MinimumComponentTriangleCount triangles is
  *   split into four at its edges' midpoints, again until the component has that many
  *   (RefinedTriangles; point data interpolated, cell data copied to the parts): a coarse cone,
@@ -67,6 +72,14 @@ public:
   ///@}
 
   ///@{
+  /** Smooth the rough components, noisy at the triangle scale (default on; the quads then lie
+   * on the smoothed surface). */
+  vtkSetMacro(SmoothRoughSurfaces, bool);
+  vtkGetMacro(SmoothRoughSurfaces, bool);
+  vtkBooleanMacro(SmoothRoughSurfaces, bool);
+  ///@}
+
+  ///@{
   /** A surface with more triangles is simplified to about this many (default 0: never; fewer
    * than 1000 read as 1000). vtkQuadCoverRemesh sets it from its quads
    * (MaximumTriangleCountFor). */
@@ -89,6 +102,10 @@ public:
   /** Whether `repaired`, an output of this filter, was simplified (CollapsedEdges > 0). */
   static bool Simplified(vtkPolyData* repaired);
 
+  /** Whether `repaired`, an output of this filter, had rough components smoothed
+   * (SmoothedPoints > 0): its quads belong on it, not on the rough input. */
+  static bool Smoothed(vtkPolyData* repaired);
+
 protected:
   vtkQuadCoverSurfaceRepair();
   ~vtkQuadCoverSurfaceRepair() override = default;
@@ -98,6 +115,7 @@ protected:
   // default: quadcover::RefinementOptions
   int MinimumComponentTriangleCount;
   vtkIdType MaximumTriangleCount = 0;
+  bool SmoothRoughSurfaces; // default: quadcover::RoughSurfaceOptions
 
 private:
   vtkQuadCoverSurfaceRepair(const vtkQuadCoverSurfaceRepair&) = delete;

@@ -329,6 +329,9 @@ std::vector<Option> StageOptions(Pipeline& p)
     QC_NUMBER("repair", repair, MinimumComponentTriangleCount,
       "refine components with fewer triangles (the surface stays), 0: none"),
     MaximumTriangleCountOption(repair),
+    QC_SWITCH("repair", repair, SmoothRoughSurfaces,
+      "smooth components rough at the triangle scale (noise: folds, curvature changing sign from "
+      "point to point); the quads lie on the smoothed surface"),
     QC_NUMBER("curvature", curvature, NeighborhoodRadius,
       "radius of the curvature neighbourhood, in median edge lengths"),
     // three stages: written out
@@ -522,8 +525,9 @@ void PrintUsage(std::ostream& os, const std::vector<Option>& options)
         "triangles with a repeated point removed, edges of more than two triangles cut apart\n"
         "into manifold sheets, a point where separate fans of triangles touch split into one\n"
         "copy per fan, triangles reoriented to agree with their neighbours (each\n"
-        "component keeping the orientation of most of its area), and the triangles of\n"
-        "components too coarse for a map split at their edges' midpoints.\n"
+        "component keeping the orientation of most of its area), components rough at the\n"
+        "triangle scale (noise) smoothed, and the triangles of components too coarse for a\n"
+        "map split at their edges' midpoints.\n"
         "Refused: missing, unreadable or empty files, unknown extensions, no polygons, point\n"
         "ids out of range, NaN or infinite coordinates, surfaces whose triangles all have\n"
         "zero area, non-orientable components (a Moebius strip).\n"

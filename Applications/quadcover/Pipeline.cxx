@@ -213,7 +213,8 @@ std::string Pipeline::Run(
     {
       return SayOutOfMemory(errors->GetError());
     }
-    if (s == 0 && vtkQuadCoverSurfaceRepair::Simplified(this->Repair->GetOutput()))
+    if (s == 0 && vtkQuadCoverSurfaceRepair::Simplified(this->Repair->GetOutput()) &&
+      !vtkQuadCoverSurfaceRepair::Smoothed(this->Repair->GetOutput()))
     {
       this->Extractor->SetSourceData(surface); // the quads onto the surface as it was given
     }

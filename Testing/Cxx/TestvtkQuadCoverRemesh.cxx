@@ -149,6 +149,44 @@ TEST(vtkQuadCoverRemesh, AFineSurfaceIsSimplifiedAndTheQuadsPutBackOntoIt)
   EXPECT_NE(printed.str().find("MaximumTriangleCount: 0"), std::string::npos);
 }
 
+TEST(vtkQuadCoverRemesh, ARoughSurfaceIsSmoothedAndKeepsItsQuads)
+{
+  // a sphere of 5,120 triangles with noise of 0.3 edge lengths: left rough (SmoothRoughSurfaces
+  // off), its 600 quads have about 50 irregular vertices; smoothed, about 10
+  const quadcover::Surface s = quadcover::withNoise(quadcover::makeIcosphere(1.0, 4), 0.3, 5);
+  vtkNew<vtkQuadCoverRemesh> remesh;
+  remesh->SetInputData(vtkQuadCoverEigen::ToPolyData(s.V, s.F));
+  remesh->SetTargetQuadCount(600);
+  for (const vtkIdType maximum : { vtkIdType(-1), vtkIdType(3000) })
+  {
+    remesh->SetMaximumTriangleCount(maximum); // -1: not simplified; 3000: simplified too
+    ASSERT_EQ(vtkQuadCoverErrorObserver::Run(remesh), "");
+    vtkPolyData* repaired = remesh->GetSurfaceRepair()->GetOutput();
+    EXPECT_TRUE(vtkQuadCoverSurfaceRepair::Smoothed(repaired));
+    EXPECT_EQ(vtkQuadCoverSurfaceRepair::Simplified(repaired), maximum > 0);
+    // the quads stay on the smoothed surface: the input's noise is what it took out
+    EXPECT_EQ(remesh->GetQuadExtractor()->GetNumberOfInputConnections(1), 0);
+    vtkPolyData* quads = remesh->GetOutput();
+    vtkFieldData* fd = quads->GetFieldData();
+    ASSERT_GT(quads->GetNumberOfPolys(), 400);
+    EXPECT_EQ(fd->GetArray("QuadShare")->GetTuple1(0), 1.0);
+    EXPECT_EQ(fd->GetArray("EulerCharacteristic")->GetTuple1(0), 2.0);
+    EXPECT_EQ(fd->GetArray("BoundaryLoops")->GetTuple1(0), 0.0);
+    EXPECT_EQ(fd->GetArray("TurnedQuads")->GetTuple1(1), 0.0);
+    EXPECT_LE(fd->GetArray("IrregularVertices")->GetTuple1(0), 24.0);
+    const Eigen::MatrixX3d V = vtkQuadCoverEigen::Points(repaired);
+    const Eigen::MatrixX3i F = vtkQuadCoverEigen::Triangles(repaired);
+    const quadcover::SurfaceLocator onRepaired(V, F); // (keeps references)
+    for (vtkIdType p = 0; p < quads->GetNumberOfPoints(); p += 7)
+    {
+      double x[3];
+      quads->GetPoint(p, x);
+      ASSERT_LT(onRepaired.closest(Eigen::Vector3d(x[0], x[1], x[2])).distance, 1e-9)
+        << "vertex " << p;
+    }
+  }
+}
+
 TEST(vtkQuadCoverRemesh, PropertiesSetTheStagesThatUseThem)
 {
   vtkNew<vtkQuadCoverRemesh> remesh;

@@ -14,15 +14,20 @@
 #include "vtkQuadCoverEigen.h"
 #include "vtkQuadCoverErrorObserver.h"
 #include "vtkQuadCoverSurfaceRepair.h"
+#include "vtkSmartPointer.h"
 
+#include "FrameField.h"
 #include "MeshTopology.h"
 #include "Surfaces.h"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <initializer_list>
 #include <limits>
+#include <sstream>
 #include <vector>
 
 namespace names = vtkQuadCoverArrayNames;
@@ -101,6 +106,16 @@ vtkSmartPointer<vtkPolyData> MoebiusStrip()
     cells.push_back({ b, c, d });
   }
   return Make(points, cells);
+}
+
+/// A normals array of `tuples` zero vectors (the repair makes them again where it moves triangles).
+vtkSmartPointer<vtkDoubleArray> ZeroNormals(vtkIdType tuples)
+{
+  auto normals = vtkSmartPointer<vtkDoubleArray>::New();
+  normals->SetNumberOfComponents(3);
+  normals->SetNumberOfTuples(tuples);
+  normals->Fill(0.0);
+  return normals;
 }
 
 quadcover::MeshTopology Topology(vtkPolyData* pd)
@@ -404,11 +419,7 @@ TEST(vtkQuadCoverSurfaceRepair, SimplifiesAboveMaximumTriangleCountKeepingTheDat
     height->InsertNextValue(in->GetPoint(p)[2]);
   }
   in->GetPointData()->AddArray(height);
-  vtkNew<vtkDoubleArray> normals;
-  normals->SetNumberOfComponents(3);
-  normals->SetNumberOfTuples(in->GetNumberOfCells());
-  normals->Fill(0.0);
-  in->GetCellData()->SetNormals(normals);
+  in->GetCellData()->SetNormals(ZeroNormals(in->GetNumberOfCells()));
 
   vtkNew<vtkQuadCoverSurfaceRepair> repair;
   EXPECT_EQ(repair->GetMaximumTriangleCount(), 0);
@@ -444,6 +455,71 @@ TEST(vtkQuadCoverSurfaceRepair, SimplifiesAboveMaximumTriangleCountKeepingTheDat
     ASSERT_NEAR(normal.norm(), 1.0, 1e-9) << "cell " << c;
     ASSERT_GT(normal.dot(outward.normalized()), 0.9) << "cell " << c;
   }
+}
+
+TEST(vtkQuadCoverSurfaceRepair, SmoothsARoughSurfaceAndRemakesItsCellNormals)
+{
+  // a sphere of 5,120 triangles with noise of 0.3 edge lengths, as a raw scan, with cell and
+  // point normals
+  const quadcover::Surface s = quadcover::withNoise(quadcover::makeIcosphere(1.0, 4), 0.3, 5);
+  vtkSmartPointer<vtkPolyData> in = vtkQuadCoverEigen::ToPolyData(s.V, s.F);
+  vtkSmartPointer<vtkDoubleArray> normals = ZeroNormals(in->GetNumberOfCells());
+  in->GetCellData()->SetNormals(normals);
+  in->GetPointData()->SetNormals(ZeroNormals(in->GetNumberOfPoints()));
+
+  vtkNew<vtkQuadCoverSurfaceRepair> repair;
+  EXPECT_TRUE(repair->GetSmoothRoughSurfaces());
+  repair->SetInputData(in);
+  ASSERT_EQ(vtkQuadCoverErrorObserver::Run(repair), "");
+  vtkPolyData* out = repair->GetOutput();
+  EXPECT_EQ(out->GetFieldData()->GetArray(names::SmoothedPoints)->GetTuple1(0),
+    static_cast<double>(in->GetNumberOfPoints()));
+  EXPECT_TRUE(vtkQuadCoverSurfaceRepair::Smoothed(out));
+  ASSERT_EQ(out->GetNumberOfPoints(), in->GetNumberOfPoints());
+  ASSERT_EQ(out->GetNumberOfPolys(), in->GetNumberOfPolys());
+  const quadcover::MeshTopology topo = Topology(out);
+  EXPECT_TRUE(topo.isManifold() && topo.isOriented() && topo.isClosed());
+  // smoother: few points sharply curved (the noise bent more than a fifth of them)
+  const Eigen::VectorXd before = quadcover::angleDefects(s.V, s.F, topo);
+  const Eigen::VectorXd after = quadcover::angleDefects(
+    vtkQuadCoverEigen::Points(out), vtkQuadCoverEigen::Triangles(out), topo);
+  const auto sharp = [](const Eigen::VectorXd& k) {
+    return (k.array().abs() > 3.14159265358979323846 / 8).count();
+  };
+  EXPECT_GT(sharp(before), in->GetNumberOfPoints() / 5);
+  EXPECT_LT(sharp(after), in->GetNumberOfPoints() / 100);
+  // the cell normals the triangles' own, outward; the point normals gone
+  vtkDataArray* n = out->GetCellData()->GetNormals();
+  ASSERT_NE(n, nullptr);
+  for (vtkIdType c = 0; c < out->GetNumberOfCells(); ++c)
+  {
+    const Eigen::Vector3d normal(n->GetTuple3(c));
+    const Eigen::Vector3d centre(out->GetPoint(out->GetCell(c)->GetPointId(0)));
+    ASSERT_NEAR(normal.norm(), 1.0, 1e-9) << "cell " << c;
+    ASSERT_GT(normal.dot(centre.normalized()), 0.5) << "cell " << c;
+  }
+  EXPECT_EQ(out->GetPointData()->GetNormals(), nullptr);
+  EXPECT_EQ(normals->GetTuple3(0)[0], 0.0) << "the input's own array is not written";
+
+  repair->SmoothRoughSurfacesOff();
+  ASSERT_EQ(vtkQuadCoverErrorObserver::Run(repair), "");
+  out = repair->GetOutput();
+  EXPECT_EQ(out->GetFieldData()->GetArray(names::SmoothedPoints)->GetTuple1(0), 0.0);
+  EXPECT_FALSE(vtkQuadCoverSurfaceRepair::Smoothed(out));
+  // the input's points, in the repair's order
+  const auto sorted = [](vtkPolyData* pd) {
+    std::vector<std::array<double, 3>> points(pd->GetNumberOfPoints());
+    for (vtkIdType p = 0; p < pd->GetNumberOfPoints(); ++p)
+    {
+      pd->GetPoint(p, points[p].data());
+    }
+    std::sort(points.begin(), points.end());
+    return points;
+  };
+  EXPECT_EQ(sorted(out), sorted(in));
+  std::ostringstream printed;
+  repair->Print(printed);
+  EXPECT_NE(printed.str().find("SmoothRoughSurfaces: Off"), std::string::npos);
 }
 
 TEST(vtkQuadCoverSurfaceRepair, MergesTheRoundOffSeamsOfAParametricSurface)

@@ -84,6 +84,33 @@ Surface makeTorus(double R, double r, int nu, int nv)
   return s;
 }
 
+Surface withNoise(const Surface& s, double noise, unsigned seed)
+{
+  double edges = 0.0;
+  for (Eigen::Index f = 0; f < s.F.rows(); ++f)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      edges += (s.V.row(s.F(f, k)) - s.V.row(s.F(f, (k + 1) % 3))).norm();
+    }
+  }
+  const double sigma = noise * edges / std::max<double>(3.0 * s.F.rows(), 1.0);
+  std::mt19937 rng(seed);
+  Surface out;
+  out.name = s.name + " with noise";
+  out.V = s.V;
+  out.F = s.F;
+  for (Eigen::Index i = 0; i < out.V.rows(); ++i)
+  {
+    for (int j = 0; j < 3; ++j)
+    {
+      const double r = std::sqrt(-2.0 * std::log(1.0 - uniform(rng)));
+      out.V(i, j) += sigma * r * std::cos(2.0 * Pi * uniform(rng));
+    }
+  }
+  return out;
+}
+
 Surface makeIcosphere(double radius, int level)
 {
   if (!(radius > 0.0) || level < 0 || level > 9)

@@ -28,6 +28,11 @@ Surface makeTorus(double R, double r, int nu, int nv);
 /// Sphere from a subdivided icosahedron (20 * 4^level triangles).
 Surface makeIcosphere(double radius, int level);
 
+/// `s` with every coordinate of every point moved by a normal deviate of `noise` mean edge
+/// lengths (Box-Muller on mt19937: the same surface on every platform), as a rough scan; its
+/// curvatures dropped.
+Surface withNoise(const Surface& s, double noise, unsigned seed);
+
 /// Open cylinder around the z axis, height h centred at 0: two boundary loops.
 Surface makeCylinder(double r, double h, int nAround, int nAlong);
 
