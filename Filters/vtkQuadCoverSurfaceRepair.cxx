@@ -28,6 +28,7 @@
 #include <cmath>
 #include <map>
 #include <stdexcept>
+#include <string>
 #include <vector>
 
 vtkStandardNewMacro(vtkQuadCoverSurfaceRepair);
@@ -371,6 +372,13 @@ void vtkQuadCoverSurfaceRepair::Execute(vtkQuadCoverSurface& in, vtkInformationV
   if (this->SmoothRoughSurfaces)
   {
     SmoothRoughComponents(output, in, counts);
+    if (counts.smoothedPoints > 0)
+    {
+      this->Warn("the surface is rough at the triangle scale (noise): " +
+        std::to_string(counts.smoothedPoints) +
+        " points smoothed, the quads lie on the smoothed surface (SmoothRoughSurfaces off keeps "
+        "it as it is)");
+    }
   }
   Simplify(output, in, this->MaximumTriangleCount, counts);
   RefineCoarseComponents(output, this->MinimumComponentTriangleCount, counts);
