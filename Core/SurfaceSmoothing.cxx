@@ -2,6 +2,7 @@
 #include "SurfaceSmoothing.h"
 
 #include "FrameField.h"
+#include "MatchingAngles.h"
 
 #include <Eigen/Geometry>
 
@@ -9,6 +10,7 @@
 
 namespace quadcover
 {
+using detail::Pi;
 
 bool Roughness::rough() const
 {
@@ -23,7 +25,7 @@ std::vector<Roughness> componentRoughness(
   std::vector<Roughness> result(topo.numComponents());
   const FaceBases bases = computeFaceBases(V, F, topo);
   const Eigen::VectorXd defect = angleDefects(V, F, topo);
-  const double cosFold = std::cos(RoughFoldAngle * 3.14159265358979323846 / 180.0);
+  const double cosFold = std::cos(RoughFoldAngle * Pi / 180.0);
   for (int e = 0; e < topo.numEdges(); ++e)
   {
     const int a = topo.edges(e, 0), b = topo.edges(e, 1);

@@ -37,7 +37,7 @@ struct Roughness
 {
   int innerEdges = 0;  ///< edges with two triangles
   int foldedEdges = 0; ///< inner edges bent more than RoughFoldAngle
-  int edges = 0;
+  int edges = 0;       ///< all its edges
   int signChanges = 0; ///< edges between inner points of large angle defects of opposite signs
   /// More than RoughFoldedShare of the inner edges folded and more than RoughSignChangeShare of
   /// the edges changing the curvature's sign, and at least RoughMinimumEdges of each.
@@ -62,6 +62,7 @@ std::vector<Roughness> componentRoughness(
  * less itself), which take out the noise below a few edges without shrinking the shape; points
  * on the boundary stay. The triangles do not change.
  * @param[in,out] V #V x 3 positions
+ * @param[in]     F #F x 3 triangles of a manifold, consistently oriented surface
  * @return the number of points moved
  */
 int smoothRoughComponents(Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F);

@@ -84,6 +84,14 @@ bool vtkQuadCoverRemesh::GetFeatureLines()
 {
   return this->Solver->GetFeatureLines();
 }
+void vtkQuadCoverRemesh::SetSmoothRoughSurfaces(bool on)
+{
+  this->Repair->SetSmoothRoughSurfaces(on);
+}
+bool vtkQuadCoverRemesh::GetSmoothRoughSurfaces()
+{
+  return this->Repair->GetSmoothRoughSurfaces();
+}
 void vtkQuadCoverRemesh::SetFeatureAngle(double degrees)
 {
   this->Smoother->SetFeatureAngle(degrees);
@@ -251,4 +259,6 @@ void vtkQuadCoverRemesh::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "FeatureAngle: " << this->GetFeatureAngle() << "\n";
   os << indent << "NumberOfThreads: " << this->GetNumberOfThreads() << "\n";
   os << indent << "MaximumTriangleCount: " << this->MaximumTriangleCount << "\n";
+  os << indent << "SmoothRoughSurfaces: " << (this->GetSmoothRoughSurfaces() ? "On" : "Off")
+     << "\n";
 }

@@ -9,7 +9,8 @@
  * The properties are the command line's main options and set the stages that use them:
  * TargetQuadCount or TargetEdgeLength (the solver), FeatureLines (the solver), FeatureAngle (the
  * smoother, the solver and the quad extractor), NumberOfThreads (the curvature estimate, the
- * smoother and the solver), MaximumTriangleCount (the repair, and the extractor's source). Every
+ * smoother and the solver), MaximumTriangleCount (the repair, and the extractor's source),
+ * SmoothRoughSurfaces (the repair). Every
  * other option is reached through the stage itself, e.g. GetFrameSmoother()->SetSmoothingWeight(1);
  * a change there re-runs the chain (GetMTime includes the stages').
  *
@@ -76,6 +77,14 @@ public:
   /** Edges sharper than this (degrees) are features: the smoother's and solver's (default 60). */
   void SetFeatureAngle(double degrees);
   double GetFeatureAngle();
+  ///@}
+
+  ///@{
+  /** Smooth the components rough with noise at the triangle scale first; their quads then lie on
+   * the smoothed surface (vtkQuadCoverSurfaceRepair's SmoothRoughSurfaces, default on). */
+  void SetSmoothRoughSurfaces(bool on);
+  bool GetSmoothRoughSurfaces();
+  vtkBooleanMacro(SmoothRoughSurfaces, bool);
   ///@}
 
   ///@{

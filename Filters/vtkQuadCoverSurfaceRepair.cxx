@@ -288,15 +288,9 @@ void SmoothRoughComponents(vtkPolyData* surface, const vtkQuadCoverSurface& in, 
     points->SetPoint(i, x.data());
   }
   surface->SetPoints(points);
-  // the moved triangles' normals made again (in a copy: the input's array may be shared); point
-  // normals no longer the surface's: dropped
-  if (vtkDataArray* normals = surface->GetCellData()->GetNormals())
-  {
-    vtkSmartPointer<vtkDataArray> remade = vtk::TakeSmartPointer(normals->NewInstance());
-    remade->DeepCopy(normals);
-    RemakeCellNormals(remade, V, F);
-    surface->GetCellData()->SetNormals(remade);
-  }
+  // the moved triangles' normals made again (the cell data are the repair's own copy since the
+  // points were merged); point normals no longer the surface's: dropped
+  RemakeCellNormals(surface->GetCellData()->GetNormals(), V, F);
   surface->GetPointData()->SetNormals(nullptr);
 }
 

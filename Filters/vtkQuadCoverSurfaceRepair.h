@@ -41,8 +41,9 @@
  *   bent more than 40 degrees (points on them move along them only) and each component's share
  *   (quadcover::simplifySurface). vtkQuadCoverRemesh and the command line set it from the quads
  *   asked (16 triangles a quad, at least 100,000; quadcover::simplificationBudget), and put the
- *   quads back onto the input surface (vtkQuadExtractor's second input).
- * The input's point, cell and field data are kept (cell data follow the triangles).
+ *   quads back onto the input surface (vtkQuadExtractor's second input) unless it was smoothed.
+ * The input's point, cell and field data are kept (cell data follow the triangles), but for the
+ * normals of a smoothed surface: cell normals made again, point normals dropped.
  *
  * Errors (no output): no points, point ids out of range, NaN or infinite coordinates, no
  * polygons, no triangle with three distinct points, and a component that cannot be oriented (a

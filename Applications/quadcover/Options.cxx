@@ -308,7 +308,7 @@ Option MaximumTriangleCountOption(vtkQuadCoverSurfaceRepair* repair)
 {
   Option o = QC_NUMBER("repair", repair, MaximumTriangleCount,
     "simplify a surface of more triangles to about this many first (the quads are put back "
-    "onto it), 0: never");
+    "onto it unless it was smoothed), 0: never");
   o.defaultText = "16 a quad asked, at least 100000";
   return o;
 }

@@ -73,13 +73,11 @@ TEST(SurfaceSmoothing, ANoisySphereIsRoughAndComesOutSmoothAndRound)
   }
 }
 
-TEST(SurfaceSmoothing, SmoothCoarseAndCreasedSurfacesAreNotRough)
+TEST(SurfaceSmoothing, SmoothAndCreasedSurfacesAreNotRoughAndStay)
 {
-  // smooth, a coarse torus whose curvature changes sign along half its edges but which does not
-  // fold, a rounded and a sharp cube (creases fold by 90 degrees along flat sides), a CAD part
+  // a sphere, a rounded and a sharp cube (creases bent by 90 degrees along flat sides), a CAD
+  // part and a knot tube: neither folded nor changing the sign of their curvature, and untouched
   EXPECT_FALSE(anyRough(makeIcosphere(1.0, 4).V, makeIcosphere(1.0, 4).F));
-  const Surface coarse = makeTorus(1.0, 0.4, 8, 6);
-  EXPECT_FALSE(anyRough(coarse.V, coarse.F));
   for (const Surface& s : { makeRoundedCube(0.2, 12), makeRoundedCube(0.0, 12), makeBracket(0.05),
          makeKnotTube(2, 3, 1.0, 0.4, 0.1, 200, 12, 0.0, 0.0, 1) })
   {
@@ -88,6 +86,55 @@ TEST(SurfaceSmoothing, SmoothCoarseAndCreasedSurfacesAreNotRough)
     EXPECT_EQ(smoothRoughComponents(V, s.F), 0) << s.name;
     EXPECT_EQ(V, s.V) << s.name;
   }
+}
+
+TEST(SurfaceSmoothing, EachCriterionAloneIsNotEnough)
+{
+  // a pleated sheet folds a third of its edges by 127 degrees, but it is developable: no angle
+  // defect, so no sign change
+  const int n = 40, m = 10;
+  Surface pleats;
+  pleats.V.resize((n + 1) * (m + 1), 3);
+  pleats.F.resize(2 * n * m, 3);
+  for (int i = 0; i <= n; ++i)
+  {
+    for (int j = 0; j <= m; ++j)
+    {
+      pleats.V.row(i * (m + 1) + j) << i, j, i % 2 == 0 ? 0.0 : 2.0;
+    }
+  }
+  for (int i = 0; i < n; ++i)
+  {
+    for (int j = 0; j < m; ++j)
+    {
+      const int a = i * (m + 1) + j, b = a + m + 1;
+      pleats.F.row(2 * (i * m + j)) << a, b, b + 1;
+      pleats.F.row(2 * (i * m + j) + 1) << a, b + 1, a + 1;
+    }
+  }
+  const MeshTopology sheet = buildTopology(pleats.F, static_cast<int>(pleats.V.rows()));
+  const Roughness r = componentRoughness(pleats.V, pleats.F, sheet)[0];
+  EXPECT_GT(r.foldedEdges, r.innerEdges / 4);
+  EXPECT_EQ(r.signChanges, 0);
+  EXPECT_FALSE(r.rough());
+
+  // a coarse torus: its curvature changes sign along a fifth of its edges, but nothing folds
+  const Surface coarse = makeTorus(1.0, 0.4, 8, 6);
+  const MeshTopology ring = buildTopology(coarse.F, static_cast<int>(coarse.V.rows()));
+  const Roughness t = componentRoughness(coarse.V, coarse.F, ring)[0];
+  EXPECT_GT(t.signChanges, RoughSignChangeShare * t.edges);
+  EXPECT_EQ(t.foldedEdges, 0);
+  EXPECT_FALSE(t.rough());
+
+  // a small noisy sphere (80 triangles) is over both shares but under the floor of 32 folds: a
+  // few folds of a small part are its shape
+  const Surface small = withNoise(makeIcosphere(1.0, 1), 0.5, 7);
+  const MeshTopology ball = buildTopology(small.F, static_cast<int>(small.V.rows()));
+  const Roughness s = componentRoughness(small.V, small.F, ball)[0];
+  EXPECT_GT(s.foldedEdges, RoughFoldedShare * s.innerEdges);
+  EXPECT_GT(s.signChanges, RoughSignChangeShare * s.edges);
+  EXPECT_LT(s.foldedEdges, RoughMinimumEdges);
+  EXPECT_FALSE(s.rough());
 }
 
 TEST(SurfaceSmoothing, OnlyTheRoughComponentMovesAndTheBoundaryStays)

@@ -151,8 +151,8 @@ TEST(vtkQuadCoverRemesh, AFineSurfaceIsSimplifiedAndTheQuadsPutBackOntoIt)
 
 TEST(vtkQuadCoverRemesh, ARoughSurfaceIsSmoothedAndKeepsItsQuads)
 {
-  // a sphere of 5,120 triangles with noise of 0.3 edge lengths: left rough (SmoothRoughSurfaces
-  // off), its 600 quads have about 50 irregular vertices; smoothed, about 10
+  // a sphere of 5,120 triangles with noise of 0.3 edge lengths: smoothed, its 600 quads have
+  // about 10 irregular vertices (left rough, about 50)
   const quadcover::Surface s = quadcover::withNoise(quadcover::makeIcosphere(1.0, 4), 0.3, 5);
   vtkNew<vtkQuadCoverRemesh> remesh;
   remesh->SetInputData(vtkQuadCoverEigen::ToPolyData(s.V, s.F));
@@ -185,6 +185,17 @@ TEST(vtkQuadCoverRemesh, ARoughSurfaceIsSmoothedAndKeepsItsQuads)
         << "vertex " << p;
     }
   }
+  // left rough, and simplified: the quads go back onto the input
+  remesh->SmoothRoughSurfacesOff();
+  ASSERT_EQ(vtkQuadCoverErrorObserver::Run(remesh), "");
+  EXPECT_FALSE(vtkQuadCoverSurfaceRepair::Smoothed(remesh->GetSurfaceRepair()->GetOutput()));
+  EXPECT_EQ(remesh->GetQuadExtractor()->GetNumberOfInputConnections(1), 1);
+  remesh->SmoothRoughSurfacesOn();
+  ASSERT_EQ(vtkQuadCoverErrorObserver::Run(remesh), "");
+  EXPECT_EQ(remesh->GetQuadExtractor()->GetNumberOfInputConnections(1), 0);
+  std::ostringstream printed;
+  remesh->Print(printed);
+  EXPECT_NE(printed.str().find("SmoothRoughSurfaces: On"), std::string::npos);
 }
 
 TEST(vtkQuadCoverRemesh, PropertiesSetTheStagesThatUseThem)
