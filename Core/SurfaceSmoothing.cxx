@@ -2,7 +2,6 @@
 #include "SurfaceSmoothing.h"
 
 #include "FrameField.h"
-#include "MatchingAngles.h"
 
 #include <Eigen/Geometry>
 
@@ -10,66 +9,19 @@
 
 namespace quadcover
 {
-using detail::Pi;
 
 bool Roughness::rough() const
 {
-  return foldedEdges > RoughFoldedShare * innerEdges &&
-    signChanges > RoughSignChangeShare * edges && foldedEdges >= RoughMinimumEdges &&
-    signChanges >= RoughMinimumEdges;
+  return curvedPoints >= RoughMinimumPoints && curvatureLeft < RoughCurvatureLeft * curvature;
 }
 
-std::vector<Roughness> componentRoughness(
-  const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F, const MeshTopology& topo)
+namespace
 {
-  std::vector<Roughness> result(topo.numComponents());
-  const FaceBases bases = computeFaceBases(V, F, topo);
-  const Eigen::VectorXd defect = angleDefects(V, F, topo);
-  const double cosFold = std::cos(RoughFoldAngle * Pi / 180.0);
-  for (int e = 0; e < topo.numEdges(); ++e)
-  {
-    const int a = topo.edges(e, 0), b = topo.edges(e, 1);
-    const int c = topo.vertexComponent[a];
-    if (c < 0)
-    {
-      continue;
-    }
-    Roughness& r = result[c];
-    ++r.edges;
-    if (topo.edgeFaceCount[e] == 2)
-    {
-      ++r.innerEdges;
-      const Eigen::Vector3d n = bases.normal.row(topo.edgeFaces(e, 0));
-      const Eigen::Vector3d m = bases.normal.row(topo.edgeFaces(e, 1));
-      r.foldedEdges += n.dot(m) < cosFold ? 1 : 0;
-    }
-    const bool inner = !topo.boundaryVertex[a] && !topo.boundaryVertex[b];
-    r.signChanges += inner && std::abs(defect[a]) > RoughDefect &&
-        std::abs(defect[b]) > RoughDefect && (defect[a] > 0) != (defect[b] > 0)
-      ? 1
-      : 0;
-  }
-  return result;
-}
-
-int smoothRoughComponents(Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F)
+/// Each point's neighbours through its edges, for the points that `moves`.
+std::vector<std::vector<int>> movingNeighbours(
+  const MeshTopology& topo, const std::vector<char>& moves)
 {
-  const MeshTopology topo = buildTopology(F, static_cast<int>(V.rows()));
-  const std::vector<Roughness> roughness = componentRoughness(V, F, topo);
-  std::vector<char> moves(V.rows(), 0);
-  int moved = 0;
-  for (Eigen::Index v = 0; v < V.rows(); ++v)
-  {
-    const int c = topo.vertexComponent[v];
-    moves[v] = c >= 0 && roughness[c].rough() && !topo.boundaryVertex[v];
-    moved += moves[v];
-  }
-  if (moved == 0)
-  {
-    return 0;
-  }
-  // each moving point's neighbours, through its edges
-  std::vector<std::vector<int>> neighbours(V.rows());
+  std::vector<std::vector<int>> neighbours(moves.size());
   for (int e = 0; e < topo.numEdges(); ++e)
   {
     const int a = topo.edges(e, 0), b = topo.edges(e, 1);
@@ -82,8 +34,16 @@ int smoothRoughComponents(Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F)
       neighbours[b].push_back(a);
     }
   }
+  return neighbours;
+}
+
+/// `pairs` pairs of Taubin's steps (lambda 0.5, mu -0.53) on the points that `moves`.
+void taubinSteps(
+  Eigen::MatrixX3d& V, const MeshTopology& topo, const std::vector<char>& moves, int pairs)
+{
+  const std::vector<std::vector<int>> neighbours = movingNeighbours(topo, moves);
   Eigen::MatrixX3d step(V.rows(), 3);
-  for (int pass = 0; pass < 2 * RoughSmoothingPasses; ++pass)
+  for (int pass = 0; pass < 2 * pairs; ++pass)
   {
     const double share = pass % 2 == 0 ? 0.5 : -0.53;
     step.setZero();
@@ -100,6 +60,69 @@ int smoothRoughComponents(Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F)
       }
     }
     V += step;
+  }
+}
+
+/// Per component, the sum of |angle defect| over its inner points.
+std::vector<double> absoluteCurvature(
+  const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F, const MeshTopology& topo)
+{
+  std::vector<double> sum(topo.numComponents(), 0.0);
+  const Eigen::VectorXd defect = angleDefects(V, F, topo);
+  for (Eigen::Index v = 0; v < V.rows(); ++v)
+  {
+    const int c = topo.vertexComponent[v];
+    if (c >= 0 && !topo.boundaryVertex[v])
+    {
+      sum[c] += std::abs(defect[v]);
+    }
+  }
+  return sum;
+}
+}
+
+std::vector<Roughness> componentRoughness(
+  const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F, const MeshTopology& topo)
+{
+  std::vector<Roughness> result(topo.numComponents());
+  const Eigen::VectorXd defect = angleDefects(V, F, topo);
+  std::vector<char> inner(V.rows(), 0);
+  for (Eigen::Index v = 0; v < V.rows(); ++v)
+  {
+    const int c = topo.vertexComponent[v];
+    inner[v] = c >= 0 && !topo.boundaryVertex[v];
+    if (inner[v] && std::abs(defect[v]) > RoughDefect)
+    {
+      ++result[c].curvedPoints;
+    }
+  }
+  const std::vector<double> before = absoluteCurvature(V, F, topo);
+  Eigen::MatrixX3d probe = V;
+  taubinSteps(probe, topo, inner, RoughProbePasses);
+  const std::vector<double> after = absoluteCurvature(probe, F, topo);
+  for (int c = 0; c < topo.numComponents(); ++c)
+  {
+    result[c].curvature = before[c];
+    result[c].curvatureLeft = after[c];
+  }
+  return result;
+}
+
+int smoothRoughComponents(Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F)
+{
+  const MeshTopology topo = buildTopology(F, static_cast<int>(V.rows()));
+  const std::vector<Roughness> roughness = componentRoughness(V, F, topo);
+  std::vector<char> moves(V.rows(), 0);
+  int moved = 0;
+  for (Eigen::Index v = 0; v < V.rows(); ++v)
+  {
+    const int c = topo.vertexComponent[v];
+    moves[v] = c >= 0 && roughness[c].rough() && !topo.boundaryVertex[v];
+    moved += moves[v];
+  }
+  if (moved > 0)
+  {
+    taubinSteps(V, topo, moves, RoughSmoothingPasses);
   }
   return moved;
 }

@@ -24,9 +24,9 @@
  * - triangles are turned over where they disagree with their neighbours; each connected
  *   component keeps the orientation of most of its area (ReorientedTriangles; a cell `Normals`
  *   array turns with its triangles);
- * - a rough component, one whose surface folds over at the triangle scale and whose curvature
- *   changes sign from point to point (noise of a third of an edge: a raw scan), is smoothed by
- *   Taubin's steps, its boundary held (SmoothedPoints; SmoothRoughSurfaces,
+ * - a rough component, one whose curvature is mostly noise (two pairs of Taubin's steps take
+ *   more than 60% of it away: a raw scan, an isosurface of noisy data), is smoothed by Taubin's
+ *   steps, its boundary held (SmoothedPoints; SmoothRoughSurfaces,
  *   quadcover::smoothRoughComponents). The frame field would otherwise have a singularity at
  *   nearly every other point. The quads then lie on the smoothed surface;
  * - every triangle of a component with fewer than MinimumComponentTriangleCount triangles is

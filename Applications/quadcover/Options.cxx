@@ -330,8 +330,8 @@ std::vector<Option> StageOptions(Pipeline& p)
       "refine components with fewer triangles (the surface stays), 0: none"),
     MaximumTriangleCountOption(repair),
     QC_SWITCH("repair", repair, SmoothRoughSurfaces,
-      "smooth components rough at the triangle scale (noise: folds, curvature changing sign from "
-      "point to point); the quads lie on the smoothed surface"),
+      "smooth components rough at the triangle scale (noise: curvature that a little smoothing "
+      "takes away); the quads lie on the smoothed surface"),
     QC_NUMBER("curvature", curvature, NeighborhoodRadius,
       "radius of the curvature neighbourhood, in median edge lengths"),
     // three stages: written out
