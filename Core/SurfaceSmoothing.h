@@ -46,9 +46,9 @@ struct Roughness
  * over at the triangle scale and flips the sign of its curvature from point to point; the frame
  * field then has a singularity at nearly every other point (a noisy metaball surface of 61k
  * triangles: 11,914), and no map can follow it. Two pairs of Taubin's steps (the boundary held)
- * take most of that curvature away (the noisy metaballs keep 0.18 of it, with a thirtieth of the
- * noise 0.03), while the curvature of a shape stays: a decimated scan of 1,000 triangles keeps
- * 0.58, a jittered knot tube 0.48, smooth surfaces 0.8 and more, and creases gain (fandisk 1.34).
+ * take most of that curvature away (the noisy metaballs keep 0.18 of it; with a tenth of that
+ * noise, 0.03), while the curvature of a shape stays: a decimated scan of 1,000 triangles keeps
+ * 0.58, a jittered knot tube 0.48, smooth surfaces 0.7 and more, and creases gain (fandisk 1.34).
  */
 std::vector<Roughness> componentRoughness(
   const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F, const MeshTopology& topo);
