@@ -62,23 +62,6 @@ void taubinSteps(
     V += step;
   }
 }
-
-/// Per component, the sum of |angle defect| over its inner points.
-std::vector<double> absoluteCurvature(
-  const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F, const MeshTopology& topo)
-{
-  std::vector<double> sum(topo.numComponents(), 0.0);
-  const Eigen::VectorXd defect = angleDefects(V, F, topo);
-  for (Eigen::Index v = 0; v < V.rows(); ++v)
-  {
-    const int c = topo.vertexComponent[v];
-    if (c >= 0 && !topo.boundaryVertex[v])
-    {
-      sum[c] += std::abs(defect[v]);
-    }
-  }
-  return sum;
-}
 }
 
 std::vector<Roughness> componentRoughness(
@@ -91,19 +74,21 @@ std::vector<Roughness> componentRoughness(
   {
     const int c = topo.vertexComponent[v];
     inner[v] = c >= 0 && !topo.boundaryVertex[v];
-    if (inner[v] && std::abs(defect[v]) > RoughDefect)
+    if (inner[v])
     {
-      ++result[c].curvedPoints;
+      result[c].curvature += std::abs(defect[v]);
+      result[c].curvedPoints += std::abs(defect[v]) > RoughDefect ? 1 : 0;
     }
   }
-  const std::vector<double> before = absoluteCurvature(V, F, topo);
   Eigen::MatrixX3d probe = V;
   taubinSteps(probe, topo, inner, RoughProbePasses);
-  const std::vector<double> after = absoluteCurvature(probe, F, topo);
-  for (int c = 0; c < topo.numComponents(); ++c)
+  const Eigen::VectorXd left = angleDefects(probe, F, topo);
+  for (Eigen::Index v = 0; v < V.rows(); ++v)
   {
-    result[c].curvature = before[c];
-    result[c].curvatureLeft = after[c];
+    if (inner[v])
+    {
+      result[topo.vertexComponent[v]].curvatureLeft += std::abs(left[v]);
+    }
   }
   return result;
 }

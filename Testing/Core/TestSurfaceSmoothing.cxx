@@ -13,19 +13,6 @@ using namespace quadcover;
 
 namespace
 {
-double meanEdgeLength(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F)
-{
-  double sum = 0.0;
-  for (Eigen::Index f = 0; f < F.rows(); ++f)
-  {
-    for (int k = 0; k < 3; ++k)
-    {
-      sum += (V.row(F(f, k)) - V.row(F(f, (k + 1) % 3))).norm();
-    }
-  }
-  return sum / (3.0 * static_cast<double>(F.rows()));
-}
-
 /// Whether any component of V, F is rough.
 bool anyRough(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F)
 {
@@ -57,7 +44,7 @@ int sharplyCurvedPoints(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F)
 TEST(SurfaceSmoothing, ANoisySphereIsRoughAndComesOutSmoothAndRound)
 {
   const Surface sphere = makeIcosphere(1.0, 5);
-  const double edge = meanEdgeLength(sphere.V, sphere.F);
+  const double edge = meanEdgeLength(sphere);
   Eigen::MatrixX3d V = withNoise(sphere, 0.3, 7).V;
   ASSERT_TRUE(anyRough(V, sphere.F));
   const int before = sharplyCurvedPoints(V, sphere.F);

@@ -84,7 +84,7 @@ Surface makeTorus(double R, double r, int nu, int nv)
   return s;
 }
 
-Surface withNoise(const Surface& s, double noise, unsigned seed)
+double meanEdgeLength(const Surface& s)
 {
   double edges = 0.0;
   for (Eigen::Index f = 0; f < s.F.rows(); ++f)
@@ -94,7 +94,12 @@ Surface withNoise(const Surface& s, double noise, unsigned seed)
       edges += (s.V.row(s.F(f, k)) - s.V.row(s.F(f, (k + 1) % 3))).norm();
     }
   }
-  const double sigma = noise * edges / std::max<double>(3.0 * s.F.rows(), 1.0);
+  return edges / std::max<double>(3.0 * s.F.rows(), 1.0);
+}
+
+Surface withNoise(const Surface& s, double noise, unsigned seed)
+{
+  const double sigma = noise * meanEdgeLength(s);
   std::mt19937 rng(seed);
   Surface out;
   out.name = s.name + " with noise";

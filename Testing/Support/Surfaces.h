@@ -28,6 +28,10 @@ Surface makeTorus(double R, double r, int nu, int nv);
 /// Sphere from a subdivided icosahedron (20 * 4^level triangles).
 Surface makeIcosphere(double radius, int level);
 
+/// The mean length of s's triangles' edges (each inner edge counted from both sides; 0 without
+/// triangles).
+double meanEdgeLength(const Surface& s);
+
 /// `s` with every coordinate of every point moved by a normal deviate of `noise` mean edge
 /// lengths (Box-Muller on mt19937: the same surface on every platform), as a rough scan; its
 /// curvatures dropped.
