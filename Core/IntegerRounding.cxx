@@ -410,6 +410,28 @@ Eigen::VectorXd solveContinuous(const SeamlessSystem& sys, bool greedy, HessianF
   return x;
 }
 
+double countedCells(const Inputs& in, const SeamlessSystem& sys, const Eigen::VectorXd& x,
+  const Parameterization& out)
+{
+  const Eigen::MatrixX2d uv = sys.uv(x);
+  double cells = 0.0;
+  for (int f = 0; f < in.numFaces(); ++f)
+  {
+    // a thin strip's finer grid's cells count as the cells of the uniform grid they replace
+    const double cell = sys.countedCell.size() > 0 ? sys.countedCell[f] : sys.cell(f);
+    cells += 0.5 * twiceUVArea(uv, out.cornerSector, f) * cell * cell;
+  }
+  return cells;
+}
+
+void refineGrid(double factor, SeamlessSystem& sys, Eigen::VectorXd& x, Parameterization& out)
+{
+  x *= factor;
+  sys.rhs *= factor;
+  sys.energyNorm *= factor * factor;
+  out.edgeLength /= factor;
+}
+
 void correctEdgeLength(
   const Inputs& in, SeamlessSystem& sys, Eigen::VectorXd& x, Parameterization& out)
 {
@@ -419,22 +441,11 @@ void correctEdgeLength(
   }
   // The constraints are homogeneous, so the minimizer is linear in the right-hand side
   // (1 / edgeLength); H and S do not depend on it.
-  const Eigen::MatrixX2d uv = sys.uv(x);
-  double cells = 0.0;
-  for (int f = 0; f < in.numFaces(); ++f)
-  {
-    // a thin strip's finer grid's cells count as the cells of the uniform grid they replace
-    const double cell = sys.countedCell.size() > 0 ? sys.countedCell[f] : sys.cell(f);
-    cells += 0.5 * twiceUVArea(uv, out.cornerSector, f) * cell * cell;
-  }
+  const double cells = countedCells(in, sys, x, out);
   if (cells > 0 && std::isfinite(cells))
   {
     // bounded: folds cancel area, and a badly folded map must not ask for 100x the quads
-    const double factor = std::clamp(std::sqrt(in.options.targetQuadCount / cells), 0.5, 4.0);
-    x *= factor;
-    sys.rhs *= factor;
-    sys.energyNorm *= factor * factor;
-    out.edgeLength /= factor;
+    refineGrid(std::clamp(std::sqrt(in.options.targetQuadCount / cells), 0.5, 4.0), sys, x, out);
   }
 }
 

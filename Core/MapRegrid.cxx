@@ -137,9 +137,7 @@ bool regridDefectiveMap(const Inputs& in, const Field& field, SeamlessSystem& sy
   }
   // the trials share one repair's untangling budget: a map that no grid can repair (the
   // teapot's sliver cone) costs at most twice the time, not seven times
-  ParameterizationOptions trialOptions = in.options;
-  trialOptions.untangleWork = std::max(1, in.options.untangleWork / tries);
-  const Inputs trialIn{ in.V, in.F, in.topo, in.geometry, in.frameU, in.matching, trialOptions };
+  const double trialShare = 1.0 / tries;
   const Eigen::VectorXd rhs = sys.rhs;
   const double energyNorm = sys.energyNorm;
   // the scale (in 1 / edgeLength) of the best map so far; 1: the first
@@ -183,21 +181,22 @@ bool regridDefectiveMap(const Inputs& in, const Field& field, SeamlessSystem& sy
     // every map it changed valid meshes into invalid ones (cheburashka and decimated-knight,
     // smoothest field, 1,000 quads).
     const Eigen::VectorXd integers =
-      roundIntegers(trialIn, field, sys, xt, factor, greedy, trial, part.part(0.0, 0.1), true);
+      roundIntegers(in, field, sys, xt, factor, greedy, trial, part.part(0.0, 0.1), true);
     solveWithIntegersFixed(sys, factor, integers, greedy, xt, trial);
     Defects found;
     found.flipped = flippedFaces(sys.uv(xt), trial.cornerSector);
     trial.flippedRounded = static_cast<int>(found.flipped.size());
     trial.energyRounded = sys.energy(xt);
-    found.wrong = wrongWindings(trialIn, field, trial, sys.uv(xt));
-    repairMap(trialIn, field, sys, xt, found, trial, part.part(0.1, 1.0));
+    found.wrong = wrongWindings(in, field, trial, sys.uv(xt));
+    repairMap(
+      in, field, sys, xt, found, repairBudget(in, out, trialShare), trial, part.part(0.1, 1.0));
     ++out.regrids;
     out.untangleEvaluations += trial.untangleEvaluations;
     // a better map replaces the first (an earlier trial wins a tie): one with fewer defects can
     // still give worse quads (the teapot's spout, smoothest field: 9 defects and valid quads; 1
     // defect at 4 times the quads, a -1/4 cone closed up, and a quad against the surface), so
     // only one without defects (but flat triangles) or one whose quads keep the topology does
-    const int trialRank = mapRank(trialIn, found, sys.uv(xt), trial.cornerSector);
+    const int trialRank = mapRank(in, found, sys.uv(xt), trial.cornerSector);
     if (trialRank < bestRank)
     {
       bestRank = trialRank;

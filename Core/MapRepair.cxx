@@ -7,6 +7,7 @@
 #include <Eigen/Geometry>
 #include <Eigen/LU>
 
+#include <algorithm>
 #include <cmath>
 #include <utility>
 
@@ -43,14 +44,14 @@ class MapRepair
 {
 public:
   MapRepair(const Inputs& in, const Field& field, const SeamlessSystem& sys,
-    const Parameterization& out, const Progress& progress)
+    const Parameterization& out, long long budget, const Progress& progress)
     : in_(in)
     , field_(field)
     , sys_(sys)
     , out_(out)
     , Dr_(sys.D)
     , sqrtArea_(areaRoots(sys.faceArea))
-    , given_(static_cast<long long>(in.options.untangleWork) * in.numFaces())
+    , given_(budget)
     , work_(given_)
     , untangler_{ Dr_, sys.D, sqrtArea_, out.edgeLength, sys.cellScale, sys.numReal, &work_,
       Untangler::DefaultTheta, in.options.numberOfThreads }
@@ -291,15 +292,34 @@ std::vector<int> wrongWindings(
   return wrong;
 }
 
+long long untangleBudget(const Inputs& in)
+{
+  return static_cast<long long>(std::max(0, in.options.untangleWork)) *
+    std::min<long long>(in.numFaces(), UntangleBudgetTriangles);
+}
+
+long long repairBudget(const Inputs& in, const Parameterization& out, double share)
+{
+  const double budget = static_cast<double>(untangleBudget(in));
+  const double left = UntangleBudgetShares * budget - static_cast<double>(out.untangleEvaluations);
+  return static_cast<long long>(std::max(0.0, std::min(share * budget, left)));
+}
+
 void repairMap(const Inputs& in, const Field& field, const SeamlessSystem& sys, Eigen::VectorXd& x,
-  Defects& defects, Parameterization& out, const Progress& progress)
+  Defects& defects, long long budget, Parameterization& out, const Progress& progress)
 {
   if (defects.count() == 0 || in.options.maximumUntangleRounds <= 0)
   {
     return;
   }
+  if (budget <= 0)
+  {
+    out.untangleBudgetSpent = true; // nothing left to spend
+    out.untangleSeconds = 0.0;
+    return;
+  }
   const auto started = std::chrono::steady_clock::now();
-  MapRepair repair(in, field, sys, out, progress);
+  MapRepair repair(in, field, sys, out, budget, progress);
   // kept in case the repair leaves a map that scores worse than the one it was given
   const Eigen::VectorXd before = x;
   const Defects found = defects;

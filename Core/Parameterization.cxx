@@ -183,11 +183,26 @@ void limitEdgeLengthByCurvature(
   {
     return;
   }
-  const double factor = out.edgeLength / longest;
-  x *= factor;
-  sys.rhs *= factor;
-  sys.energyNorm *= factor * factor;
-  out.edgeLength = longest;
+  refineGrid(out.edgeLength / longest, sys, x, out);
+}
+
+/// For ParameterizationOptions::minimumQuadsPerSingularity: the grid made finer (refineGrid)
+/// where the map would cover fewer unit cells (countedCells) than that many per branch point.
+void limitEdgeLengthBySingularities(const Inputs& in, const Field& field, SeamlessSystem& sys,
+  Eigen::VectorXd& x, Parameterization& out)
+{
+  const double perPoint = in.options.minimumQuadsPerSingularity;
+  if (in.options.targetEdgeLength != 0.0 || !(perPoint > 0) || sys.numColumns() == 0)
+  {
+    return;
+  }
+  const double branchPoints = static_cast<double>(
+    std::count_if(field.branch.begin(), field.branch.end(), [](char b) { return b != 0; }));
+  const double cells = countedCells(in, sys, x, out);
+  if (cells > 0 && cells < perPoint * branchPoints)
+  {
+    refineGrid(std::sqrt(perPoint * branchPoints / cells), sys, x, out);
+  }
 }
 
 /// out.sectorUV and cornerUV from the columns' values x.
@@ -370,15 +385,10 @@ void repairFirstThenRegrid(const Inputs& in, const Field& field, SeamlessSystem&
   Eigen::VectorXd& x, Defects& defects, Parameterization& out, const Progress& progress)
 {
   const int trials = round ? regridTrials(in, sys, out.edgeLength) : 0;
-  ParameterizationOptions firstOptions = in.options;
-  if (trials > 0)
-  {
-    firstOptions.untangleWork = std::max(1, in.options.untangleWork / trials);
-  }
-  const Inputs firstIn{ in.V, in.F, in.topo, in.geometry, in.frameU, in.matching, firstOptions };
   const Eigen::VectorXd given = x;
   const Defects found = defects;
-  repairMap(firstIn, field, sys, x, defects, out, progress.part(0.0, 0.4));
+  repairMap(in, field, sys, x, defects, repairBudget(in, out, trials > 0 ? 1.0 / trials : 1.0), out,
+    progress.part(0.0, 0.4));
   const bool spent = out.untangleBudgetSpent;
   const bool replaced = round &&
     regridDefectiveMap(
@@ -388,7 +398,7 @@ void repairFirstThenRegrid(const Inputs& in, const Field& field, SeamlessSystem&
     const double firstSeconds = out.untangleSeconds;
     x = given;
     defects = found;
-    repairMap(in, field, sys, x, defects, out, progress.part(0.7, 1.0));
+    repairMap(in, field, sys, x, defects, repairBudget(in, out, 1.0), out, progress.part(0.7, 1.0));
     out.untangleSeconds += firstSeconds;
   }
   progress.report(1.0);
@@ -432,10 +442,11 @@ void setCellScale(const Eigen::VectorXd& scale, double h, SeamlessSystem& sys)
 
 /// The map made again on sys's cells as they are now: the continuous map solved with the same
 /// factor (its edge length corrected for the quad count when `correctLength`), rounded and
-/// repaired. Returns the new map (its untangling counted afresh) with x and its defects.
+/// repaired with `budget`. Returns the new map (its untangling counted afresh) with x and its
+/// defects.
 Parameterization remapOnCells(const Inputs& in, const Field& field, SeamlessSystem& sys,
-  const HessianFactor& factor, bool greedy, bool correctLength, const Parameterization& out,
-  Eigen::VectorXd& x, Defects& found, const Progress& progress)
+  const HessianFactor& factor, bool greedy, bool correctLength, long long budget,
+  const Parameterization& out, Eigen::VectorXd& x, Defects& found, const Progress& progress)
 {
   x = factor.solver.solve(Eigen::VectorXd(sys.P.transpose() * (sys.D.transpose() * sys.rhs)));
   Parameterization trial = out;
@@ -456,7 +467,7 @@ Parameterization remapOnCells(const Inputs& in, const Field& field, SeamlessSyst
   trial.flippedRounded = static_cast<int>(found.flipped.size());
   trial.energyRounded = sys.energy(x);
   found.wrong = wrongWindings(in, field, trial, sys.uv(x));
-  repairMap(in, field, sys, x, found, trial, progress.part(0.1, 1.0));
+  repairMap(in, field, sys, x, found, budget, trial, progress.part(0.1, 1.0));
   return trial;
 }
 
@@ -495,7 +506,8 @@ void refineAroundDefects(const Inputs& in, const Field& field, SeamlessSystem& s
   // as for the adaptive grid: a map whose repair spent its whole budget is beyond a local repair
   // (the tube narrowing to a point at 500 quads: the second map cost 12 s and kept 3,134
   // defects against 474)
-  if (defects.count() == 0 || !(finer > 1) || out.untangleBudgetSpent)
+  const long long budget = repairBudget(in, out, 1.0);
+  if (defects.count() == 0 || !(finer > 1) || out.untangleBudgetSpent || budget <= 0)
   {
     return;
   }
@@ -536,7 +548,7 @@ void refineAroundDefects(const Inputs& in, const Field& field, SeamlessSystem& s
   Eigen::VectorXd xt;
   Defects found;
   Parameterization trial =
-    remapOnCells(in, field, sys, factor, greedy, false, out, xt, found, progress);
+    remapOnCells(in, field, sys, factor, greedy, false, budget, out, xt, found, progress);
   keepFewerDefects(std::move(trial), std::move(xt), std::move(found), saved, sys, x, defects, out);
 }
 
@@ -548,13 +560,16 @@ void adaptAroundThinParts(const Inputs& in, const std::vector<char>& creases, co
   SeamlessSystem& sys, const HessianFactor& factor, bool greedy, Eigen::VectorXd& x,
   Defects& defects, Parameterization& out, const Progress& progress)
 {
-  constexpr int AdaptiveTrialBudgetShare = 4;
+  // a quarter of the untangling budget: on a map that no grid repairs (a tube narrowing to a
+  // point) the trial would cost as much as the first map's repair again
+  constexpr double AdaptiveTrialBudgetShare = 0.25;
   const double edgeOverRadius = in.options.defectAdaptiveCurvature;
+  const long long budget = repairBudget(in, out, AdaptiveTrialBudgetShare);
   // a map whose repair spent its whole budget is beyond a local repair: the trial would only
   // add time (a tube narrowing to a point at 500 quads: 41 -> 49 s for a map of 5,520 defects
   // against 474)
   if (defects.count() == 0 || !(edgeOverRadius > 0) || in.options.adaptiveCurvature > 0 ||
-    out.untangleBudgetSpent)
+    out.untangleBudgetSpent || budget <= 0)
   {
     return;
   }
@@ -569,15 +584,10 @@ void adaptAroundThinParts(const Inputs& in, const std::vector<char>& creases, co
   const SavedCells saved(sys);
   setCellScale(given.cwiseMin(curved), h, sys);
   sys.countedCell = sys.cellScale.cwiseQuotient(curved);
-  // a quarter of the untangling budget: on a map that no grid repairs (a tube narrowing to a
-  // point) the trial would cost as much as the first map's repair again
-  ParameterizationOptions trialOptions = in.options;
-  trialOptions.untangleWork = std::max(1, in.options.untangleWork / AdaptiveTrialBudgetShare);
-  const Inputs trialIn{ in.V, in.F, in.topo, in.geometry, in.frameU, in.matching, trialOptions };
   Eigen::VectorXd xt;
   Defects found;
   Parameterization trial =
-    remapOnCells(trialIn, field, sys, factor, greedy, true, out, xt, found, progress);
+    remapOnCells(in, field, sys, factor, greedy, true, budget, out, xt, found, progress);
   keepFewerDefects(std::move(trial), std::move(xt), std::move(found), saved, sys, x, defects, out);
 }
 
@@ -681,6 +691,7 @@ Parameterization mapComponent(const Inputs& given, const Progress& progress)
   {
     limitEdgeLengthByCurvature(in, sys, x, out);
   }
+  limitEdgeLengthBySingularities(in, field, sys, x, out);
   const Eigen::VectorXd continuous = x;
   out.energyContinuous = sys.energy(x);
   out.flippedContinuous = static_cast<int>(flippedFaces(sys.uv(x), out.cornerSector).size());

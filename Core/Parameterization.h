@@ -52,6 +52,12 @@ struct ParameterizationOptions
   /// with 3, flat quads cut through the tube and some face against the surface; 0: no limit.
   /// Spheres are not limited at 24 quads (0.72 radius), nor is any surface at the usual counts.
   double curvatureEdgeLength = 1.5;
+  /// With targetQuadCount, the grid has at least this many cells per branch point of the field
+  /// (after the pairs closer than minimumSingularitySeparation cancel): a grid too coarse for
+  /// its singularities folds between them (decimated-knight at 100 quads: 90 branch points on a
+  /// map of 186 cells, quads in two pieces; a gyroid at 300 quads: 209 on 322, two minutes of
+  /// untangling), so such a surface gets more quads than asked; 0: no limit.
+  double minimumQuadsPerSingularity = 4;
   /// Boundary edges along a frame direction (within boundaryTolerance degrees) lie on an integer
   /// grid line (constant u or v), so quads end cleanly at the border.
   /// The same concept as SmootherOptions::alignToBoundary, and its default.
@@ -73,9 +79,14 @@ struct ParameterizationOptions
   /// of their neighbourhood (2 rings, then 4, 8, 16) move to minimize a foldover-free distortion
   /// energy, in at most this many rounds per neighbourhood; 0 leaves flips as they are.
   int maximumUntangleRounds = 30;
-  /// The untangling's budget, so that its time stays bounded by a multiple of the solve's: at
-  /// most this many energy evaluations per triangle of the surface, in all (a Newton step's
-  /// Hessian counts as 12; counted as work, not time, so that every machine gives the same map).
+  /// The untangling's budget, so that its time stays bounded: at most this many energy
+  /// evaluations per triangle of the surface, a surface of more than 20,000 triangles counted as
+  /// one of 20,000 (param::UntangleBudgetTriangles), for one repair of a map (its trials on other
+  /// grids share one such budget, the one on the adaptive grid has a quarter), and twice that for
+  /// all of one map's repairs together: the first, the trials on other grids and cells, a repair
+  /// done again (a Newton step's Hessian counts as 12; counted as work, not time, so that every
+  /// machine gives the same map). Before both bounds armadillo (86k triangles) took 50 s at 100
+  /// quads, its five repairs 10,000 evaluations per triangle in all.
   /// On the shared and generated meshes at 1,000, 3,000 and 6,500 quads, both with the defaults
   /// and the smoothest field, every map that came out of its repair without a flipped triangle
   /// spent at most 1,553 (the teapot at 1,000 quads); maps that kept flips spent up to 9,575

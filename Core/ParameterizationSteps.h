@@ -211,9 +211,18 @@ struct HessianFactor
 Eigen::VectorXd solveContinuous(const SeamlessSystem& sys, bool greedy, HessianFactor& factor,
   Parameterization& out, const Progress& progress);
 
-/// For ParameterizationOptions::targetQuadCount: scales the continuous minimizer (and the
-/// right-hand side, energy scale and out.edgeLength) so that the map covers about that many
-/// unit cells.
+/// The unit cells the map x covers, a cell of a finer grid (a thin strip's, the adaptive grid's)
+/// counted as the cells of the uniform grid it replaces (SeamlessSystem::countedCell): about as
+/// many as the quads it gives.
+double countedCells(const Inputs& in, const SeamlessSystem& sys, const Eigen::VectorXd& x,
+  const Parameterization& out);
+
+/// The grid made `factor` times finer: the map x scaled by it (it is linear in 1 / edgeLength),
+/// with the right-hand side and energy scale, out.edgeLength divided by it.
+void refineGrid(double factor, SeamlessSystem& sys, Eigen::VectorXd& x, Parameterization& out);
+
+/// For ParameterizationOptions::targetQuadCount: scales the continuous minimizer (refineGrid)
+/// so that the map covers about that many unit cells (countedCells).
 void correctEdgeLength(
   const Inputs& in, SeamlessSystem& sys, Eigen::VectorXd& x, Parameterization& out);
 
@@ -245,13 +254,34 @@ struct Defects
 std::vector<int> wrongWindings(
   const Inputs& in, const Field& field, const Parameterization& out, const Eigen::MatrixX2d& uv);
 
+/// The untangling's budget of one map, in triangle energy evaluations:
+/// ParameterizationOptions::untangleWork per triangle of the surface, a surface of more than
+/// UntangleBudgetTriangles triangles counted as one of that many.
+long long untangleBudget(const Inputs& in);
+
+/// What one repair of a map may spend (repairMap's `budget`): `share` of untangleBudget, at most
+/// what the map has left, UntangleBudgetShares of it less out.untangleEvaluations (what its
+/// repairs so far spent: the first, the trials on other grids and cells). 0 when nothing is left.
+long long repairBudget(const Inputs& in, const Parameterization& out, double share);
+
+/// All the repairs of one map together (the first, its trials on other grids and cells, a repair
+/// done again) spend at most this many times untangleBudget.
+constexpr double UntangleBudgetShares = 2.0;
+
+/// A surface of more triangles has the untangling budget of one of this many: the untangling's
+/// time stays bounded whatever the surface's size (a repair's share about 4 s on a 2-core
+/// machine, all of a map's repairs about 8 s: armadillo at 100 quads). Its flips lie around the
+/// singularities and the grid's folds, whose number does not grow with the triangles.
+constexpr long long UntangleBudgetTriangles = 20000;
+
 /// Untangles the flipped triangles of x and lays out again the fans wound the wrong way (up to
 /// three attempts on a map ranked by its quads, else one), keeping the best map: the one with
 /// the fewest defects, or on a rounded map small enough to cut its quads out (rankedByQuads) the
 /// best by mapRank first. Ties go to the later attempt, then to the repaired map over x as it was
-/// given. Updates `defects` and out.untangleRegions, untangleSeconds.
+/// given. Spends at most `budget` triangle energy evaluations (repairBudget). Updates `defects`
+/// and out.untangleRegions, untangleSeconds, untangleEvaluations, untangleBudgetSpent.
 void repairMap(const Inputs& in, const Field& field, const SeamlessSystem& sys, Eigen::VectorXd& x,
-  Defects& defects, Parameterization& out, const Progress& progress);
+  Defects& defects, long long budget, Parameterization& out, const Progress& progress);
 
 // ---- maps that keep defects (MapRegrid.cxx) ----
 

@@ -165,6 +165,7 @@ vtkQuadCoverSolver::vtkQuadCoverSolver()
   this->UntangleWork = defaults.untangleWork;
   this->MinimumComponentQuadCount = defaults.minimumComponentQuadCount;
   this->CurvatureEdgeLength = defaults.curvatureEdgeLength;
+  this->MinimumQuadsPerSingularity = defaults.minimumQuadsPerSingularity;
   this->MaximumRegrids = defaults.maximumRegrids;
   this->MaximumRegridQuadCount = defaults.maximumRegridQuadCount;
   this->MinimumSingularitySeparation = defaults.minimumSingularitySeparation;
@@ -302,6 +303,7 @@ void vtkQuadCoverSolver::Execute(vtkQuadCoverSurface& in, vtkInformationVector* 
   vtkQuadCoverEigen::RequireNumbers({ { "TargetEdgeLength", this->TargetEdgeLength },
     { "BoundaryTolerance", this->BoundaryTolerance }, { "FeatureAngle", this->FeatureAngle },
     { "CurvatureEdgeLength", this->CurvatureEdgeLength },
+    { "MinimumQuadsPerSingularity", this->MinimumQuadsPerSingularity },
     { "MaximumRegridQuadCount", this->MaximumRegridQuadCount },
     { "MinimumSingularitySeparation", this->MinimumSingularitySeparation },
     { "MaximumTriangleEdge", this->MaximumTriangleEdge }, { "ConePairGain", this->ConePairGain },
@@ -323,6 +325,7 @@ void vtkQuadCoverSolver::Execute(vtkQuadCoverSurface& in, vtkInformationVector* 
   options.untangleWork = this->UntangleWork;
   options.minimumComponentQuadCount = this->MinimumComponentQuadCount;
   options.curvatureEdgeLength = this->CurvatureEdgeLength;
+  options.minimumQuadsPerSingularity = this->MinimumQuadsPerSingularity;
   options.maximumRegrids = this->MaximumRegrids;
   options.maximumRegridQuadCount = this->MaximumRegridQuadCount;
   options.minimumSingularitySeparation = this->MinimumSingularitySeparation;
@@ -413,6 +416,7 @@ void vtkQuadCoverSolver::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "UntangleWork: " << this->UntangleWork << "\n";
   os << indent << "MinimumComponentQuadCount: " << this->MinimumComponentQuadCount << "\n";
   os << indent << "CurvatureEdgeLength: " << this->CurvatureEdgeLength << "\n";
+  os << indent << "MinimumQuadsPerSingularity: " << this->MinimumQuadsPerSingularity << "\n";
   os << indent << "MaximumRegrids: " << this->MaximumRegrids << "\n";
   os << indent << "MaximumRegridQuadCount: " << this->MaximumRegridQuadCount << "\n";
   os << indent << "MaximumTriangleEdge: " << this->MaximumTriangleEdge << "\n";

@@ -151,9 +151,11 @@ public:
   ///@}
 
   ///@{
-  /** The untangling's budget, in energy evaluations per triangle, in [1, 1000000] (default
-   * 10000): it stops there (with a warning), so its time stays bounded by a multiple of the
-   * solve's; counted as work, not seconds, so every machine gives the same map. */
+  /** The untangling's budget of one repair of a map, in energy evaluations per triangle (a
+   * surface of more than 20,000 triangles counted as one of 20,000), in [1, 1000000] (default
+   * 10000); all of a map's repairs together (its trials on other grids) spend at most twice
+   * that. It stops there (with a warning), so its time stays bounded whatever the surface's
+   * size; counted as work, not seconds, so every machine gives the same map. */
   vtkSetClampMacro(UntangleWork, int, 1, 1000000);
   vtkGetMacro(UntangleWork, int);
   ///@}
@@ -173,6 +175,14 @@ public:
    * limit. */
   vtkSetClampMacro(CurvatureEdgeLength, double, 0.0, 100.0);
   vtkGetMacro(CurvatureEdgeLength, double);
+  ///@}
+
+  ///@{
+  /** With TargetQuadCount, the grid has at least this many cells per branch point of the
+   * field, in [0, 1000] (default 4): a surface whose field has more singularities than a grid
+   * of the quads asked can hold gets more quads; 0: no limit. */
+  vtkSetClampMacro(MinimumQuadsPerSingularity, double, 0.0, 1000.0);
+  vtkGetMacro(MinimumQuadsPerSingularity, double);
   ///@}
 
   ///@{
@@ -323,6 +333,7 @@ protected:
   int UntangleWork;
   int MinimumComponentQuadCount;
   double CurvatureEdgeLength;
+  double MinimumQuadsPerSingularity;
   int MaximumRegrids;
   double MaximumRegridQuadCount;
   double MinimumSingularitySeparation;

@@ -393,13 +393,17 @@ std::vector<Option> StageOptions(Pipeline& p)
     rounding,
     QC_NUMBER("param", solver, MaximumUntangleRounds,
       "rounds of untangling per neighbourhood of flipped triangles"),
-    QC_NUMBER(
-      "param", solver, UntangleWork, "the untangling's budget, in energy evaluations per triangle"),
+    QC_NUMBER("param", solver, UntangleWork,
+      "the untangling's budget per repair, in energy evaluations per triangle (of at most 20,000 "
+      "triangles); all of a map's repairs together spend at most twice that"),
     QC_NUMBER("param", solver, MinimumComponentQuadCount,
       "quads at least on each connected component, per hole and handle (its own grid where "
       "needed)"),
     QC_NUMBER("param", solver, CurvatureEdgeLength,
       "edge length at most this over the mean curvature (4 quads around a tube), 0: no limit"),
+    QC_NUMBER("param", solver, MinimumQuadsPerSingularity,
+      "grid cells at least per singular point of the field (more quads than asked where the "
+      "field has more singularities than the grid holds), 0: no limit"),
     QC_NUMBER("param", solver, MaximumRegrids,
       "other grids (2, 1/2, 4, 1/4, 8, 16 times the quads) tried for a map left with defects or "
       "whose quads lose the surface's topology"),

@@ -942,12 +942,14 @@ struct SmoothestComponents
       s.V, s.F, topo, geometry, field.frameU, field.topology.matching, options);
   }
 
-  /// 6,500 quads, no other grids, no limit from the curvature: their maps keep defects
+  /// 6,500 quads, no other grids, no limit from the curvature nor from the singularities: their
+  /// maps keep defects
   static ParameterizationOptions defectOptions()
   {
     ParameterizationOptions options;
     options.targetQuadCount = 6500;
     options.curvatureEdgeLength = 0.0;
+    options.minimumQuadsPerSingularity = 0.0;
     options.minimumComponentQuadCount = 12;
     options.maximumRegrids = 0;
     return options;
@@ -1017,6 +1019,49 @@ TEST(Parameterization, ThinTubesGetAtLeastFourQuadsAroundThem)
   EXPECT_EQ(a.cornerUV, b.cornerUV);
 }
 
+TEST(Parameterization, AGridTooCoarseForTheFieldsSingularitiesIsMadeFiner)
+{
+  // Frames turning with a wave of short wavelength over a sphere: a field with dozens of branch
+  // points, which 16 quads cannot hold (their grid folds between them). With
+  // minimumQuadsPerSingularity the map covers at least that many cells per branch point.
+  const Surface s = makeIcosphere(1.0, 3);
+  const MeshTopology topo = buildTopology(s.F, static_cast<int>(s.V.rows()));
+  const FrameGeometry geometry = computeFrameGeometry(s.V, s.F, topo);
+  Eigen::MatrixX3d U(s.F.rows(), 3);
+  for (int f = 0; f < s.F.rows(); ++f)
+  {
+    const Eigen::Vector3d c =
+      (s.V.row(s.F(f, 0)) + s.V.row(s.F(f, 1)) + s.V.row(s.F(f, 2))).transpose() / 3.0;
+    const Eigen::Vector3d n = c.normalized();
+    const Eigen::Vector3d e1 = n.unitOrthogonal(), e2 = n.cross(e1);
+    const double angle = 3.0 * std::sin(7.0 * c.x()) * std::cos(5.0 * c.y() + 2.0 * c.z());
+    U.row(f) = (std::cos(angle) * e1 + std::sin(angle) * e2).transpose();
+  }
+  const FrameTopology field = computeMatchings(s.F, topo, geometry, U);
+  ParameterizationOptions options;
+  options.targetQuadCount = 16;
+  options.curvatureEdgeLength = 0.0;
+  options.conePairGain = 0.0;
+  options.maximumRegrids = 0;
+  options.minimumQuadsPerSingularity = 0.0;
+  const Parameterization coarse =
+    computeParameterization(s.V, s.F, topo, geometry, U, field.matching, options);
+  options.minimumQuadsPerSingularity = ParameterizationOptions().minimumQuadsPerSingularity;
+  const Parameterization finer =
+    computeParameterization(s.V, s.F, topo, geometry, U, field.matching, options);
+  const double area = 4 * M_PI; // nearly: the icosphere's is 1% less
+  const double wanted = options.minimumQuadsPerSingularity * finer.branchPoints;
+  std::printf("%d branch points: %.0f cells without the limit, %.0f with it (%.0f wanted)\n",
+    finer.branchPoints, area / std::pow(coarse.edgeLength, 2), area / std::pow(finer.edgeLength, 2),
+    wanted);
+  ASSERT_GT(wanted, 4 * 16) << "the case the test is about";
+  EXPECT_LT(area / std::pow(coarse.edgeLength, 2), 2 * 16);
+  EXPECT_GT(area / std::pow(finer.edgeLength, 2), 0.9 * wanted);
+  EXPECT_LT(area / std::pow(finer.edgeLength, 2), 1.5 * wanted) << "not finer than it must be";
+  EXPECT_EQ(finer.branchPointsOnGrid, finer.branchPoints);
+  EXPECT_LT(finer.maxSeamError, 1e-9) << "still seamless";
+}
+
 TEST(Parameterization, AMapThatKeepsDefectsIsTriedOnOtherGrids)
 {
   // With the smoothest field the small tori of Data/components.obj carry 12 to 16 branch points
@@ -1027,6 +1072,7 @@ TEST(Parameterization, AMapThatKeepsDefectsIsTriedOnOtherGrids)
   ParameterizationOptions options;
   options.targetQuadCount = 6500;
   options.curvatureEdgeLength = 0.0;      // the small tori as coarse as their share says
+  options.minimumQuadsPerSingularity = 0.0; // (at least 4 cells a branch point repairs them too)
   options.minimumComponentQuadCount = 12; // per handle: 24 on a torus, as this case was found
   options.maximumRegrids = 0;
   options.defectGridRefinement = 1.0; // the other grids alone (a finer one around the defects
@@ -1052,6 +1098,12 @@ TEST(Parameterization, AMapThatKeepsDefectsIsTriedOnOtherGrids)
     (first.cornerUV.row(f) == regridded.cornerUV.row(f) ? same : changed) += 1;
   }
   EXPECT_GT(same, changed);
+  // a grid of at least 4 cells a branch point has none on the first grid
+  options.maximumRegrids = 0;
+  options.minimumQuadsPerSingularity = ParameterizationOptions().minimumQuadsPerSingularity;
+  const Parameterization held = components.map(options);
+  EXPECT_EQ(held.flipped + held.wrongWindings, 0);
+  EXPECT_EQ(held.regrids, 0);
   // a map without defects is never touched
   const Chain c = runChain(testSurface("sphere"), 3000);
   ASSERT_EQ(c.map.flipped + c.map.wrongWindings, 0);
