@@ -3,6 +3,7 @@
 # the input's normal, per component the input's χ and boundary loops (after the counted repairs).
 #   bash Benchmarks/validity_table.sh [SHARED_DIR] [QUADS] [QUADCOVER OPTIONS...]
 # (after bash Scripts/build.sh), e.g. ... ../shared/data 6500 --smoothing-weight 1 --no-optimize-branch-points
+# GENERATED=DIR adds the surfaces Benchmarks/generated_shapes.py DIR wrote.
 set -euo pipefail
 shared=${1:-../shared/data}
 quads=${2:-6500}
@@ -11,7 +12,8 @@ source "$(dirname "$0")/common.sh"
 qc=${QUADCOVER:-build/bin/quadcover} # another build: QUADCOVER=/path/bin/quadcover
 echo "| surface | triangles | quads | valid | components (input) | χ (input) | boundary loops (input) | against normal | Hausdorff % | irregular | edge RSD % | seconds |"
 echo "|---|---:|---:|---|---|---|---|---:|---:|---:|---:|---:|"
-for mesh in $(surfaces "$shared" and-generated all); do
+generated=${GENERATED:+$(ls "$GENERATED"/*.obj)}
+for mesh in $(surfaces "$shared" and-generated all) $generated; do
   name=$(basename "$mesh" .obj)
   "$qc" "$mesh" -o "$tmp/ref.vtp" --stage repair 2>/dev/null || { echo "| $name | refused: $("$qc" "$mesh" -o "$tmp/ref.vtp" --stage repair 2>&1 | head -1) |"; continue; }
   start=$(date +%s.%N)
