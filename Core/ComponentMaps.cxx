@@ -153,6 +153,7 @@ void addComponent(const Inputs& in, const Component& part, const MeshTopology& t
   out.regrids += map.regrids;
   out.untangleSeconds += map.untangleSeconds;
   out.untangleBudgetSpent = out.untangleBudgetSpent || map.untangleBudgetSpent;
+  out.finerForSingularities = out.finerForSingularities || map.finerForSingularities;
   out.untangleEvaluations += map.untangleEvaluations;
   out.maxSeamError = std::max(out.maxSeamError, map.maxSeamError);
   out.solveSeconds.insert(out.solveSeconds.end(), map.solveSeconds.begin(), map.solveSeconds.end());

@@ -202,6 +202,7 @@ void limitEdgeLengthBySingularities(const Inputs& in, const Field& field, Seamle
   if (cells > 0 && cells < perPoint * branchPoints)
   {
     refineGrid(std::sqrt(perPoint * branchPoints / cells), sys, x, out);
+    out.finerForSingularities = true;
   }
 }
 

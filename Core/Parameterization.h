@@ -219,6 +219,9 @@ struct Parameterization
   /// triangles where the grid is finer than edgeLength (maximumThinStripRefinement,
   /// adaptiveCurvature, or defectGridRefinement where it was kept)
   int finerGridTriangles = 0;
+  /// the grid was made finer than targetQuadCount asks, for the field's branch points
+  /// (minimumQuadsPerSingularity; on a surface of several components, on one of them at least)
+  bool finerForSingularities = false;
   int branchPoints = 0;         ///< inner points with a non-zero layer shift
   int branchPointsOnGrid = 0;   ///< of those, mapped to integer (u, v) within 1e-6
   int seamEdges = 0;            ///< cut edges

@@ -341,6 +341,12 @@ void vtkQuadCoverSolver::Execute(vtkQuadCoverSurface& in, vtkInformationVector* 
   const quadcover::FrameGeometry geometry = quadcover::computeFrameGeometry(in.V, in.F, in.topo);
   const quadcover::Parameterization map = quadcover::computeParameterization(in.V, in.F, in.topo,
     geometry, U, matching, options, vtkQuadCoverEigen::CoreProgress(this, 0.15, 0.95));
+  if (map.finerForSingularities)
+  {
+    this->Warn("the frame field has " + std::to_string(map.branchPoints) +
+      " singular points, more than the quads asked can hold (MinimumQuadsPerSingularity); the "
+      "grid was made finer, and there are more quads than asked");
+  }
   if (map.wrongWindings > 0)
   {
     this->Warn(std::to_string(map.wrongWindings) +

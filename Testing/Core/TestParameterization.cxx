@@ -1060,6 +1060,8 @@ TEST(Parameterization, AGridTooCoarseForTheFieldsSingularitiesIsMadeFiner)
   EXPECT_LT(area / std::pow(finer.edgeLength, 2), 1.5 * wanted) << "not finer than it must be";
   EXPECT_EQ(finer.branchPointsOnGrid, finer.branchPoints);
   EXPECT_LT(finer.maxSeamError, 1e-9) << "still seamless";
+  EXPECT_FALSE(coarse.finerForSingularities);
+  EXPECT_TRUE(finer.finerForSingularities) << "said, for the filter's warning";
 }
 
 TEST(Parameterization, AMapThatKeepsDefectsIsTriedOnOtherGrids)

@@ -18,6 +18,7 @@
 #include "vtkQuadCoverEigen.h"
 #include "vtkQuadCoverErrorObserver.h"
 #include "vtkQuadCoverSolver.h"
+#include "vtkTriangle.h"
 
 #include "GridMapChecks.h"
 #include "Matchings.h"
@@ -130,6 +131,13 @@ TEST(vtkQuadCoverSolver, DefaultsClampsAndPrintSelf)
   std::ostringstream curved;
   s->Print(curved);
   EXPECT_NE(curved.str().find("DefectAdaptiveCurvature: 0"), std::string::npos);
+  // ParameterizationOptions::minimumQuadsPerSingularity
+  EXPECT_EQ(s->GetMinimumQuadsPerSingularity(), 4.0);
+  s->SetMinimumQuadsPerSingularity(-1.0);
+  EXPECT_EQ(s->GetMinimumQuadsPerSingularity(), 0.0);
+  std::ostringstream singular;
+  s->Print(singular);
+  EXPECT_NE(singular.str().find("MinimumQuadsPerSingularity: 0"), std::string::npos);
   EXPECT_NE(os.str().find("RoundingMode: Simple"), std::string::npos);
   EXPECT_NE(os.str().find("PureQuads: On"), std::string::npos);
 }
@@ -380,6 +388,52 @@ void ExpectRepairedOnAFinerGrid(Chain& chain)
   EXPECT_EQ(checks::flippedTriangles(uv), 0);
   EXPECT_EQ(checks::seamViolations(F, topo, uv), 0) << "the finer grid's map is still seamless";
 }
+}
+
+TEST(vtkQuadCoverSolver, AFieldOfMoreSingularitiesThanTheQuadsAskedGetsAFinerGridAndAWarning)
+{
+  // decimated-knight at 100 quads: its field keeps about 90 branch points, which a grid of 100
+  // cells cannot hold (its quads came apart into two pieces); with MinimumQuadsPerSingularity
+  // the grid has at least 4 cells each, and the solver says so.
+  std::string path;
+  vtkSmartPointer<vtkPolyData> surface = LoadTestSurface("decimated-knight", path);
+  if (!surface)
+  {
+    GTEST_SKIP() << "mesh not found: " << path;
+  }
+  auto run = [&](double perPoint, double& cells, int& warned) {
+    Chain chain(surface);
+    chain.solver->SetTargetQuadCount(100);
+    chain.solver->SetMinimumQuadsPerSingularity(perPoint);
+    vtkPolyData* out = chain.Run();
+    ASSERT_EQ(chain.errors->GetError(), "");
+    const double h = out->GetFieldData()->GetArray("EdgeLength")->GetTuple1(0);
+    double area = 0.0;
+    for (vtkIdType c = 0; c < out->GetNumberOfCells(); ++c)
+    {
+      double p[3][3];
+      for (int k = 0; k < 3; ++k)
+      {
+        out->GetPoint(out->GetCell(c)->GetPointId(k), p[k]);
+      }
+      area += vtkTriangle::TriangleArea(p[0], p[1], p[2]);
+    }
+    cells = area / (h * h);
+    warned = 0;
+    for (int i = 0; i < chain.errors->GetNumberOfWarnings(); ++i)
+    {
+      warned += chain.errors->GetWarning(i).find("singular points") != std::string::npos;
+    }
+  };
+  double without = 0.0, with = 0.0;
+  int warnedWithout = 0, warnedWith = 0;
+  run(0.0, without, warnedWithout);
+  run(4.0, with, warnedWith);
+  std::printf("cells: %.0f without the limit, %.0f with it\n", without, with);
+  EXPECT_LT(without, 200.0);
+  EXPECT_GT(with, 300.0) << "4 cells for each of some 90 branch points";
+  EXPECT_EQ(warnedWithout, 0);
+  EXPECT_EQ(warnedWith, 1);
 }
 
 TEST(vtkQuadCoverSolver, AFinerGridAroundTheDefectsRepairsTheMap)
