@@ -156,9 +156,11 @@ bool regridDefectiveMap(const Inputs& in, const Field& field, SeamlessSystem& sy
     {
       continue;
     }
-    if (q < 1.0 && cells * q < in.options.minimumComponentQuadCount)
+    if (q < 1.0 &&
+      cells * q <
+        std::max<double>(in.options.minimumComponentQuadCount, cellsForSingularities(in, field)))
     {
-      continue; // never fewer quads than a component must have
+      continue; // never fewer quads than a component or the field's singularities must have
     }
     if (q > 4.0 && cells * q > in.options.maximumRegridQuadCount)
     {

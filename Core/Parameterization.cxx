@@ -187,21 +187,20 @@ void limitEdgeLengthByCurvature(
 }
 
 /// For ParameterizationOptions::minimumQuadsPerSingularity: the grid made finer (refineGrid)
-/// where the map would cover fewer unit cells (countedCells) than that many per branch point.
+/// where the map would cover fewer unit cells (countedCells) than cellsForSingularities. (Folds
+/// of the continuous map cancel area: the grid can come out finer than it must.)
 void limitEdgeLengthBySingularities(const Inputs& in, const Field& field, SeamlessSystem& sys,
   Eigen::VectorXd& x, Parameterization& out)
 {
-  const double perPoint = in.options.minimumQuadsPerSingularity;
-  if (in.options.targetEdgeLength != 0.0 || !(perPoint > 0) || sys.numColumns() == 0)
+  const double wanted = cellsForSingularities(in, field);
+  if (!(wanted > 0) || sys.numColumns() == 0)
   {
     return;
   }
-  const double branchPoints = static_cast<double>(
-    std::count_if(field.branch.begin(), field.branch.end(), [](char b) { return b != 0; }));
   const double cells = countedCells(in, sys, x, out);
-  if (cells > 0 && cells < perPoint * branchPoints)
+  if (cells > 0 && cells < wanted)
   {
-    refineGrid(std::sqrt(perPoint * branchPoints / cells), sys, x, out);
+    refineGrid(std::sqrt(wanted / cells), sys, x, out);
     out.finerForSingularities = true;
   }
 }
@@ -379,7 +378,8 @@ int settleSingularitiesCloserThanGrid(const Inputs& in, const FrameTopology& giv
  * that other grids are tried for is first repaired with the budget of one trial: where its grid
  * cannot be repaired cheaply another one mostly can (the truck's pieces of a few hundred
  * triangles spent their whole budget, 0.25 to 0.4 s each, and kept 2 to 10 defects). When no
- * other grid does better and that budget was spent, its repair goes on with the rest.
+ * other grid does better and that budget was spent, its repair is done again from the start with
+ * what the map has left (repairBudget), if that is more, and kept if it has no more defects.
  */
 void repairFirstThenRegrid(const Inputs& in, const Field& field, SeamlessSystem& sys,
   const HessianFactor& factor, const Eigen::VectorXd& continuous, bool greedy, bool round,
@@ -388,19 +388,29 @@ void repairFirstThenRegrid(const Inputs& in, const Field& field, SeamlessSystem&
   const int trials = round ? regridTrials(in, sys, out.edgeLength) : 0;
   const Eigen::VectorXd given = x;
   const Defects found = defects;
-  repairMap(in, field, sys, x, defects, repairBudget(in, out, trials > 0 ? 1.0 / trials : 1.0), out,
-    progress.part(0.0, 0.4));
+  const long long firstBudget = repairBudget(in, out, trials > 0 ? 1.0 / trials : 1.0);
+  repairMap(in, field, sys, x, defects, firstBudget, out, progress.part(0.0, 0.4));
   const bool spent = out.untangleBudgetSpent;
   const bool replaced = round &&
     regridDefectiveMap(
       in, field, sys, factor, continuous, greedy, x, defects, out, progress.part(0.4, 0.7));
-  if (trials > 0 && !replaced && spent && defects.count() > 0)
+  // what is left after the trials (with maximumRegrids 1 or 2 no more than the first had)
+  const long long again = repairBudget(in, out, 1.0);
+  if (trials > 0 && !replaced && spent && defects.count() > 0 && again > firstBudget)
   {
     const double firstSeconds = out.untangleSeconds;
+    Eigen::VectorXd first = std::move(x);
+    Defects firstDefects = std::move(defects);
     x = given;
     defects = found;
-    repairMap(in, field, sys, x, defects, repairBudget(in, out, 1.0), out, progress.part(0.7, 1.0));
+    repairMap(in, field, sys, x, defects, again, out, progress.part(0.7, 1.0));
     out.untangleSeconds += firstSeconds;
+    if (defects.count() > firstDefects.count())
+    {
+      x = std::move(first);
+      defects = std::move(firstDefects);
+      out.untangleBudgetSpent = true;
+    }
   }
   progress.report(1.0);
 }
@@ -460,6 +470,7 @@ Parameterization remapOnCells(const Inputs& in, const Field& field, SeamlessSyst
   if (correctLength)
   {
     correctEdgeLength(in, sys, x, trial);
+    limitEdgeLengthBySingularities(in, field, sys, x, trial); // which the correction may undo
   }
   const Eigen::VectorXd integers =
     roundIntegers(in, field, sys, x, factor, greedy, trial, progress.part(0.0, 0.1));

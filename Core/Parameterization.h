@@ -53,8 +53,9 @@ struct ParameterizationOptions
   /// Spheres are not limited at 24 quads (0.72 radius), nor is any surface at the usual counts.
   double curvatureEdgeLength = 1.5;
   /// With targetQuadCount, the grid has at least this many cells per branch point of the field
-  /// (after the pairs closer than minimumSingularitySeparation cancel): a grid too coarse for
-  /// its singularities folds between them (decimated-knight at 100 quads: 90 branch points on a
+  /// (after the pairs closer than minimumSingularitySeparation cancel, the cone pairs and moves
+  /// included; the trials on coarser grids and on the adaptive grid keep it too): a grid too coarse
+  /// for its singularities folds between them (decimated-knight at 100 quads: 90 branch points on a
   /// map of 186 cells, quads in two pieces; a gyroid at 300 quads: 209 on 322, two minutes of
   /// untangling), so such a surface gets more quads than asked; 0: no limit.
   double minimumQuadsPerSingularity = 4;
@@ -114,10 +115,11 @@ struct ParameterizationOptions
   /// lays on a line, which no grid gives area), which replaces it, else the first better than the
   /// first map (the topology first); 0 keeps the first. Maps without defects whose quads keep the
   /// topology are never touched, nor maps of more than 10 maximumRegridQuadCount triangles whose
-  /// repair spent its whole untangleWork (time); the trials share one untangleWork. A map that
-  /// trials may follow is first repaired with one trial's share; when no trial does better and that
-  /// share was spent, its repair is done again from the start with the whole untangleWork (the
-  /// truck: 7-9 s -> 5-6.5 s, the same maps elsewhere).
+  /// repair spent its budget (time); the trials share one repair's budget (untangleWork). A map
+  /// that trials may follow is first repaired with one trial's share; when no trial does better
+  /// and that share was spent, its repair is done again from the start with what the map's budget
+  /// has left, if that is more, and kept if it has no more defects (the truck: 7-9 s -> 5-6.5 s,
+  /// the same maps elsewhere).
   int maximumRegrids = 6;
   /// Only maps of at most this many quads are tried on other grids: a small component's grid is
   /// coarse against its singularities, and its trials are cheap.
@@ -250,7 +252,8 @@ struct Parameterization
   /// inner points whose (u, v) angles do not add up to 2 pi (1 - index) in the final map
   int wrongWindings = 0;
   int untangleRegions = 0;          ///< neighbourhoods untangled (each growing the last)
-  bool untangleBudgetSpent = false; ///< the untangling stopped at options.untangleWork
+  /// the untangling stopped at its budget (its share of untangleWork, or what the map had left)
+  bool untangleBudgetSpent = false;
   /// the untangling's work: triangle energy evaluations, every repair and regrid trial summed
   long long untangleEvaluations = 0;
   /// other grid sizes tried because the repaired map kept defects (maximumRegrids)

@@ -217,6 +217,11 @@ Eigen::VectorXd solveContinuous(const SeamlessSystem& sys, bool greedy, HessianF
 double countedCells(const Inputs& in, const SeamlessSystem& sys, const Eigen::VectorXd& x,
   const Parameterization& out);
 
+/// The fewest unit cells a map of `field` may cover: ParameterizationOptions::
+/// minimumQuadsPerSingularity per branch point (the cone pairs' and the moved ones included); 0
+/// with targetEdgeLength or without the limit.
+double cellsForSingularities(const Inputs& in, const Field& field);
+
 /// The grid made `factor` times finer: the map x scaled by it (it is linear in 1 / edgeLength),
 /// with the right-hand side and energy scale, out.edgeLength divided by it.
 void refineGrid(double factor, SeamlessSystem& sys, Eigen::VectorXd& x, Parameterization& out);
@@ -269,8 +274,9 @@ long long repairBudget(const Inputs& in, const Parameterization& out, double sha
 constexpr double UntangleBudgetShares = 2.0;
 
 /// A surface of more triangles has the untangling budget of one of this many: the untangling's
-/// time stays bounded whatever the surface's size (a repair's share about 4 s on a 2-core
-/// machine, all of a map's repairs about 8 s: armadillo at 100 quads). Its flips lie around the
+/// time of one map stays bounded whatever the surface's size (a repair's share about 4 s on a
+/// 2-core machine, all of a map's repairs about 8 s: armadillo at 100 quads; each component has
+/// a map of its own). Its flips lie around the
 /// singularities and the grid's folds, whose number does not grow with the triangles.
 constexpr long long UntangleBudgetTriangles = 20000;
 

@@ -154,8 +154,8 @@ public:
   /** The untangling's budget of one repair of a map, in energy evaluations per triangle (a
    * surface of more than 20,000 triangles counted as one of 20,000), in [1, 1000000] (default
    * 10000); all of a map's repairs together (its trials on other grids) spend at most twice
-   * that. It stops there (with a warning), so its time stays bounded whatever the surface's
-   * size; counted as work, not seconds, so every machine gives the same map. */
+   * that. It stops there (with a warning), so the time of each component's map stays bounded
+   * whatever its size; counted as work, not seconds, so every machine gives the same map. */
   vtkSetClampMacro(UntangleWork, int, 1, 1000000);
   vtkGetMacro(UntangleWork, int);
   ///@}

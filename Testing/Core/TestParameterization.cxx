@@ -483,6 +483,43 @@ TEST(Parameterization, TwistedFramesFoldTheMapAndUntanglingUnfoldsIt)
   EXPECT_NE(stopped.energyFinal, c.map.energyFinal);
 }
 
+TEST(Parameterization, TheFirstRepairStandsWhenTheTrialsLeaveNoMoreBudget)
+{
+  // The twisted sphere at 500 quads, tried on other grids: its first repair gets a trial's share
+  // of the budget, and after the trials the repair is done again with what is left. With one or
+  // two other grids nothing or less is left: the first repair must stand, never the unrepaired
+  // map (the budget shared by all of a map's repairs once threw it away).
+  Chain c = runChain(testSurface("sphere"), 1000);
+  const Eigen::MatrixX3d U = twistedFrames(c);
+  for (const int work : { 1, 3, 10 })
+  {
+    ParameterizationOptions options;
+    options.targetQuadCount = 500;
+    options.untangleWork = work;
+    options.maximumRegrids = 0;
+    const Parameterization none =
+      computeParameterization(c.s.V, c.s.F, c.topo, c.geometry, U, c.field.matching, options);
+    ASSERT_GT(none.flippedRounded, 0) << "the case the test is about";
+    for (const int regrids : { 1, 2 })
+    {
+      options.maximumRegrids = regrids;
+      const Parameterization tried =
+        computeParameterization(c.s.V, c.s.F, c.topo, c.geometry, U, c.field.matching, options);
+      std::printf("work %d, %d other grids: %d flipped, %d wound wrong (%d rounded; none: %d, "
+                  "%d)\n",
+        work, regrids, tried.flipped, tried.wrongWindings, tried.flippedRounded, none.flipped,
+        none.wrongWindings);
+      // (with two, a trial whose quads keep the sphere's topology may win with more defects)
+      EXPECT_LT(tried.flipped, tried.flippedRounded) << "repaired, work " << work;
+      if (regrids == 1)
+      {
+        EXPECT_LE(tried.flipped + tried.wrongWindings, none.flipped + none.wrongWindings)
+          << "work " << work;
+      }
+    }
+  }
+}
+
 TEST(Parameterization, BranchPointsOfOneTriangleNeverShareAGridPoint)
 {
   // Move one +1/4 branch point of the sphere next to another (changing the matchings along an
