@@ -156,11 +156,12 @@ bool regridDefectiveMap(const Inputs& in, const Field& field, SeamlessSystem& sy
     {
       continue;
     }
-    if (q < 1.0 &&
-      cells * q <
-        std::max<double>(in.options.minimumComponentQuadCount, cellsForSingularities(in, field)))
+    // (a coarser grid may have fewer cells than the field's singularities ask, and is kept only
+    // when its map ranks better: bunny-lowres at 100 quads is valid on a quarter of the grid
+    // those ask, and folds against the surface on theirs)
+    if (q < 1.0 && cells * q < in.options.minimumComponentQuadCount)
     {
-      continue; // never fewer quads than a component or the field's singularities must have
+      continue; // never fewer quads than a component must have
     }
     if (q > 4.0 && cells * q > in.options.maximumRegridQuadCount)
     {

@@ -54,7 +54,8 @@ struct ParameterizationOptions
   double curvatureEdgeLength = 1.5;
   /// With targetQuadCount, the grid has at least this many cells per branch point of the field
   /// (after the pairs closer than minimumSingularitySeparation cancel, the cone pairs and moves
-  /// included; the trials on coarser grids and on the adaptive grid keep it too): a grid too coarse
+  /// included; the adaptive grid's trial keeps it too, a trial on a coarser grid, kept only when
+  /// its map ranks better, may not): a grid too coarse
   /// for its singularities folds between them (decimated-knight at 100 quads: 90 branch points on a
   /// map of 186 cells, quads in two pieces; a gyroid at 300 quads: 209 on 322, two minutes of
   /// untangling), so such a surface gets more quads than asked; 0: no limit.
