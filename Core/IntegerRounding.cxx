@@ -424,18 +424,6 @@ double countedCells(const Inputs& in, const SeamlessSystem& sys, const Eigen::Ve
   return cells;
 }
 
-double cellsForSingularities(const Inputs& in, const Field& field)
-{
-  const double perPoint = in.options.minimumQuadsPerSingularity;
-  if (in.options.targetEdgeLength != 0.0 || !(perPoint > 0))
-  {
-    return 0.0;
-  }
-  return perPoint *
-    static_cast<double>(
-      std::count_if(field.branch.begin(), field.branch.end(), [](char b) { return b != 0; }));
-}
-
 void refineGrid(double factor, SeamlessSystem& sys, Eigen::VectorXd& x, Parameterization& out)
 {
   x *= factor;

@@ -187,13 +187,14 @@ void limitEdgeLengthByCurvature(
 }
 
 /// For ParameterizationOptions::minimumQuadsPerSingularity: the grid made finer (refineGrid)
-/// where the map would cover fewer unit cells (countedCells) than cellsForSingularities. (Folds
-/// of the continuous map cancel area: the grid can come out finer than it must.)
-void limitEdgeLengthBySingularities(const Inputs& in, const Field& field, SeamlessSystem& sys,
-  Eigen::VectorXd& x, Parameterization& out)
+/// where the map would cover fewer unit cells (countedCells) than that many per branch point of
+/// its cut surface (out.branchPoints: the cone pairs' and the moved ones included). (Folds of the
+/// continuous map cancel area: the grid can come out finer than it must.)
+void limitEdgeLengthBySingularities(
+  const Inputs& in, SeamlessSystem& sys, Eigen::VectorXd& x, Parameterization& out)
 {
-  const double wanted = cellsForSingularities(in, field);
-  if (!(wanted > 0) || sys.numColumns() == 0)
+  const double wanted = in.options.minimumQuadsPerSingularity * out.branchPoints;
+  if (in.options.targetEdgeLength != 0.0 || !(wanted > 0) || sys.numColumns() == 0)
   {
     return;
   }
@@ -470,7 +471,7 @@ Parameterization remapOnCells(const Inputs& in, const Field& field, SeamlessSyst
   if (correctLength)
   {
     correctEdgeLength(in, sys, x, trial);
-    limitEdgeLengthBySingularities(in, field, sys, x, trial); // which the correction may undo
+    limitEdgeLengthBySingularities(in, sys, x, trial); // which the correction may undo
   }
   const Eigen::VectorXd integers =
     roundIntegers(in, field, sys, x, factor, greedy, trial, progress.part(0.0, 0.1));
@@ -703,7 +704,7 @@ Parameterization mapComponent(const Inputs& given, const Progress& progress)
   {
     limitEdgeLengthByCurvature(in, sys, x, out);
   }
-  limitEdgeLengthBySingularities(in, field, sys, x, out);
+  limitEdgeLengthBySingularities(in, sys, x, out);
   const Eigen::VectorXd continuous = x;
   out.energyContinuous = sys.energy(x);
   out.flippedContinuous = static_cast<int>(flippedFaces(sys.uv(x), out.cornerSector).size());

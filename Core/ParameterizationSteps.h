@@ -217,11 +217,6 @@ Eigen::VectorXd solveContinuous(const SeamlessSystem& sys, bool greedy, HessianF
 double countedCells(const Inputs& in, const SeamlessSystem& sys, const Eigen::VectorXd& x,
   const Parameterization& out);
 
-/// The fewest unit cells the first map of `field` covers (and the adaptive grid's):
-/// ParameterizationOptions::minimumQuadsPerSingularity per branch point (the cone pairs' and the
-/// moved ones included); 0 with targetEdgeLength or without the limit.
-double cellsForSingularities(const Inputs& in, const Field& field);
-
 /// The grid made `factor` times finer: the map x scaled by it (it is linear in 1 / edgeLength),
 /// with the right-hand side and energy scale, out.edgeLength divided by it.
 void refineGrid(double factor, SeamlessSystem& sys, Eigen::VectorXd& x, Parameterization& out);
