@@ -61,7 +61,9 @@ struct ParameterizationOptions
   /// untangling), so such a surface gets more quads than asked; 0: no limit.
   double minimumQuadsPerSingularity = 4;
   /// Boundary edges along a frame direction (within boundaryTolerance degrees) lie on an integer
-  /// grid line (constant u or v), so quads end cleanly at the border.
+  /// grid line (constant u or v), so quads end cleanly at the border; not those on a straight run
+  /// of their loop (between turns of more than 45 degrees) shorter than a grid edge, the steps of
+  /// a jagged boundary, which would fold the map.
   /// The same concept as SmootherOptions::alignToBoundary, and its default.
   bool alignToBoundary = SmootherOptions().alignToBoundary;
   /// The same concept as BranchPointOptions::boundaryTolerance, and its default.

@@ -306,6 +306,137 @@ TEST(Parameterization, BoundariesLieOnGridLines)
 
 namespace
 {
+/// A 1 x 1.2 sheet of n x n cells, each split by a diagonal that alternates as on a checkerboard,
+/// with the triangles whose centres lie within `radius` of one of `centres` removed: holes whose
+/// boundaries step along the triangles, as those cut into a scan.
+Surface steppedHoleSheet(int n, double radius,
+  const std::vector<Eigen::Vector3d>& centres = { Eigen::Vector3d(0.5, 0.6, 0.0) })
+{
+  Surface s;
+  s.V.resize((n + 1) * (n + 1), 3);
+  for (int j = 0; j <= n; ++j)
+  {
+    for (int i = 0; i <= n; ++i)
+    {
+      s.V.row(j * (n + 1) + i) << static_cast<double>(i) / n, 1.2 * j / n, 0.0;
+    }
+  }
+  std::vector<Eigen::Vector3i> kept;
+  auto keep = [&](int a, int b, int c) {
+    const Eigen::Vector3d centre = (s.V.row(a) + s.V.row(b) + s.V.row(c)).transpose() / 3.0;
+    for (const Eigen::Vector3d& hole : centres)
+    {
+      if ((centre - hole).norm() <= radius)
+      {
+        return;
+      }
+    }
+    kept.emplace_back(a, b, c);
+  };
+  for (int j = 0; j < n; ++j)
+  {
+    for (int i = 0; i < n; ++i)
+    {
+      const int a = j * (n + 1) + i, b = a + 1, c = a + n + 2, d = a + n + 1;
+      if ((i + j) % 2 == 0)
+      {
+        keep(a, b, c);
+        keep(a, c, d);
+      }
+      else
+      {
+        keep(a, b, d);
+        keep(b, c, d);
+      }
+    }
+  }
+  s.F.resize(static_cast<int>(kept.size()), 3);
+  for (std::size_t f = 0; f < kept.size(); ++f)
+  {
+    s.F.row(static_cast<int>(f)) = kept[f].transpose();
+  }
+  return s;
+}
+}
+
+TEST(Parameterization, AJaggedBoundaryIsNotPutOnGridLinesStepByStep)
+{
+  // Frames follow each boundary edge, and every step of a hole cut along the triangles is a
+  // frame direction: on a line each, a quarter turned from the next, they would put every step's
+  // point on a grid point, several within one cell, and fold the map. Only runs of the boundary
+  // at least a grid edge long are put on lines: here the square's sides.
+  const Chain r = runChain(steppedHoleSheet(48, 0.3), 250);
+  const double h = r.map.edgeLength;
+  EXPECT_GT(h, 2.0 / 48) << "the steps are shorter than a grid edge";
+  EXPECT_EQ(flippedTriangles(r.map), 0);
+  EXPECT_EQ(r.map.wrongWindings, 0);
+  int onGridPoints = 0, holePoints = 0;
+  for (int e = 0; e < r.topo.numEdges(); ++e)
+  {
+    if (r.topo.edgeFaceCount[e] != 1)
+    {
+      continue;
+    }
+    const Eigen::Vector3d a = r.s.V.row(r.topo.edges(e, 0)), b = r.s.V.row(r.topo.edges(e, 1));
+    const bool side = (a.x() == b.x() && (a.x() == 0.0 || a.x() == 1.0)) ||
+      (a.y() == b.y() && (a.y() == 0.0 || a.y() == 1.2));
+    if (side)
+    {
+      EXPECT_TRUE(onGridLine(r, e)) << "side edge " << e;
+      continue;
+    }
+    const int c = r.topo.edgeCorners(e, 0);
+    const Complex z = cornerZ(r.map, c / 3, c % 3);
+    ++holePoints;
+    onGridPoints += isInteger(z.real()) && isInteger(z.imag());
+  }
+  const double circumference = 2 * Pi * 0.3;
+  std::printf("hole: %d points, %d on grid points, %.1f grid edges around\n", holePoints,
+    onGridPoints, circumference / h);
+  EXPECT_LT(onGridPoints, circumference / h) << "fewer than one a grid edge";
+}
+
+TEST(Parameterization, StepsOfJaggedHolesLessThanAGridEdgeApartStayOnLines)
+{
+  // Two stepped holes 0.04 apart, under a grid edge: their steps near each other stay on lines
+  // (those along the frames), which the rounding keeps apart (lines that face each other never
+  // meet), while away from the other hole only runs at least a grid edge long are on lines.
+  const double radius = 0.2;
+  // on a diagonal, so that the boundaries step where they face each other
+  const std::vector<Eigen::Vector3d> centres = { Eigen::Vector3d(0.3, 0.42, 0.0),
+    Eigen::Vector3d(0.3 + 0.44 / std::sqrt(2.0), 0.42 + 0.44 / std::sqrt(2.0), 0.0) };
+  const Chain r = runChain(steppedHoleSheet(48, radius, centres), 150);
+  const double h = r.map.edgeLength;
+  ASSERT_GT(h, 0.04);
+  int near = 0, nearOnLine = 0, far = 0, farOnLine = 0;
+  for (int e = 0; e < r.topo.numEdges(); ++e)
+  {
+    const Eigen::Vector3d m =
+      0.5 * (r.s.V.row(r.topo.edges(e, 0)) + r.s.V.row(r.topo.edges(e, 1))).transpose();
+    const double toFirst = (m - centres[0]).norm(), toSecond = (m - centres[1]).norm();
+    if (r.topo.edgeFaceCount[e] != 1 || std::min(toFirst, toSecond) > radius + 0.05)
+    {
+      continue; // an inner edge, or one of the sheet's sides
+    }
+    // the other hole's boundary is about `radius` from its centre
+    const bool isNear = std::max(toFirst, toSecond) - radius < 1.5 * h - 0.03;
+    const bool isFar = std::max(toFirst, toSecond) - radius > 1.5 * h + 0.03;
+    near += isNear;
+    far += isFar;
+    nearOnLine += isNear && onGridLine(r, e);
+    farOnLine += isFar && onGridLine(r, e);
+  }
+  std::printf("steps near the other hole %d (%d on lines), far %d (%d on lines)\n", near,
+    nearOnLine, far, farOnLine);
+  ASSERT_GT(near, 4);
+  ASSERT_GT(far, 4);
+  EXPECT_GT(3 * nearOnLine, 2 * near) << "near the other hole, on lines";
+  // far from it only the runs at least a grid edge long (the circles' flat sides)
+  EXPECT_LT(2 * farOnLine, far) << "far from it, mostly free";
+}
+
+namespace
+{
 /// How many of the sharp edges (the smoother's default angle and length) the map puts on a grid
 /// line; their number in `numSharp`.
 int sharpEdgesOnGridLines(const Chain& r, int& numSharp)
