@@ -63,7 +63,8 @@ struct ParameterizationOptions
   /// Boundary edges along a frame direction (within boundaryTolerance degrees) lie on an integer
   /// grid line (constant u or v), so quads end cleanly at the border; not those on a straight run
   /// of their loop (between turns of more than 45 degrees) shorter than a grid edge, the steps of
-  /// a jagged boundary, which would fold the map.
+  /// a jagged boundary, which would fold the map (unless within 1.5 grid edges of another loop:
+  /// the lines keep the two apart).
   /// The same concept as SmootherOptions::alignToBoundary, and its default.
   bool alignToBoundary = SmootherOptions().alignToBoundary;
   /// The same concept as BranchPointOptions::boundaryTolerance, and its default.
