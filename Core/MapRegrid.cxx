@@ -3,13 +3,17 @@
 // kept. The continuous map is linear in 1 / edgeLength, so each grid size costs a rounding, one
 // back-substitution and a repair: no new factorization.
 #include "ParameterizationSteps.h"
+
+#include "NearbyPoints.h"
 #include "QuadExtraction.h"
+#include "QuadMeshAdjacency.h"
 #include "QuadMeshing.h"
 #include "QuadPatching.h"
 
 #include <algorithm>
 #include <cmath>
 #include <iterator>
+#include <map>
 #include <utility>
 
 namespace quadcover
@@ -62,22 +66,78 @@ std::size_t defectsBeyondFlat(
 /// more budget) cost seconds; on a large surface (armadillo) minutes, for nothing.
 constexpr double SpentTrianglesPerQuad = 10.0;
 
-/// Do the quads that map uv gives (cut out, their holes inside the surface filled, as the quad
-/// stage does) have the surface's topology: as many pieces, its Euler characteristic and its
-/// boundary loops, manifold? A map can be free of defects and still lose a hole (a small hole
-/// whose boundary lines meet the surface's outer one: a piece of the truck of 48 quads) or
-/// leave a band around a handle (a piece of genus 3).
-bool quadsKeepTopology(
-  const Inputs& in, const Eigen::MatrixX2d& uv, const std::vector<int>& cornerSector)
+/// Per point of `from`, the index of its nearest point in `to` within `reach`, else -1.
+std::vector<int> nearestWithin(
+  const std::vector<Eigen::Vector3d>& from, const std::vector<Eigen::Vector3d>& to, double reach)
 {
-  QuadMesh quads =
-    extractQuads(in.V, in.F, in.topo, cornerUVOf(uv, cornerSector), QuadExtractionOptions());
-  patchQuadMesh(in.V, in.F, in.topo, quads);
-  // two triangles a quad: the same points, edges but the diagonals, loops and pieces
-  const MeshTopology topo = buildTopology(quadTriangles(quads.Q), static_cast<int>(quads.V.rows()));
-  return topo.isManifold() && topo.numComponents() == in.topo.numComponents() &&
-    topo.eulerCharacteristic() == in.topo.eulerCharacteristic() &&
-    topo.boundaryLoops.size() == in.topo.boundaryLoops.size();
+  std::vector<Eigen::Vector3d> all = from;
+  all.insert(all.end(), to.begin(), to.end());
+  const int n = static_cast<int>(from.size());
+  // nearbyPoints gives each point the later ones: those of `to` for every point of `from`
+  const std::vector<std::vector<int>> near = nearbyPoints(all, reach);
+  std::vector<int> nearest(from.size(), -1);
+  for (int i = 0; i < n; ++i)
+  {
+    double best = reach;
+    for (const int j : near[i])
+    {
+      const double d = (all[j] - from[i]).norm();
+      if (j >= n && d < best)
+      {
+        best = d;
+        nearest[i] = j - n;
+      }
+    }
+  }
+  return nearest;
+}
+
+/// Per boundary loop of the surface, the boundary loop of `quads` (whose topology quadTopo is)
+/// that most of its points lie nearest to (within `reach`), or -1.
+std::vector<int> quadLoopOfEachLoop(
+  const Inputs& in, const QuadMesh& quads, const MeshTopology& quadTopo, double reach)
+{
+  std::vector<Eigen::Vector3d> quadPoints, loopPoints;
+  std::vector<int> quadLoop, loopOf;
+  for (std::size_t l = 0; l < quadTopo.boundaryLoops.size(); ++l)
+  {
+    for (const int v : quadTopo.boundaryLoops[l])
+    {
+      quadPoints.push_back(quads.V.row(v).transpose());
+      quadLoop.push_back(static_cast<int>(l));
+    }
+  }
+  for (std::size_t l = 0; l < in.topo.boundaryLoops.size(); ++l)
+  {
+    for (const int p : in.topo.boundaryLoops[l])
+    {
+      loopPoints.push_back(in.V.row(p).transpose());
+      loopOf.push_back(static_cast<int>(l));
+    }
+  }
+  const std::vector<int> nearest = nearestWithin(loopPoints, quadPoints, reach);
+  std::vector<std::map<int, int>> votes(in.topo.boundaryLoops.size());
+  for (std::size_t i = 0; i < nearest.size(); ++i)
+  {
+    if (nearest[i] >= 0)
+    {
+      ++votes[loopOf[i]][quadLoop[nearest[i]]];
+    }
+  }
+  std::vector<int> chosen(votes.size(), -1);
+  for (std::size_t l = 0; l < votes.size(); ++l)
+  {
+    int most = 0;
+    for (const auto& [loop, count] : votes[l])
+    {
+      if (count > most)
+      {
+        most = count;
+        chosen[l] = loop;
+      }
+    }
+  }
+  return chosen;
 }
 
 /// Do the quads that map uv gives, after the quad stage's repairs (buildQuadMesh with its
@@ -97,7 +157,7 @@ int mapRank(const Inputs& in, const Defects& defects, const Eigen::MatrixX2d& uv
   const std::vector<int>& cornerSector)
 {
   const bool clean = defectsBeyondFlat(defects, uv, cornerSector) == 0;
-  const bool whole = !in.options.pureQuads || quadsKeepTopology(in, uv, cornerSector);
+  const bool whole = !in.options.pureQuads || keepsTopology(in, uv, cornerSector);
   return whole ? (clean ? 0 : 1) : (clean ? 2 : 3);
 }
 
@@ -112,6 +172,83 @@ int regridTrials(const Inputs& in, const SeamlessSystem& sys, double edgeLength)
   const bool trialsFollow = rankedByQuads(in, sys, edgeLength) &&
     in.numFaces() <= SpentTrianglesPerQuad * in.options.maximumRegridQuadCount;
   return trialsFollow ? maximumTries(in) : 0;
+}
+
+bool keepsTopology(
+  const Inputs& in, const Eigen::MatrixX2d& uv, const std::vector<int>& cornerSector)
+{
+  QuadMesh quads =
+    extractQuads(in.V, in.F, in.topo, cornerUVOf(uv, cornerSector), QuadExtractionOptions());
+  patchQuadMesh(in.V, in.F, in.topo, quads);
+  // two triangles a quad: the same points, edges but the diagonals, loops and pieces
+  const MeshTopology topo = buildTopology(quadTriangles(quads.Q), static_cast<int>(quads.V.rows()));
+  return topo.isManifold() && topo.numComponents() == in.topo.numComponents() &&
+    topo.eulerCharacteristic() == in.topo.eulerCharacteristic() &&
+    topo.boundaryLoops.size() == in.topo.boundaryLoops.size();
+}
+
+std::vector<int> pointsBetweenJoinedLoops(
+  const Inputs& in, const Eigen::MatrixX2d& uv, const std::vector<int>& cornerSector, double reach)
+{
+  const std::size_t loops = in.topo.boundaryLoops.size();
+  if (loops < 2)
+  {
+    return {};
+  }
+  QuadMesh quads =
+    extractQuads(in.V, in.F, in.topo, cornerUVOf(uv, cornerSector), QuadExtractionOptions());
+  patchQuadMesh(in.V, in.F, in.topo, quads);
+  // two loops that the quads pinch together at a point are one loop (the quad stage splits it)
+  splitPinchedVertices(quads);
+  const MeshTopology quadTopo =
+    buildTopology(quadTriangles(quads.Q), static_cast<int>(quads.V.rows()));
+  std::vector<int> quadLoop = quadLoopOfEachLoop(in, quads, quadTopo, reach);
+  // quads in more pieces than the surface: strips between loops were cut through, and the loops
+  // may each still have one of their own: every pair of loops counts as joined
+  if (quadTopo.numComponents() > in.topo.numComponents())
+  {
+    quadLoop.assign(loops, 0);
+  }
+  // the points of joined loops, and which quad loop joined them
+  std::vector<Eigen::Vector3d> points;
+  std::vector<int> pointId, joinedIn, loopOf;
+  for (std::size_t l = 0; l < loops; ++l)
+  {
+    const bool joined =
+      quadLoop[l] >= 0 && std::count(quadLoop.begin(), quadLoop.end(), quadLoop[l]) > 1;
+    for (const int p : in.topo.boundaryLoops[l])
+    {
+      if (joined)
+      {
+        points.push_back(in.V.row(p).transpose());
+        pointId.push_back(p);
+        joinedIn.push_back(quadLoop[l]);
+        loopOf.push_back(static_cast<int>(l));
+      }
+    }
+  }
+  std::vector<char> between(points.size(), 0);
+  const std::vector<std::vector<int>> near = nearbyPoints(points, reach);
+  for (std::size_t i = 0; i < points.size(); ++i)
+  {
+    for (const int j : near[i])
+    {
+      if (loopOf[i] != loopOf[j] && joinedIn[i] == joinedIn[j] &&
+        (points[i] - points[j]).norm() < reach)
+      {
+        between[i] = between[j] = 1;
+      }
+    }
+  }
+  std::vector<int> result;
+  for (std::size_t i = 0; i < points.size(); ++i)
+  {
+    if (between[i])
+    {
+      result.push_back(pointId[i]);
+    }
+  }
+  return result;
 }
 
 bool regridDefectiveMap(const Inputs& in, const Field& field, SeamlessSystem& sys,

@@ -484,15 +484,15 @@ Parameterization remapOnCells(const Inputs& in, const Field& field, SeamlessSyst
   return trial;
 }
 
-/// The trial map kept in place of out when it has fewer defects (the work and time of both
-/// maps count, whichever is kept); else sys's cells put back.
-void keepFewerDefects(Parameterization&& trial, Eigen::VectorXd&& xt, Defects&& found,
+/// The trial map (made on sys's cells as they are now) kept in place of out when `better` (the
+/// work and time of both maps count, whichever is kept); else sys's cells put back.
+void keepTrialIf(bool better, Parameterization&& trial, Eigen::VectorXd&& xt, Defects&& found,
   const SavedCells& saved, SeamlessSystem& sys, Eigen::VectorXd& x, Defects& defects,
   Parameterization& out)
 {
   out.untangleEvaluations += trial.untangleEvaluations;
   out.untangleSeconds += trial.untangleSeconds;
-  if (found.count() < defects.count())
+  if (better)
   {
     trial.untangleEvaluations = out.untangleEvaluations;
     trial.untangleSeconds = out.untangleSeconds;
@@ -504,6 +504,67 @@ void keepFewerDefects(Parameterization&& trial, Eigen::VectorXd&& xt, Defects&& 
     return;
   }
   saved.restore(sys);
+}
+
+/// The trial map kept in place of out when it has fewer defects (keepTrialIf).
+void keepFewerDefects(Parameterization&& trial, Eigen::VectorXd&& xt, Defects&& found,
+  const SavedCells& saved, SeamlessSystem& sys, Eigen::VectorXd& x, Defects& defects,
+  Parameterization& out)
+{
+  const bool fewer = found.count() < defects.count();
+  keepTrialIf(
+    fewer, std::move(trial), std::move(xt), std::move(found), saved, sys, x, defects, out);
+}
+
+/// sys's cell scale made `finer` times finer around `points` (each asks for its own grid, finer
+/// already around a thin strip, over finer), growing back by a quarter of the distance walked, as
+/// around thin strips.
+Eigen::VectorXd finerAround(const Inputs& in, const SeamlessSystem& sys, double h, double finer,
+  const std::vector<int>& points)
+{
+  const int nF = in.numFaces();
+  const Eigen::VectorXd oldScale =
+    sys.cellScale.size() > 0 ? sys.cellScale : Eigen::VectorXd::Ones(nF);
+  std::vector<double> local(static_cast<std::size_t>(in.numVertices()), 1.0);
+  for (int f = 0; f < nF; ++f)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      local[in.F(f, k)] = std::min(local[in.F(f, k)], oldScale[f]);
+    }
+  }
+  std::vector<double> size(static_cast<std::size_t>(in.numVertices()), h);
+  for (const int p : points)
+  {
+    size[p] = h * local[p] / finer;
+  }
+  spreadGridSizes(in.V, in.topo, 0.25, size);
+  Eigen::VectorXd newScale = oldScale;
+  for (int f = 0; f < nF; ++f)
+  {
+    const double s = (size[in.F(f, 0)] + size[in.F(f, 1)] + size[in.F(f, 2)]) / (3 * h);
+    newScale[f] = std::min(oldScale[f], s);
+  }
+  return newScale;
+}
+
+/// The map made again on a grid `finer` times finer around `points` (finerAround, remapOnCells,
+/// with `budget`), kept in place of out when better(trial, its x, its defects) (keepTrialIf).
+template<typename Better>
+void remapFinerAround(const Inputs& in, const Field& field, SeamlessSystem& sys,
+  const HessianFactor& factor, bool greedy, long long budget, double finer,
+  const std::vector<int>& points, Eigen::VectorXd& x, Defects& defects, Parameterization& out,
+  const Progress& progress, Better better)
+{
+  const double h = out.edgeLength;
+  const SavedCells saved(sys);
+  setCellScale(finerAround(in, sys, h, finer, points), h, sys);
+  Eigen::VectorXd xt;
+  Defects found;
+  Parameterization trial =
+    remapOnCells(in, field, sys, factor, greedy, false, budget, out, xt, found, progress);
+  const bool keep = better(trial, xt, found);
+  keepTrialIf(keep, std::move(trial), std::move(xt), std::move(found), saved, sys, x, defects, out);
 }
 
 /// Where the repaired map x keeps defects, the grid ParameterizationOptions::defectGridRefinement
@@ -524,45 +585,48 @@ void refineAroundDefects(const Inputs& in, const Field& field, SeamlessSystem& s
   {
     return;
   }
-  const double h = out.edgeLength;
-  const int nF = in.numFaces();
-  const Eigen::VectorXd oldScale =
-    sys.cellScale.size() > 0 ? sys.cellScale : Eigen::VectorXd::Ones(nF);
-  // each defect's points ask for their own grid (finer already around a thin strip) over finer
-  std::vector<double> local(static_cast<std::size_t>(in.numVertices()), 1.0);
-  for (int f = 0; f < nF; ++f)
-  {
-    for (int k = 0; k < 3; ++k)
-    {
-      local[in.F(f, k)] = std::min(local[in.F(f, k)], oldScale[f]);
-    }
-  }
-  std::vector<double> size(static_cast<std::size_t>(in.numVertices()), h);
+  std::vector<int> points = defects.wrong;
   for (const int f : defects.flipped)
   {
     for (int k = 0; k < 3; ++k)
     {
-      size[in.F(f, k)] = h * local[in.F(f, k)] / finer;
+      points.push_back(in.F(f, k));
     }
   }
-  for (const int p : defects.wrong)
+  remapFinerAround(in, field, sys, factor, greedy, budget, finer, points, x, defects, out, progress,
+    [&](const Parameterization&, const Eigen::VectorXd&, const Defects& found) {
+      return found.count() < defects.count();
+    });
+}
+
+/// In grid edges, how near to another loop joined to the same quads' loop the points of a
+/// boundary loop are refined around (refineBetweenJoinedLoops).
+constexpr double JoinedLoopReach = 3.0;
+
+/// Where the map's quads join two boundary loops into one (the strip between two holes less than
+/// a grid edge or two wide, cut; pointsBetweenJoinedLoops), the grid defectGridRefinement times
+/// finer between them: the map made again (as refineAroundDefects does) and kept when its quads
+/// keep the surface's topology (whatever its defects: the topology first, as mapRank ranks maps).
+void refineBetweenJoinedLoops(const Inputs& in, const Field& field, SeamlessSystem& sys,
+  const HessianFactor& factor, bool greedy, Eigen::VectorXd& x, Defects& defects,
+  Parameterization& out, const Progress& progress)
+{
+  const double finer = in.options.defectGridRefinement;
+  const long long budget = repairBudget(in, out, 1.0);
+  if (in.topo.boundaryLoops.size() < 2 || !in.options.pureQuads || !(finer > 1) || budget <= 0)
   {
-    size[p] = h * local[p] / finer;
+    return;
   }
-  spreadGridSizes(in.V, in.topo, 0.25, size);
-  Eigen::VectorXd newScale = oldScale;
-  for (int f = 0; f < nF; ++f)
+  const std::vector<int> points =
+    pointsBetweenJoinedLoops(in, sys.uv(x), out.cornerSector, JoinedLoopReach * out.edgeLength);
+  if (points.empty())
   {
-    const double s = (size[in.F(f, 0)] + size[in.F(f, 1)] + size[in.F(f, 2)]) / (3 * h);
-    newScale[f] = std::min(oldScale[f], s);
+    return;
   }
-  const SavedCells saved(sys);
-  setCellScale(newScale, h, sys);
-  Eigen::VectorXd xt;
-  Defects found;
-  Parameterization trial =
-    remapOnCells(in, field, sys, factor, greedy, false, budget, out, xt, found, progress);
-  keepFewerDefects(std::move(trial), std::move(xt), std::move(found), saved, sys, x, defects, out);
+  remapFinerAround(in, field, sys, factor, greedy, budget, finer, points, x, defects, out, progress,
+    [&](const Parameterization& trial, const Eigen::VectorXd& xt, const Defects&) {
+      return keepsTopology(in, sys.uv(xt), trial.cornerSector);
+    });
 }
 
 /// Where the repaired map keeps defects, the adaptive grid (curvatureGridScale with
@@ -730,7 +794,9 @@ Parameterization mapComponent(const Inputs& given, const Progress& progress)
   {
     adaptAroundThinParts(
       in, creases, field, sys, factor, greedy, x, defects, out, progress.part(0.9, 0.94));
-    refineAroundDefects(in, field, sys, factor, greedy, x, defects, out, progress.part(0.94, 0.98));
+    refineAroundDefects(in, field, sys, factor, greedy, x, defects, out, progress.part(0.94, 0.96));
+    refineBetweenJoinedLoops(
+      in, field, sys, factor, greedy, x, defects, out, progress.part(0.96, 0.98));
   }
   out.wrongWindings = static_cast<int>(defects.wrong.size());
   out.flipped = static_cast<int>(defects.flipped.size());

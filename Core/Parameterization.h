@@ -170,7 +170,10 @@ struct ParameterizationOptions
   /// ear or finger a grid cell around, cones packed closer than a cell), the grid is made this
   /// many times finer around them, growing back over a few grid edges, and the map is rounded and
   /// repaired again (the same factorization, a new right-hand side); the new map is kept when it
-  /// has fewer defects. 1: no second map.
+  /// has fewer defects. The same where the quads of a surface with two or more boundary loops
+  /// would join two of them (a strip between two holes less than a grid edge or two wide cut):
+  /// the grid this many times finer between them, the new map kept when its quads keep the
+  /// surface's topology. 1: no second map.
   double defectGridRefinement = 2.0;
   /// Where the repaired map keeps defects, first the adaptive grid (as adaptiveCurvature with
   /// this value, its quads counted the same way) is tried: the map made again on it (the same

@@ -303,6 +303,23 @@ bool rankedByQuads(const Inputs& in, const SeamlessSystem& sys, double edgeLengt
 /// than 10 maximumRegridQuadCount triangles (there a spent budget stops the trials).
 int regridTrials(const Inputs& in, const SeamlessSystem& sys, double edgeLength);
 
+/// Do the quads that map uv gives (cut out, their holes inside the surface filled, as the quad
+/// stage does) have the surface's topology: as many pieces, its Euler characteristic and its
+/// boundary loops, manifold? A map can be free of defects and still lose a hole (a small hole
+/// whose boundary lines meet the surface's outer one: a piece of the truck of 48 quads), join two
+/// (pointsBetweenJoinedLoops), or leave a band around a handle (a piece of genus 3).
+bool keepsTopology(
+  const Inputs& in, const Eigen::MatrixX2d& uv, const std::vector<int>& cornerSector);
+
+/// Where the quads that map uv gives (cut out and patched) join two boundary loops of the surface
+/// into one (the strip between two holes cut): the surface points of those loops within `reach`
+/// of a point of another loop joined to the same. Each loop belongs to the quads' loop that most
+/// of its points lie nearest to (within reach); where the quads fall into more pieces than the
+/// surface (strips between loops cut through), every pair of loops counts as joined. Empty when
+/// no loops were joined.
+std::vector<int> pointsBetweenJoinedLoops(
+  const Inputs& in, const Eigen::MatrixX2d& uv, const std::vector<int>& cornerSector, double reach);
+
 /// When the repaired map x still has defects, or its quads (cut out and patched as the quad stage
 /// does) would not have the surface's topology: rounds the continuous minimizer `continuous` at
 /// other grid sizes (ParameterizationOptions::maximumRegrids of 2, 1/2, 4, 1/4, 8, 16 times the

@@ -271,7 +271,9 @@ public:
   /** Where the repaired map keeps defects (flipped triangles, points wound the wrong way: a
    * thin ear or finger a grid cell around, say), the grid is made this many times finer around
    * them, growing back over a few grid edges, and the map is rounded and repaired again; the
-   * second map is kept when it has fewer defects, in [1, 8] (default 2; 1: no second map).
+   * second map is kept when it has fewer defects. The same between two boundary loops that the
+   * quads would join (a strip between two holes less than a grid edge or two wide, cut): kept
+   * when its quads keep the surface's topology. In [1, 8] (default 2; 1: no second map).
    * Counted in FinerGridTriangles. */
   vtkSetClampMacro(DefectGridRefinement, double, 1.0, 8.0);
   vtkGetMacro(DefectGridRefinement, double);

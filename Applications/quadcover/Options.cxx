@@ -426,7 +426,8 @@ std::vector<Option> StageOptions(Pipeline& p)
       "parts keep their shape; 0.5: about 12 quads around a thin tube), 0: uniform"),
     QC_NUMBER("param", solver, DefectGridRefinement,
       "where the repaired map keeps defects the grid is this many times finer and the map made "
-      "again, kept with fewer defects, 1: not"),
+      "again, kept with fewer defects; the same between two boundary loops the quads would join, "
+      "kept when they do not, 1: not"),
     QC_NUMBER("param", solver, DefectAdaptiveCurvature,
       "where the repaired map keeps defects, first the adaptive grid of --adaptive-curvature X "
       "is tried, kept with fewer defects, 0: not"),

@@ -11,6 +11,8 @@
 #include "MeshTopology.h"
 #include "Parameterization.h"
 #include "QuadExtraction.h"
+#include "QuadMeshAdjacency.h"
+#include "QuadPatching.h"
 #include "QuadQuality.h"
 #include "Surfaces.h"
 #include "TestChain.h"
@@ -433,6 +435,82 @@ TEST(Parameterization, StepsOfJaggedHolesLessThanAGridEdgeApartStayOnLines)
   EXPECT_GT(3 * nearOnLine, 2 * near) << "near the other hole, on lines";
   // far from it only the runs at least a grid edge long (the circles' flat sides)
   EXPECT_LT(2 * farOnLine, far) << "far from it, mostly free";
+}
+
+namespace
+{
+/// An icosphere (level 5) with the triangles whose centres lie within `radius` of one of
+/// `centres` removed: holes whose boundaries step along the triangles.
+Surface holedSphere(double radius, const std::vector<Eigen::Vector3d>& centres)
+{
+  const Surface sphere = makeIcosphere(1.0, 5);
+  std::vector<int> kept;
+  for (int f = 0; f < sphere.F.rows(); ++f)
+  {
+    const Eigen::Vector3d centre =
+      (sphere.V.row(sphere.F(f, 0)) + sphere.V.row(sphere.F(f, 1)) + sphere.V.row(sphere.F(f, 2)))
+        .transpose() /
+      3.0;
+    if (std::all_of(centres.begin(), centres.end(),
+          [&](const Eigen::Vector3d& c) { return (centre - c).norm() > radius; }))
+    {
+      kept.push_back(f);
+    }
+  }
+  Surface s;
+  s.V = sphere.V;
+  s.F.resize(static_cast<int>(kept.size()), 3);
+  for (std::size_t i = 0; i < kept.size(); ++i)
+  {
+    s.F.row(static_cast<int>(i)) = sphere.F.row(kept[i]);
+  }
+  return s;
+}
+}
+
+TEST(Parameterization, TwoHolesTheQuadsWouldJoinGetAFinerGridBetweenThem)
+{
+  // Two stepped holes in a sphere 0.08 apart, under a grid edge: the first map's quads cut the
+  // strip between them (joining the holes, or cutting the sphere into pieces along with other
+  // strips). The grid is made finer between the two and the map made again, whose quads keep
+  // the sphere's two holes; without the finer grid (defectGridRefinement 1) they do not.
+  const double angle = std::asin(0.3 + 0.08 / 2);
+  const Surface sphere = holedSphere(0.3,
+    { Eigen::Vector3d(std::sin(angle), 0, std::cos(angle)),
+      Eigen::Vector3d(-std::sin(angle), 0, std::cos(angle)) });
+  const MeshTopology topo = buildTopology(sphere.F, static_cast<int>(sphere.V.rows()));
+  ASSERT_TRUE(topo.isManifold());
+  ASSERT_EQ(topo.eulerCharacteristic(), 0);
+  ASSERT_EQ(topo.boundaryLoops.size(), 2u);
+  auto quadsOf = [](const Chain& r) {
+    QuadMesh mesh = extractQuads(r.s.V, r.s.F, r.topo, r.map.cornerUV);
+    patchQuadMesh(r.s.V, r.s.F, r.topo, mesh);
+    splitPinchedVertices(mesh);
+    return measureQuads(mesh.V, mesh.Q);
+  };
+  for (const double q : { 1000.0, 1500.0, 2000.0 })
+  {
+    SCOPED_TRACE(q);
+    ParameterizationOptions uniform;
+    uniform.defectGridRefinement = 1.0;
+    const Chain plain = runChain(sphere, q, uniform);
+    const QuadQuality before = quadsOf(plain);
+    const Chain r = runChain(sphere, q);
+    const QuadQuality after = quadsOf(r);
+    std::printf("%g quads: %d pieces, chi %d, %d loops -> %d pieces, chi %d, %d loops; finer "
+                "triangles %d -> %d\n",
+      q, before.components, before.eulerCharacteristic, before.boundaryLoops, after.components,
+      after.eulerCharacteristic, after.boundaryLoops, plain.map.finerGridTriangles,
+      r.map.finerGridTriangles);
+    EXPECT_EQ(plain.map.flipped + plain.map.wrongWindings, 0) << "no defects to refine around";
+    EXPECT_NE(before.boundaryLoops + before.components, 3) << "the first map's quads are cut";
+    EXPECT_GT(r.map.finerGridTriangles, plain.map.finerGridTriangles);
+    EXPECT_EQ(after.quads, after.faces);
+    EXPECT_EQ(after.nonManifoldEdges, 0);
+    EXPECT_EQ(after.components, 1);
+    EXPECT_EQ(after.eulerCharacteristic, 0);
+    EXPECT_EQ(after.boundaryLoops, 2);
+  }
 }
 
 namespace
