@@ -550,8 +550,9 @@ Eigen::VectorXd finerAround(const Inputs& in, const SeamlessSystem& sys, double 
 
 /// The map made again on a grid `finer` times finer around `points` (finerAround, remapOnCells,
 /// with `budget`), kept in place of out when better(trial, its x, its defects) (keepTrialIf).
+/// Returns whether it was kept.
 template<typename Better>
-void remapFinerAround(const Inputs& in, const Field& field, SeamlessSystem& sys,
+bool remapFinerAround(const Inputs& in, const Field& field, SeamlessSystem& sys,
   const HessianFactor& factor, bool greedy, long long budget, double finer,
   const std::vector<int>& points, Eigen::VectorXd& x, Defects& defects, Parameterization& out,
   const Progress& progress, Better better)
@@ -565,6 +566,7 @@ void remapFinerAround(const Inputs& in, const Field& field, SeamlessSystem& sys,
     remapOnCells(in, field, sys, factor, greedy, false, budget, out, xt, found, progress);
   const bool keep = better(trial, xt, found);
   keepTrialIf(keep, std::move(trial), std::move(xt), std::move(found), saved, sys, x, defects, out);
+  return keep;
 }
 
 /// Where the repaired map x keeps defects, the grid ParameterizationOptions::defectGridRefinement
@@ -603,6 +605,10 @@ void refineAroundDefects(const Inputs& in, const Field& field, SeamlessSystem& s
 /// boundary loop are refined around (refineBetweenJoinedLoops).
 constexpr double JoinedLoopReach = 3.0;
 
+/// How many grids refineBetweenJoinedLoops tries: defectGridRefinement times finer, then its
+/// square.
+constexpr int JoinedLoopTries = 2;
+
 /// Where the map's quads join two boundary loops into one (the strip between two holes less than
 /// a grid edge or two wide, cut; pointsBetweenJoinedLoops), the grid defectGridRefinement times
 /// finer between them: the map made again (as refineAroundDefects does) and kept when its quads
@@ -612,8 +618,7 @@ void refineBetweenJoinedLoops(const Inputs& in, const Field& field, SeamlessSyst
   Parameterization& out, const Progress& progress)
 {
   const double finer = in.options.defectGridRefinement;
-  const long long budget = repairBudget(in, out, 1.0);
-  if (in.topo.boundaryLoops.size() < 2 || !in.options.pureQuads || !(finer > 1) || budget <= 0)
+  if (in.topo.boundaryLoops.size() < 2 || !in.options.pureQuads || !(finer > 1))
   {
     return;
   }
@@ -623,10 +628,21 @@ void refineBetweenJoinedLoops(const Inputs& in, const Field& field, SeamlessSyst
   {
     return;
   }
-  remapFinerAround(in, field, sys, factor, greedy, budget, finer, points, x, defects, out, progress,
-    [&](const Parameterization& trial, const Eigen::VectorXd& xt, const Defects&) {
-      return keepsTopology(in, sys.uv(xt), trial.cornerSector);
-    });
+  auto whole = [&](const Parameterization& trial, const Eigen::VectorXd& xt, const Defects&) {
+    return keepsTopology(in, sys.uv(xt), trial.cornerSector);
+  };
+  // then finer again: two holes less than half a grid edge apart (a scan's, cut at random) need
+  // a grid four times finer between them
+  for (int i = 0; i < JoinedLoopTries; ++i)
+  {
+    const long long budget = repairBudget(in, out, 1.0);
+    if (budget <= 0 ||
+      remapFinerAround(in, field, sys, factor, greedy, budget, std::pow(finer, i + 1), points, x,
+        defects, out, halving(progress, i), whole))
+    {
+      return;
+    }
+  }
 }
 
 /// Where the repaired map keeps defects, the adaptive grid (curvatureGridScale with
