@@ -81,8 +81,12 @@ std::vector<int> nearestWithin(
     double best = reach;
     for (const int j : near[i])
     {
+      if (j < n)
+      {
+        continue;
+      }
       const double d = (all[j] - from[i]).norm();
-      if (j >= n && d < best)
+      if (d < best)
       {
         best = d;
         nearest[i] = j - n;
@@ -202,6 +206,12 @@ std::vector<int> pointsBetweenJoinedLoops(
   splitPinchedVertices(quads);
   const MeshTopology quadTopo =
     buildTopology(quadTriangles(quads.Q), static_cast<int>(quads.V.rows()));
+  if (quadTopo.numComponents() == in.topo.numComponents() &&
+    quadTopo.eulerCharacteristic() == in.topo.eulerCharacteristic() &&
+    quadTopo.boundaryLoops.size() == loops)
+  {
+    return {}; // the quads keep the loops (however the nearest points fall)
+  }
   std::vector<int> quadLoop = quadLoopOfEachLoop(in, quads, quadTopo, reach);
   // quads in more pieces than the surface: strips between loops were cut through, and the loops
   // may each still have one of their own: every pair of loops counts as joined
@@ -210,12 +220,16 @@ std::vector<int> pointsBetweenJoinedLoops(
     quadLoop.assign(loops, 0);
   }
   // the points of joined loops, and which quad loop joined them
+  std::vector<int> sharing(quadTopo.boundaryLoops.size() + 2, 0);
+  for (const int q : quadLoop)
+  {
+    ++sharing[q + 1]; // (-1: none)
+  }
   std::vector<Eigen::Vector3d> points;
   std::vector<int> pointId, joinedIn, loopOf;
   for (std::size_t l = 0; l < loops; ++l)
   {
-    const bool joined =
-      quadLoop[l] >= 0 && std::count(quadLoop.begin(), quadLoop.end(), quadLoop[l]) > 1;
+    const bool joined = quadLoop[l] >= 0 && sharing[quadLoop[l] + 1] > 1;
     for (const int p : in.topo.boundaryLoops[l])
     {
       if (joined)

@@ -606,8 +606,11 @@ void refineAroundDefects(const Inputs& in, const Field& field, SeamlessSystem& s
 constexpr double JoinedLoopReach = 3.0;
 
 /// How many grids refineBetweenJoinedLoops tries: defectGridRefinement times finer, then its
-/// square.
+/// square (at most JoinedLoopMaximumRefinement).
 constexpr int JoinedLoopTries = 2;
+
+/// The finest grid between joined loops, over the grid edge (as around a thin strip by default).
+constexpr double JoinedLoopMaximumRefinement = 8.0;
 
 /// Where the map's quads join two boundary loops into one (the strip between two holes less than
 /// a grid edge or two wide, cut; pointsBetweenJoinedLoops), the grid defectGridRefinement times
@@ -618,7 +621,8 @@ void refineBetweenJoinedLoops(const Inputs& in, const Field& field, SeamlessSyst
   Parameterization& out, const Progress& progress)
 {
   const double finer = in.options.defectGridRefinement;
-  if (in.topo.boundaryLoops.size() < 2 || !in.options.pureQuads || !(finer > 1))
+  if (in.topo.boundaryLoops.size() < 2 || !in.options.pureQuads || !(finer > 1) ||
+    repairBudget(in, out, 1.0) <= 0)
   {
     return;
   }
@@ -635,10 +639,11 @@ void refineBetweenJoinedLoops(const Inputs& in, const Field& field, SeamlessSyst
   // a grid four times finer between them
   for (int i = 0; i < JoinedLoopTries; ++i)
   {
+    const double refinement = std::min(std::pow(finer, i + 1), JoinedLoopMaximumRefinement);
     const long long budget = repairBudget(in, out, 1.0);
-    if (budget <= 0 ||
-      remapFinerAround(in, field, sys, factor, greedy, budget, std::pow(finer, i + 1), points, x,
-        defects, out, halving(progress, i), whole))
+    if (budget <= 0 || (i > 0 && refinement <= finer) ||
+      remapFinerAround(in, field, sys, factor, greedy, budget, refinement, points, x, defects, out,
+        halving(progress, i), whole))
     {
       return;
     }

@@ -172,8 +172,8 @@ struct ParameterizationOptions
   /// repaired again (the same factorization, a new right-hand side); the new map is kept when it
   /// has fewer defects. The same where the quads of a surface with two or more boundary loops
   /// would join two of them (a strip between two holes less than a grid edge or two wide cut):
-  /// the grid this many times finer between them (then its square), the new map kept when its
-  /// quads keep the surface's topology. 1: no second map.
+  /// the grid this many times finer between them (then its square, at most 8), the new map kept
+  /// when its quads keep the surface's topology. 1: no second map.
   double defectGridRefinement = 2.0;
   /// Where the repaired map keeps defects, first the adaptive grid (as adaptiveCurvature with
   /// this value, its quads counted the same way) is tried: the map made again on it (the same

@@ -313,8 +313,8 @@ bool keepsTopology(
 
 /// Where the quads that map uv gives (cut out and patched) join two boundary loops of the surface
 /// into one (the strip between two holes cut): the surface points of those loops within `reach`
-/// of a point of another loop joined to the same. Each loop belongs to the quads' loop that most
-/// of its points lie nearest to (within reach); where the quads fall into more pieces than the
+/// of a point of another loop joined to the same. Each loop belongs to the quads' loop nearest to
+/// the most of its points (within reach); where the quads fall into more pieces than the
 /// surface (strips between loops cut through), every pair of loops counts as joined. Empty when
 /// no loops were joined.
 std::vector<int> pointsBetweenJoinedLoops(

@@ -172,7 +172,8 @@ std::vector<char> nearOtherLoops(const Inputs& in, double reach)
 /// Per edge of topo, 1 on a boundary edge that lies on a straight run of its loop shorter than
 /// MinimumBoundaryLineRun grid edges and not near another loop (NearLoopReach): its edges are not
 /// put on lines. A run is the stretch between two points where the loop turns by more than
-/// 45 degrees (a loop without such points is one run).
+/// 45 degrees; a loop without such points keeps its lines however short (a small round hole:
+/// they keep it open).
 std::vector<char> shortBoundaryRuns(const Inputs& in, double edgeLength)
 {
   const MeshTopology& topo = in.topo;
@@ -253,7 +254,11 @@ std::vector<char> alignToLines(
     return true;
   };
   const std::vector<char> sharp = featureLines(in, out.edgeLength);
-  const std::vector<char> shortRun = shortBoundaryRuns(in, out.edgeLength);
+  // (out.edgeLength is the first grid's, before its correction by the map's area and any finer
+  // grid, as for the feature lines)
+  const std::vector<char> shortRun = in.options.alignToBoundary
+    ? shortBoundaryRuns(in, out.edgeLength)
+    : std::vector<char>(in.topo.numEdges(), 0);
   for (int e = 0; e < in.topo.numEdges(); ++e)
   {
     const bool boundary =

@@ -427,7 +427,7 @@ std::vector<Option> StageOptions(Pipeline& p)
     QC_NUMBER("param", solver, DefectGridRefinement,
       "where the repaired map keeps defects the grid is this many times finer and the map made "
       "again, kept with fewer defects; the same between two boundary loops the quads would join, "
-      "kept when they do not, 1: not"),
+      "kept when its quads keep the surface's topology, 1: not"),
     QC_NUMBER("param", solver, DefectAdaptiveCurvature,
       "where the repaired map keeps defects, first the adaptive grid of --adaptive-curvature X "
       "is tried, kept with fewer defects, 0: not"),
