@@ -66,6 +66,32 @@ std::size_t defectsBeyondFlat(
 /// more budget) cost seconds; on a large surface (armadillo) minutes, for nothing.
 constexpr double SpentTrianglesPerQuad = 10.0;
 
+/// The quads that map uv gives, cut out and their holes inside the surface filled, as the quad
+/// stage does.
+QuadMesh patchedQuads(
+  const Inputs& in, const Eigen::MatrixX2d& uv, const std::vector<int>& cornerSector)
+{
+  QuadMesh quads =
+    extractQuads(in.V, in.F, in.topo, cornerUVOf(uv, cornerSector), QuadExtractionOptions());
+  patchQuadMesh(in.V, in.F, in.topo, quads);
+  return quads;
+}
+
+/// The quads' topology as two triangles a quad: the same points, edges but the diagonals, loops
+/// and pieces.
+MeshTopology quadTopology(const QuadMesh& quads)
+{
+  return buildTopology(quadTriangles(quads.Q), static_cast<int>(quads.V.rows()));
+}
+
+/// Whether the quads' topology has the surface's pieces, Euler characteristic and boundary loops.
+bool sameTopology(const MeshTopology& quads, const MeshTopology& surface)
+{
+  return quads.numComponents() == surface.numComponents() &&
+    quads.eulerCharacteristic() == surface.eulerCharacteristic() &&
+    quads.boundaryLoops.size() == surface.boundaryLoops.size();
+}
+
 /// Per point of `from`, the index of its nearest point in `to` within `reach`, else -1.
 std::vector<int> nearestWithin(
   const std::vector<Eigen::Vector3d>& from, const std::vector<Eigen::Vector3d>& to, double reach)
@@ -181,14 +207,9 @@ int regridTrials(const Inputs& in, const SeamlessSystem& sys, double edgeLength)
 bool keepsTopology(
   const Inputs& in, const Eigen::MatrixX2d& uv, const std::vector<int>& cornerSector)
 {
-  QuadMesh quads =
-    extractQuads(in.V, in.F, in.topo, cornerUVOf(uv, cornerSector), QuadExtractionOptions());
-  patchQuadMesh(in.V, in.F, in.topo, quads);
-  // two triangles a quad: the same points, edges but the diagonals, loops and pieces
-  const MeshTopology topo = buildTopology(quadTriangles(quads.Q), static_cast<int>(quads.V.rows()));
-  return topo.isManifold() && topo.numComponents() == in.topo.numComponents() &&
-    topo.eulerCharacteristic() == in.topo.eulerCharacteristic() &&
-    topo.boundaryLoops.size() == in.topo.boundaryLoops.size();
+  const QuadMesh quads = patchedQuads(in, uv, cornerSector);
+  const MeshTopology topo = quadTopology(quads);
+  return topo.isManifold() && sameTopology(topo, in.topo);
 }
 
 std::vector<int> pointsBetweenJoinedLoops(
@@ -199,16 +220,11 @@ std::vector<int> pointsBetweenJoinedLoops(
   {
     return {};
   }
-  QuadMesh quads =
-    extractQuads(in.V, in.F, in.topo, cornerUVOf(uv, cornerSector), QuadExtractionOptions());
-  patchQuadMesh(in.V, in.F, in.topo, quads);
+  QuadMesh quads = patchedQuads(in, uv, cornerSector);
   // two loops that the quads pinch together at a point are one loop (the quad stage splits it)
   splitPinchedVertices(quads);
-  const MeshTopology quadTopo =
-    buildTopology(quadTriangles(quads.Q), static_cast<int>(quads.V.rows()));
-  if (quadTopo.numComponents() == in.topo.numComponents() &&
-    quadTopo.eulerCharacteristic() == in.topo.eulerCharacteristic() &&
-    quadTopo.boundaryLoops.size() == loops)
+  const MeshTopology quadTopo = quadTopology(quads);
+  if (sameTopology(quadTopo, in.topo))
   {
     return {}; // the quads keep the loops (however the nearest points fall)
   }
