@@ -2,6 +2,7 @@
 // curvature frames they give.
 #include "CurvatureFrames.h"
 
+#include "DegenerateTriangles.h"
 #include "Parallel.h"
 
 #include <Eigen/Dense>
@@ -24,10 +25,7 @@ Eigen::MatrixX3d computeFaceNormals(const Eigen::MatrixX3d& V, const Eigen::Matr
   {
     const Eigen::Vector3d a = V.row(F(f, 0)), b = V.row(F(f, 1)), c = V.row(F(f, 2));
     raw.row(f) = (b - a).cross(c - a).transpose();
-    const double longest2 =
-      std::max({ (b - a).squaredNorm(), (c - b).squaredNorm(), (a - c).squaredNorm() });
-    // Per triangle and scale-free: sin of the largest angle's supplement below ~1e-12.
-    bad[f] = !(raw.row(f).norm() > 1e-12 * longest2);
+    bad[f] = isDegenerateTriangle(a, b, c);
   }
   Eigen::MatrixX3d N(nf, 3);
   for (int f = 0; f < nf; ++f)

@@ -354,10 +354,10 @@ bool regridDefectiveMap(const Inputs& in, const Field& field, SeamlessSystem& sy
       roundIntegers(in, field, sys, xt, factor, greedy, trial, part.part(0.0, 0.1), true);
     solveWithIntegersFixed(sys, factor, integers, greedy, xt, trial);
     Defects found;
-    found.flipped = flippedFaces(sys.uv(xt), trial.cornerSector);
+    found.flipped = flippedFaces(sys.uv(xt), trial.cornerSector, sys.faceArea);
     trial.flippedRounded = static_cast<int>(found.flipped.size());
     trial.energyRounded = sys.energy(xt);
-    found.wrong = wrongWindings(in, field, trial, sys.uv(xt));
+    found.wrong = wrongWindings(in, field, trial, sys.uv(xt), sys.faceArea);
     repairMap(
       in, field, sys, xt, found, repairBudget(in, out, trialShare), trial, part.part(0.1, 1.0));
     ++out.regrids;

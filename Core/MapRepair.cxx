@@ -132,11 +132,11 @@ private:
   bool isCone(int p) const { return field_.topology.layerShift[p] != 0; }
   std::vector<int> flippedIn(const Eigen::VectorXd& x) const
   {
-    return flippedFaces(sys_.uv(x), out_.cornerSector);
+    return flippedFaces(sys_.uv(x), out_.cornerSector, sys_.faceArea);
   }
   std::vector<int> wrongIn(const Eigen::VectorXd& x) const
   {
-    return wrongWindings(in_, field_, out_, sys_.uv(x));
+    return wrongWindings(in_, field_, out_, sys_.uv(x), sys_.faceArea);
   }
 
   /// Untangles neighbourhoods of 2, 4, ... maxRings rings around the flipped triangles while
@@ -265,15 +265,17 @@ private:
 };
 }
 
-std::vector<int> wrongWindings(
-  const Inputs& in, const Field& field, const Parameterization& out, const Eigen::MatrixX2d& uv)
+std::vector<int> wrongWindings(const Inputs& in, const Field& field, const Parameterization& out,
+  const Eigen::MatrixX2d& uv, const Eigen::VectorXd& faceArea)
 {
   const std::vector<int>& sector = out.cornerSector;
   Eigen::VectorXd sum = Eigen::VectorXd::Zero(in.numVertices());
+  std::vector<char> unknown(in.numVertices(), 0); // at a corner of a triangle left out
   for (int f = 0; f < in.numFaces(); ++f)
   {
     for (int k = 0; k < 3; ++k)
     {
+      unknown[in.F(f, k)] |= !(faceArea[f] > 0.0);
       const Eigen::Vector2d z = uv.row(sector[3 * f + k]).transpose();
       const Eigen::Vector2d a = uv.row(sector[3 * f + (k + 1) % 3]).transpose() - z;
       const Eigen::Vector2d b = uv.row(sector[3 * f + (k + 2) % 3]).transpose() - z;
@@ -283,7 +285,7 @@ std::vector<int> wrongWindings(
   std::vector<int> wrong;
   for (int p = 0; p < in.numVertices(); ++p)
   {
-    if (!in.topo.boundaryVertex[p] && in.topo.ringOrdered[p] &&
+    if (!in.topo.boundaryVertex[p] && in.topo.ringOrdered[p] && !unknown[p] &&
       std::abs(sum[p] - 2 * Pi * (1 - field.topology.index[p])) > 1e-3)
     {
       wrong.push_back(p);

@@ -476,10 +476,10 @@ Parameterization remapOnCells(const Inputs& in, const Field& field, SeamlessSyst
   const Eigen::VectorXd integers =
     roundIntegers(in, field, sys, x, factor, greedy, trial, progress.part(0.0, 0.1));
   solveWithIntegersFixed(sys, factor, integers, greedy, x, trial);
-  found.flipped = flippedFaces(sys.uv(x), trial.cornerSector);
+  found.flipped = flippedFaces(sys.uv(x), trial.cornerSector, sys.faceArea);
   trial.flippedRounded = static_cast<int>(found.flipped.size());
   trial.energyRounded = sys.energy(x);
-  found.wrong = wrongWindings(in, field, trial, sys.uv(x));
+  found.wrong = wrongWindings(in, field, trial, sys.uv(x), sys.faceArea);
   repairMap(in, field, sys, x, found, budget, trial, progress.part(0.1, 1.0));
   return trial;
 }
@@ -792,7 +792,8 @@ Parameterization mapComponent(const Inputs& given, const Progress& progress)
   limitEdgeLengthBySingularities(in, sys, x, out);
   const Eigen::VectorXd continuous = x;
   out.energyContinuous = sys.energy(x);
-  out.flippedContinuous = static_cast<int>(flippedFaces(sys.uv(x), out.cornerSector).size());
+  out.flippedContinuous =
+    static_cast<int>(flippedFaces(sys.uv(x), out.cornerSector, sys.faceArea).size());
 
   // ---- the integer unknowns rounded, the real ones solved again with them fixed ----
   if (round)
@@ -804,11 +805,11 @@ Parameterization mapComponent(const Inputs& given, const Progress& progress)
   progress.report(0.6);
   out.energyRounded = sys.energy(x);
   Defects defects;
-  defects.flipped = flippedFaces(sys.uv(x), out.cornerSector);
+  defects.flipped = flippedFaces(sys.uv(x), out.cornerSector, sys.faceArea);
   out.flippedRounded = static_cast<int>(defects.flipped.size());
 
   // ---- flipped triangles untangled, fans wound the wrong way laid out again ----
-  defects.wrong = wrongWindings(in, field, out, sys.uv(x));
+  defects.wrong = wrongWindings(in, field, out, sys.uv(x), sys.faceArea);
   repairFirstThenRegrid(
     in, field, sys, factor, continuous, greedy, round, x, defects, out, progress.part(0.6, 0.9));
   if (round)

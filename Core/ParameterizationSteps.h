@@ -119,7 +119,7 @@ struct SeamlessSystem
   SparseMatrix H; ///< #columns x #columns: P^T D^T D P, its lower triangle only
   /// 4 #F: sqrt(A) times the combed frame (U', V') / (edgeLength cellScale)
   Eigen::VectorXd rhs;
-  Eigen::VectorXd faceArea; ///< #F: 0 for a degenerate triangle (left out of the energy)
+  Eigen::VectorXd faceArea; ///< #F: 0 for a degenerate triangle (DegenerateAreaRatio; left out)
   /// #F: the grid edge wanted in each triangle over the map's edge length (thinStripGridScale,
   /// curvatureGridScale); empty: 1 everywhere
   Eigen::VectorXd cellScale;
@@ -179,8 +179,10 @@ inline double twiceUVArea(const Eigen::MatrixX2d& uv, const std::vector<int>& co
   return (b - a).x() * (c - a).y() - (b - a).y() * (c - a).x();
 }
 
-/// The faces whose (u, v) area is not positive.
-std::vector<int> flippedFaces(const Eigen::MatrixX2d& uv, const std::vector<int>& cornerSector);
+/// The faces whose (u, v) area is not positive, but those left out of the energy (faceArea 0:
+/// degenerate, their image only what their corners' other triangles make it).
+std::vector<int> flippedFaces(const Eigen::MatrixX2d& uv, const std::vector<int>& cornerSector,
+  const Eigen::VectorXd& faceArea);
 
 /// The map per corner (#F x 6: u, v at corners 0, 1, 2) from the map per sector.
 inline Eigen::MatrixXd cornerUVOf(const Eigen::MatrixX2d& uv, const std::vector<int>& cornerSector)
@@ -250,9 +252,10 @@ struct Defects
   std::size_t count() const { return flipped.size() + wrong.size(); }
 };
 
-/// The inner points around which the map's angles do not add up to 2 pi (1 - index).
-std::vector<int> wrongWindings(
-  const Inputs& in, const Field& field, const Parameterization& out, const Eigen::MatrixX2d& uv);
+/// The inner points around which the map's angles do not add up to 2 pi (1 - index), but the
+/// corners of triangles left out of the energy (faceArea 0), whose angles say nothing.
+std::vector<int> wrongWindings(const Inputs& in, const Field& field, const Parameterization& out,
+  const Eigen::MatrixX2d& uv, const Eigen::VectorXd& faceArea);
 
 /// The untangling's budget of one map, in triangle energy evaluations:
 /// ParameterizationOptions::untangleWork per triangle of the surface, a surface of more than

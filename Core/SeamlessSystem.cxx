@@ -2,6 +2,7 @@
 // constraints of the cut and the boundary eliminated, columns and symbols, the energy.
 #include "ParameterizationSteps.h"
 
+#include "DegenerateTriangles.h"
 #include "FrameField.h"
 #include "NearbyPoints.h"
 
@@ -378,7 +379,9 @@ public:
     }
     const double twiceArea =
       (p[1] - p[0]).x() * (p[2] - p[0]).y() - (p[1] - p[0]).y() * (p[2] - p[0]).x();
-    if (!(twiceArea > 0))
+    const double longest2 = std::max(
+      { (p[1] - p[0]).squaredNorm(), (p[2] - p[1]).squaredNorm(), (p[0] - p[2]).squaredNorm() });
+    if (!(twiceArea > DegenerateAreaRatio * longest2)) // left out, as the frames leave it out
     {
       return;
     }
@@ -644,13 +647,14 @@ Eigen::MatrixX2d SeamlessSystem::uv(const Eigen::VectorXd& columns) const
   return uv;
 }
 
-std::vector<int> flippedFaces(const Eigen::MatrixX2d& uv, const std::vector<int>& cornerSector)
+std::vector<int> flippedFaces(
+  const Eigen::MatrixX2d& uv, const std::vector<int>& cornerSector, const Eigen::VectorXd& faceArea)
 {
   std::vector<int> flipped;
   const int nF = static_cast<int>(cornerSector.size() / 3);
   for (int f = 0; f < nF; ++f)
   {
-    if (!(twiceUVArea(uv, cornerSector, f) > 0))
+    if (faceArea[f] > 0.0 && !(twiceUVArea(uv, cornerSector, f) > 0))
     {
       flipped.push_back(f);
     }

@@ -26,6 +26,8 @@ constexpr const char* ReorientedTriangles = "ReorientedTriangles";
 constexpr const char* CutEdges = "CutEdges";
 /// copies of a point added where separate fans of triangles touched at it
 constexpr const char* SplitVertices = "SplitVertices";
+/// edges flipped to remove degenerate triangles whose corner lay on the opposite edge (caps)
+constexpr const char* FlippedEdges = "FlippedEdges";
 /// triangles of components too coarse for a map (MinimumComponentTriangleCount), split into four
 /// at their edges' midpoints, again until the component had enough
 constexpr const char* RefinedTriangles = "RefinedTriangles";

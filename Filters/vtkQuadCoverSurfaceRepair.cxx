@@ -16,6 +16,7 @@
 #include "vtkPolyData.h"
 #include "vtkSmartPointer.h"
 
+#include "DegenerateTriangles.h"
 #include "MeshTopology.h"
 #include "SurfaceRefinement.h"
 #include "SurfaceRepair.h"
@@ -44,6 +45,7 @@ struct Counts
   vtkIdType reorientedTriangles = 0;
   vtkIdType cutEdges = 0;
   vtkIdType splitVertices = 0;
+  vtkIdType flippedEdges = 0;
   vtkIdType refinedTriangles = 0;
   vtkIdType collapsedEdges = 0;
   vtkIdType smoothedPoints = 0;
@@ -201,6 +203,42 @@ void MakeManifold(vtkPolyData* surface, const vtkQuadCoverSurface& in, Counts& c
   surface->SetPolys(made->GetPolys());
 }
 
+/// The triangles F as cells (`polys`), and `cellData` with each one's data copied from
+/// `from`'s tuple `source[f]`.
+void MakeTriangles(vtkCellData* from, const Eigen::MatrixX3i& F, const std::vector<int>& source,
+  vtkCellArray* polys, vtkCellData* cellData)
+{
+  polys->AllocateExact(F.rows(), 3 * F.rows());
+  cellData->CopyAllocate(from, F.rows());
+  for (Eigen::Index f = 0; f < F.rows(); ++f)
+  {
+    const vtkIdType ids[3] = { F(f, 0), F(f, 1), F(f, 2) };
+    polys->InsertNextCell(3, ids);
+    cellData->CopyData(from, source[f], f);
+  }
+}
+
+/// Flips the edges of `surface` that leave a degenerate triangle with a corner on the opposite
+/// edge (quadcover::flipDegenerateTriangles, on the points scaled as `in` says): the points stay,
+/// each new triangle takes the cell data of the proper triangle it lies in. Counts go to
+/// `counts`.
+void FlipDegenerateTriangles(vtkPolyData* surface, const vtkQuadCoverSurface& in, Counts& counts)
+{
+  Eigen::MatrixX3i F = vtkQuadCoverEigen::Triangles(surface);
+  const quadcover::DegenerateFlips flips =
+    quadcover::flipDegenerateTriangles(in.InCoreUnits(vtkQuadCoverEigen::Points(surface)), F);
+  counts.flippedEdges = flips.flippedEdges;
+  if (flips.flippedEdges == 0)
+  {
+    return;
+  }
+  vtkNew<vtkCellArray> polys;
+  vtkNew<vtkCellData> cellData;
+  MakeTriangles(surface->GetCellData(), F, flips.triangleSource, polys, cellData);
+  surface->SetPolys(polys);
+  surface->GetCellData()->ShallowCopy(cellData);
+}
+
 /// Each triangle's unit normal written into `normals` (a cell normals array in its own type, or
 /// nullptr: nothing to do).
 void RemakeCellNormals(vtkDataArray* normals, const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F)
@@ -250,15 +288,8 @@ void Simplify(
     pointData->CopyData(surface->GetPointData(), s.pointSource[i], i);
   }
   vtkNew<vtkCellArray> polys;
-  polys->AllocateExact(F.rows(), 3 * F.rows());
   vtkNew<vtkCellData> cellData;
-  cellData->CopyAllocate(surface->GetCellData(), F.rows());
-  for (Eigen::Index f = 0; f < F.rows(); ++f)
-  {
-    const vtkIdType ids[3] = { F(f, 0), F(f, 1), F(f, 2) };
-    polys->InsertNextCell(3, ids);
-    cellData->CopyData(surface->GetCellData(), s.triangleSource[f], f);
-  }
+  MakeTriangles(surface->GetCellData(), F, s.triangleSource, polys, cellData);
   // a kept triangle may have a corner moved: its normal made again
   RemakeCellNormals(cellData->GetNormals(), V, F);
   surface->SetPoints(points);
@@ -363,6 +394,7 @@ void vtkQuadCoverSurfaceRepair::Execute(vtkQuadCoverSurface& in, vtkInformationV
   cleaned = nullptr;
   counts.removedCells += RemoveRedundantTriangles(output, in);
   MakeManifold(output, in, counts);
+  FlipDegenerateTriangles(output, in, counts);
   if (this->SmoothRoughSurfaces)
   {
     SmoothRoughComponents(output, in, counts);
@@ -386,6 +418,7 @@ void vtkQuadCoverSurfaceRepair::Execute(vtkQuadCoverSurface& in, vtkInformationV
   AddField<vtkIntArray>(fd, names::ReorientedTriangles, { double(counts.reorientedTriangles) });
   AddField<vtkIntArray>(fd, names::CutEdges, { double(counts.cutEdges) });
   AddField<vtkIntArray>(fd, names::SplitVertices, { double(counts.splitVertices) });
+  AddField<vtkIntArray>(fd, names::FlippedEdges, { double(counts.flippedEdges) });
   AddField<vtkIntArray>(fd, names::RefinedTriangles, { double(counts.refinedTriangles) });
   AddField<vtkIntArray>(fd, names::CollapsedEdges, { double(counts.collapsedEdges) });
   AddField<vtkIntArray>(fd, names::SmoothedPoints, { double(counts.smoothedPoints) });

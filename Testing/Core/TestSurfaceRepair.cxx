@@ -1,5 +1,6 @@
 // Tests of the repair: points merged, non-manifold edges cut apart into sheets, fans split,
-// orientation.
+// orientation, flat caps flipped away.
+#include "DegenerateTriangles.h"
 #include "Matchings.h"
 #include "MeshTopology.h"
 #include "SurfaceRefinement.h"
@@ -233,6 +234,82 @@ TEST(MakeManifold, AZeroAreaSliverOnAnEdgeDoesNotStealItsPair)
   const MeshTopology T = buildTopology(s.F, static_cast<int>(s.V.rows()));
   EXPECT_TRUE(T.nonManifoldEdges.empty());
   EXPECT_NEAR(signedVolume(s), 1.0, 1e-12) << "the box closed and facing outwards";
+}
+
+namespace
+{
+int countFlat(const Surface& s, double ratio)
+{
+  int n = 0;
+  for (int f = 0; f < s.F.rows(); ++f)
+  {
+    n += isDegenerateTriangle(s.V.row(s.F(f, 0)), s.V.row(s.F(f, 1)), s.V.row(s.F(f, 2)), ratio);
+  }
+  return n;
+}
+
+double totalArea(const Surface& s)
+{
+  double area = 0.0;
+  for (int f = 0; f < s.F.rows(); ++f)
+  {
+    const Eigen::Vector3d a = s.V.row(s.F(f, 0)), b = s.V.row(s.F(f, 1)), c = s.V.row(s.F(f, 2));
+    area += 0.5 * (b - a).cross(c - a).norm();
+  }
+  return area;
+}
+}
+
+TEST(FlipDegenerateTriangles, RowsOfCapsOnEdgesBecomeProperTriangles)
+{
+  for (const double lift : { 0.0, 1e-9, -1e-9 })
+  {
+    SCOPED_TRACE("caps lifted " + std::to_string(lift) + " of their edge");
+    Surface s = makeIcosphere(1.0, 2);
+    int caps = 0;
+    for (const int f : { 0, 50, 100, 150, 200, 250 })
+    {
+      caps += fanCapsOnEdge(s, f, 5, lift);
+    }
+    ASSERT_EQ(countFlat(s, FlatTriangleRatio), caps);
+    const Eigen::MatrixX3i before = s.F;
+    const double area = totalArea(s);
+    const DegenerateFlips flips = flipDegenerateTriangles(s.V, s.F);
+    EXPECT_EQ(flips.flippedEdges, caps);
+    EXPECT_EQ(countFlat(s, FlatTriangleRatio), 0);
+    EXPECT_EQ(s.F.rows(), before.rows());
+    EXPECT_EQ(shape(s), (Shape{ { 2, 0 } })) << "still a closed, oriented sphere";
+    EXPECT_NEAR(totalArea(s), area, 1e-9 * area);
+    EXPECT_NEAR(signedVolume(s), signedVolume(Surface{ "", s.V, before, {}, {} }), 1e-9);
+    for (int f = 0; f < s.F.rows(); ++f)
+    {
+      const Eigen::Vector3d a = s.V.row(s.F(f, 0)), b = s.V.row(s.F(f, 1)), c = s.V.row(s.F(f, 2));
+      EXPECT_GT((b - a).cross(c - a).dot(a + b + c), 0.0) << "triangle " << f << " turned over";
+      const int from = flips.triangleSource[f];
+      EXPECT_EQ(countFlat(Surface{ "", s.V, before.row(from), {}, {} }, FlatTriangleRatio), 0)
+        << "triangle " << f << " takes the data of a cap";
+    }
+  }
+}
+
+TEST(FlipDegenerateTriangles, LeavesCapsOnTheBoundaryAndProperTrianglesAsTheyAre)
+{
+  // a square of two triangles whose bottom edge a-b carries a point m: (a, m, c), (m, b, c) and
+  // the cap (a, b, m), whose longest edge is the boundary: no neighbour to flip with
+  Surface s;
+  s.V.resize(5, 3);
+  s.V << 0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0, 0.5, 0, 0;
+  s.F.resize(4, 3);
+  s.F << 0, 4, 3, 4, 1, 3, 0, 1, 4, 1, 2, 3;
+  const Eigen::MatrixX3i before = s.F;
+  DegenerateFlips flips = flipDegenerateTriangles(s.V, s.F);
+  EXPECT_EQ(flips.flippedEdges, 0);
+  EXPECT_EQ(s.F, before);
+  Surface sphere = makeIcosphere(1.0, 2);
+  const Eigen::MatrixX3i whole = sphere.F;
+  flips = flipDegenerateTriangles(sphere.V, sphere.F);
+  EXPECT_EQ(flips.flippedEdges, 0);
+  EXPECT_EQ(sphere.F, whole);
 }
 
 TEST(MakeManifold, ThreePagesOfABookBecomeASheetAndAPage)

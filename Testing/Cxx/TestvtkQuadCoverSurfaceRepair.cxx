@@ -302,6 +302,41 @@ TEST(vtkQuadCoverSurfaceRepair, RemovesARepeatedTriangleKeepingTheData)
   EXPECT_EQ(Topology(r.output).eulerCharacteristic(), 2);
 }
 
+TEST(vtkQuadCoverSurfaceRepair, FlipsACapAwayGivingItsNeighboursData)
+{
+  // an octahedron whose edge 0-2 has a point 6 on its middle: the triangle on one side split
+  // there, the other side's gap filled by the cap (0, 6, 2) of zero area (cell 9)
+  vtkSmartPointer<vtkPolyData> in = Make({ { 1, 0, 0 }, { -1, 0, 0 }, { 0, 1, 0 }, { 0, -1, 0 },
+                                           { 0, 0, 1 }, { 0, 0, -1 }, { 0.5, 0.5, 0 } },
+    { { 0, 2, 4 }, { 2, 1, 4 }, { 1, 3, 4 }, { 3, 0, 4 }, { 6, 0, 5 }, { 2, 6, 5 }, { 1, 2, 5 },
+      { 3, 1, 5 }, { 0, 3, 5 }, { 0, 6, 2 } });
+  vtkNew<vtkDoubleArray> tag;
+  tag->SetName("Tag");
+  for (int c = 0; c < 10; ++c)
+  {
+    tag->InsertNextValue(c);
+  }
+  in->GetCellData()->AddArray(tag);
+  const Repaired r = Repair(in);
+  ASSERT_EQ(r.error, "");
+  EXPECT_EQ(r.Count(names::FlippedEdges), 1);
+  ASSERT_EQ(r.output->GetNumberOfPolys(), 10);
+  EXPECT_EQ(Topology(r.output).eulerCharacteristic(), 2);
+  const Eigen::MatrixX3d V = vtkQuadCoverEigen::Points(r.output);
+  const Eigen::MatrixX3i F = vtkQuadCoverEigen::Triangles(r.output);
+  vtkDataArray* tags = r.output->GetCellData()->GetArray("Tag");
+  ASSERT_NE(tags, nullptr);
+  for (int f = 0; f < F.rows(); ++f)
+  {
+    const Eigen::Vector3d a = V.row(F(f, 0)), b = V.row(F(f, 1)), c = V.row(F(f, 2));
+    EXPECT_GT((b - a).cross(c - a).norm(), 0.1) << "triangle " << f << " is proper";
+  }
+  // the cap's row and its neighbour's (cell 0) now hold the neighbour's two halves
+  EXPECT_EQ(tags->GetTuple1(9), 0.0);
+  EXPECT_EQ(tags->GetTuple1(0), 0.0);
+  EXPECT_EQ(tags->GetTuple1(4), 4.0);
+}
+
 TEST(vtkQuadCoverSurfaceRepair, RefusesWhatItCannotRepair)
 {
   const double nan = std::numeric_limits<double>::quiet_NaN();

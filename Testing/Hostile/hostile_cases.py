@@ -256,6 +256,35 @@ def stray_collinear_triangle(folder):
     return _write(folder, "collinear.obj", _obj_text((points, faces + [(n, n + 1, n + 2)])))
 
 
+def collinear_fans(folder):
+    # a T-junction repaired as CAD exports do: six edges of a sphere each get five points on them
+    # (written with 17 digits: on it to round-off), the triangle on one side split from its far
+    # corner, the one on the
+    # other side fanned from the edge's end into a row of caps (triangles of zero area, a corner
+    # on the longest edge), which left one map unable to be factored
+    points, faces = m.icosphere(3)
+    points, faces = list(points), list(faces)
+    face_of = {(f[k], f[(k + 1) % 3]): i for i, f in enumerate(faces) for k in range(3)}
+    used = set()
+    for start in range(0, len(faces), 211):
+        a, b, c = faces[start]
+        other = face_of[(b, a)]
+        d = next(p for p in faces[other] if p not in (a, b))
+        if used & {a, b, c, d}:
+            continue
+        used |= {a, b, c, d}
+        chain = [a]
+        for j in range(1, 6):
+            chain.append(len(points))
+            points.append(tuple(x + j / 6 * (y - x) for x, y in zip(points[a], points[b])))
+        chain.append(b)
+        faces[other] = None
+        faces += [(chain[j + 1], chain[j], d) for j in range(len(chain) - 1)]
+        faces += [(a, chain[j], chain[j + 1]) for j in range(1, len(chain) - 1)]
+    faces = [f for f in faces if f is not None]
+    return _write(folder, "collinear_fans.obj", _obj_text((points, faces), "%.17g"))
+
+
 def noisy_sphere(folder):
     # a sphere of 5,120 triangles whose points carry noise of half a mean edge length, as a raw
     # scan: smoothed by the repair, its 500 quads have about 10 irregular vertices (left rough,
@@ -428,6 +457,7 @@ CASES = {
     "duplicate_triangles": (duplicate_triangles, Quads(1, 2)),
     "degenerate_next_to_sphere": (degenerate_next_to_sphere, Quads(1, 2)),
     "stray_collinear_triangle": (stray_collinear_triangle, Quads(1, 2)),
+    "collinear_fans": (collinear_fans, Quads(1, 2)),
     "noisy_sphere": (noisy_sphere, Quads(1, 2, irregular=40)),
     "cube_12": (cube_12, Quads(1, 2)),
     "coarse_cone": (coarse_cone, Quads(1, 2)),

@@ -10,6 +10,7 @@
 #include <complex>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 namespace quadcover
 {
@@ -29,6 +30,58 @@ inline Surface testSurface(const std::string& name)
   if (name == "roundedcube")
     return makeRoundedCube(0.3, 20);
   throw std::invalid_argument("unknown test surface " + name);
+}
+
+/// Puts `count` points on the edge a-b of the sphere's triangle f = (a, b, c) at equal steps, a
+/// `lift` of the edge's length off it towards c: the neighbour (b, a, d) is split from d, f's
+/// side fanned from a into a row of caps (a, m1, m2), ..., (a, mk, b) beside f itself, as a
+/// T-junction's repair leaves it. Returns the caps' count.
+inline int fanCapsOnEdge(Surface& s, int f, int count, double lift)
+{
+  const int a = s.F(f, 0), b = s.F(f, 1), c = s.F(f, 2);
+  int other = -1, d = -1;
+  for (int g = 0; g < s.F.rows(); ++g)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      if (s.F(g, k) == b && s.F(g, (k + 1) % 3) == a)
+      {
+        other = g;
+        d = s.F(g, (k + 2) % 3);
+      }
+    }
+  }
+  if (other < 0)
+  {
+    throw std::invalid_argument("fanCapsOnEdge: the edge has no neighbour");
+  }
+  const Eigen::RowVector3d A = s.V.row(a), B = s.V.row(b);
+  const Eigen::RowVector3d up = (s.V.row(c) - 0.5 * (A + B)).normalized() * lift * (B - A).norm();
+  std::vector<int> chain{ a };
+  for (int j = 1; j <= count; ++j)
+  {
+    chain.push_back(static_cast<int>(s.V.rows()));
+    s.V.conservativeResize(s.V.rows() + 1, 3);
+    s.V.bottomRows(1) = A + (B - A) * j / (count + 1.0) + up;
+  }
+  chain.push_back(b);
+  std::vector<Eigen::RowVector3i> added;
+  for (std::size_t j = 0; j + 1 < chain.size(); ++j)
+  {
+    added.emplace_back(chain[j + 1], chain[j], d); // the neighbour split from d
+  }
+  for (std::size_t j = 1; j + 1 < chain.size(); ++j)
+  {
+    added.emplace_back(a, chain[j], chain[j + 1]); // the caps
+  }
+  s.F.row(other) = added.front();
+  const Eigen::Index rows = s.F.rows();
+  s.F.conservativeResize(rows + static_cast<Eigen::Index>(added.size()) - 1, 3);
+  for (std::size_t j = 1; j < added.size(); ++j)
+  {
+    s.F.row(rows + static_cast<Eigen::Index>(j) - 1) = added[j];
+  }
+  return count;
 }
 
 /// The tube the twist check is tested on: makeCylinder(1, 8, 96, 160) (r = 1, z from -4 to 4).
