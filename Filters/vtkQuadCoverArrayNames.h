@@ -22,6 +22,8 @@ constexpr const char* RemovedCells = "RemovedCells";
 constexpr const char* TriangulatedPolygons = "TriangulatedPolygons";
 /// triangles turned over to agree with their neighbours
 constexpr const char* ReorientedTriangles = "ReorientedTriangles";
+/// boundary points that lay on another boundary edge (T-junctions) put into that edge
+constexpr const char* ClosedTJunctions = "ClosedTJunctions";
 /// edges of more than two triangles cut apart into manifold sheets
 constexpr const char* CutEdges = "CutEdges";
 /// copies of a point added where separate fans of triangles touched at it

@@ -22,6 +22,7 @@
 #include "SurfaceRepair.h"
 #include "SurfaceSimplification.h"
 #include "SurfaceSmoothing.h"
+#include "TJunctions.h"
 
 #include <Eigen/Geometry>
 
@@ -46,6 +47,7 @@ struct Counts
   vtkIdType cutEdges = 0;
   vtkIdType splitVertices = 0;
   vtkIdType flippedEdges = 0;
+  vtkIdType closedTJunctions = 0;
   vtkIdType refinedTriangles = 0;
   vtkIdType collapsedEdges = 0;
   vtkIdType smoothedPoints = 0;
@@ -218,7 +220,41 @@ void MakeTriangles(vtkCellData* from, const Eigen::MatrixX3i& F, const std::vect
   }
 }
 
-/// Flips the edges of `surface` that leave a degenerate triangle with a corner on the opposite
+/// Replaces the triangles of `surface` (its points stay) by F, each with the cell data of its
+/// source triangle.
+void ReplaceTriangles(
+  vtkPolyData* surface, const Eigen::MatrixX3i& F, const std::vector<int>& source)
+{
+  vtkNew<vtkCellArray> polys;
+  vtkNew<vtkCellData> cellData;
+  MakeTriangles(surface->GetCellData(), F, source, polys, cellData);
+  surface->SetPolys(polys);
+  surface->GetCellData()->ShallowCopy(cellData);
+}
+
+/// Closes the T-junctions of `surface` (quadcover::closeTJunctions, within TJunctionTolerance
+/// of its bounding box's diagonal, on the points scaled as `in` says): the points stay, each
+/// part of a split triangle takes its cell data. Counts go to `counts`.
+void CloseTJunctions(vtkPolyData* surface, const vtkQuadCoverSurface& in, Counts& counts)
+{
+  const Eigen::MatrixX3d V = in.InCoreUnits(vtkQuadCoverEigen::Points(surface));
+  Eigen::MatrixX3i F = vtkQuadCoverEigen::Triangles(surface);
+  if (V.rows() == 0)
+  {
+    return;
+  }
+  const double diagonal = (V.colwise().maxCoeff() - V.colwise().minCoeff()).norm();
+  const quadcover::TJunctionSplits splits = quadcover::closeTJunctions(
+    V, F, std::isfinite(diagonal) ? quadcover::TJunctionTolerance * diagonal : 0.0);
+  counts.closedTJunctions = splits.closed;
+  if (splits.closed == 0)
+  {
+    return;
+  }
+  ReplaceTriangles(surface, F, splits.triangleSource);
+}
+
+/// Flips the edges of `surface` that leave a flat triangle with a corner on the opposite
 /// edge (quadcover::flipDegenerateTriangles, on the points scaled as `in` says): the points stay,
 /// each new triangle takes the cell data of the proper triangle it lies in. Counts go to
 /// `counts`.
@@ -232,11 +268,7 @@ void FlipDegenerateTriangles(vtkPolyData* surface, const vtkQuadCoverSurface& in
   {
     return;
   }
-  vtkNew<vtkCellArray> polys;
-  vtkNew<vtkCellData> cellData;
-  MakeTriangles(surface->GetCellData(), F, flips.triangleSource, polys, cellData);
-  surface->SetPolys(polys);
-  surface->GetCellData()->ShallowCopy(cellData);
+  ReplaceTriangles(surface, F, flips.triangleSource);
 }
 
 /// Each triangle's unit normal written into `normals` (a cell normals array in its own type, or
@@ -387,11 +419,12 @@ void vtkQuadCoverSurfaceRepair::Execute(vtkQuadCoverSurface& in, vtkInformationV
   this->UpdateProgress(0.5);
   tri->Initialize(); // the steps below replace the arrays: each copy lives only while needed
 
-  // Repeated triangles and components of zero area removed; non-manifold edges cut apart,
-  // bowties split, each component oriented.
+  // T-junctions closed; repeated triangles and components of zero area removed; non-manifold
+  // edges cut apart, bowties split, each component oriented, flat caps flipped away.
   vtkPolyData* output = vtkPolyData::GetData(outputVector);
   output->ShallowCopy(cleaned);
   cleaned = nullptr;
+  CloseTJunctions(output, in, counts);
   counts.removedCells += RemoveRedundantTriangles(output, in);
   MakeManifold(output, in, counts);
   FlipDegenerateTriangles(output, in, counts);
@@ -419,6 +452,7 @@ void vtkQuadCoverSurfaceRepair::Execute(vtkQuadCoverSurface& in, vtkInformationV
   AddField<vtkIntArray>(fd, names::CutEdges, { double(counts.cutEdges) });
   AddField<vtkIntArray>(fd, names::SplitVertices, { double(counts.splitVertices) });
   AddField<vtkIntArray>(fd, names::FlippedEdges, { double(counts.flippedEdges) });
+  AddField<vtkIntArray>(fd, names::ClosedTJunctions, { double(counts.closedTJunctions) });
   AddField<vtkIntArray>(fd, names::RefinedTriangles, { double(counts.refinedTriangles) });
   AddField<vtkIntArray>(fd, names::CollapsedEdges, { double(counts.collapsedEdges) });
   AddField<vtkIntArray>(fd, names::SmoothedPoints, { double(counts.smoothedPoints) });

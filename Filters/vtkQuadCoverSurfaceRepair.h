@@ -12,6 +12,11 @@
  *   coordinate need (MergedPoints), unused points dropped, and triangles left with a repeated
  *   point removed (RemovedCells); numbered and kept as vtkCleanPolyData with that tolerance
  *   would (quadcover::mergeCoincidentPoints);
+ * - T-junctions are closed (ClosedTJunctions; quadcover::closeTJunctions): a point at the end of
+ *   a boundary edge that lies on another boundary edge (within 1e-7 of the bounding box's
+ *   diagonal, farther from its ends) is put into that edge, its triangle split there, each part
+ *   with its cell data; faces meshed one by one, their seams cut at different points, then
+ *   share their seams' points and edges and become one surface;
  * - edges shared by three or more triangles are cut apart into manifold sheets (CutEdges):
  *   around such an edge the two triangles of a surface that passes through it (joined elsewhere
  *   through manifold edges, agreeing in orientation) stay joined, and each other triangle to its

@@ -1,15 +1,17 @@
 // Tests of the repair: points merged, non-manifold edges cut apart into sheets, fans split,
-// orientation, flat caps flipped away.
+// orientation, flat caps flipped away, T-junctions closed.
 #include "DegenerateTriangles.h"
 #include "Matchings.h"
 #include "MeshTopology.h"
 #include "SurfaceRefinement.h"
 #include "SurfaceRepair.h"
+#include "TJunctions.h"
 #include "TestSurfaces.h"
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -310,6 +312,111 @@ TEST(FlipDegenerateTriangles, LeavesCapsOnTheBoundaryAndProperTrianglesAsTheyAre
   flips = flipDegenerateTriangles(sphere.V, sphere.F);
   EXPECT_EQ(flips.flippedEdges, 0);
   EXPECT_EQ(sphere.F, whole);
+}
+
+namespace
+{
+/// A unit box whose six faces are gridded one by one, n[i] x n[i] squares of two triangles each,
+/// every face facing out; `gap` moves the points of the last face's sides inside its plane,
+/// off the other faces' edges. Coincident points merged.
+Surface boxMeshedFaceByFace(const std::array<int, 6>& n, double gap = 0.0)
+{
+  const double sides[6][3][3] = { { { 0, 0, 0 }, { 0, 1, 0 }, { 1, 0, 0 } },
+    { { 0, 0, 1 }, { 1, 0, 0 }, { 0, 1, 0 } }, { { 0, 0, 0 }, { 1, 0, 0 }, { 0, 0, 1 } },
+    { { 0, 1, 0 }, { 0, 0, 1 }, { 1, 0, 0 } }, { { 0, 0, 0 }, { 0, 0, 1 }, { 0, 1, 0 } },
+    { { 1, 0, 0 }, { 0, 1, 0 }, { 0, 0, 1 } } };
+  std::vector<Eigen::RowVector3d> points;
+  std::vector<Eigen::RowVector3i> triangles;
+  for (int side = 0; side < 6; ++side)
+  {
+    const Eigen::RowVector3d o(sides[side][0][0], sides[side][0][1], sides[side][0][2]);
+    const Eigen::RowVector3d u(sides[side][1][0], sides[side][1][1], sides[side][1][2]);
+    const Eigen::RowVector3d v(sides[side][2][0], sides[side][2][1], sides[side][2][2]);
+    const int m = n[side], base = static_cast<int>(points.size());
+    for (int j = 0; j <= m; ++j)
+    {
+      for (int i = 0; i <= m; ++i)
+      {
+        const bool inner = i > 0 && i < m && j > 0 && j < m;
+        const double pull = side == 5 && !inner ? gap : 0.0; // towards the face's middle
+        points.push_back(o + u * (i / double(m)) + v * (j / double(m)) +
+          pull * ((u + v) * 0.5 - u * (i / double(m)) - v * (j / double(m))));
+      }
+    }
+    for (int j = 0; j < m; ++j)
+    {
+      for (int i = 0; i < m; ++i)
+      {
+        const int a = base + j * (m + 1) + i, b = a + 1, c = a + m + 1, d = c + 1;
+        triangles.emplace_back(a, b, d);
+        triangles.emplace_back(a, d, c);
+      }
+    }
+  }
+  Surface s;
+  s.V.resize(static_cast<Eigen::Index>(points.size()), 3);
+  for (std::size_t i = 0; i < points.size(); ++i)
+  {
+    s.V.row(static_cast<Eigen::Index>(i)) = points[i];
+  }
+  s.F.resize(static_cast<Eigen::Index>(triangles.size()), 3);
+  for (std::size_t i = 0; i < triangles.size(); ++i)
+  {
+    s.F.row(static_cast<Eigen::Index>(i)) = triangles[i];
+  }
+  weld(s);
+  return s;
+}
+}
+
+TEST(CloseTJunctions, ABoxMeshedFaceByFaceBecomesOneClosedSurface)
+{
+  Surface s = boxMeshedFaceByFace({ 4, 6, 5, 3, 8, 7 });
+  {
+    Surface apart = s;
+    makeManifold(apart.V, apart.F);
+    EXPECT_EQ(shape(apart).size(), 6u) << "without the T-junctions closed: six squares";
+  }
+  const Eigen::MatrixX3i before = s.F;
+  const double area = totalArea(s);
+  const TJunctionSplits splits = closeTJunctions(s.V, s.F, 1e-9);
+  // on each of the box's 12 edges, the inner points of each side that the other lacks: n1 - 1
+  // and n2 - 1, less twice the gcd(n1, n2) - 1 they share
+  EXPECT_EQ(splits.closed, 96);
+  EXPECT_EQ(s.F.rows(), before.rows() + splits.closed);
+  EXPECT_NEAR(totalArea(s), area, 1e-12);
+  EXPECT_EQ(countFlat(s, FlatTriangleRatio), 0);
+  ASSERT_EQ(splits.triangleSource.size(), static_cast<std::size_t>(s.F.rows()));
+  for (int f = 0; f < s.F.rows(); ++f)
+  {
+    const auto normal = [](const Surface& m, const Eigen::RowVector3i& t) {
+      return Eigen::Vector3d((m.V.row(t[1]) - m.V.row(t[0])).cross(m.V.row(t[2]) - m.V.row(t[0])))
+        .normalized();
+    };
+    EXPECT_NEAR(
+      normal(s, s.F.row(f)).dot(normal(s, before.row(splits.triangleSource[f]))), 1.0, 1e-12)
+      << "triangle " << f << " is a part of its source";
+  }
+  makeManifold(s.V, s.F);
+  EXPECT_EQ(shape(s), (Shape{ { 2, 0 } })) << "one closed box";
+  EXPECT_NEAR(signedVolume(s), 1.0, 1e-12);
+}
+
+TEST(CloseTJunctions, LeavesPointsOffTheEdgesAndSurfacesWithoutBoundary)
+{
+  // the last face's sides pulled 1e-6 inwards: a crack, not a T-junction at 1e-9
+  Surface s = boxMeshedFaceByFace({ 4, 6, 5, 3, 8, 7 }, 1e-6);
+  const Eigen::MatrixX3i before = s.F;
+  TJunctionSplits splits = closeTJunctions(s.V, s.F, 1e-9);
+  // the face x = 1 (7 x 7) meets the faces of 4, 6, 5 and 3 squares: those four seams' 6 + 6 +
+  // 6 + 6 + 3 + 5 + 4 + 2 T-junctions stay open, the other eight seams' are closed
+  EXPECT_EQ(splits.closed, 96 - (4 * 6 + 3 + 5 + 4 + 2)) << "only the other faces' seams";
+  Surface sphere = makeIcosphere(1.0, 2);
+  const Eigen::MatrixX3i whole = sphere.F;
+  splits = closeTJunctions(sphere.V, sphere.F, 1e-3);
+  EXPECT_EQ(splits.closed, 0);
+  EXPECT_EQ(sphere.F, whole);
+  EXPECT_THROW(closeTJunctions(sphere.V, sphere.F, -1.0), std::invalid_argument);
 }
 
 TEST(MakeManifold, ThreePagesOfABookBecomeASheetAndAPage)

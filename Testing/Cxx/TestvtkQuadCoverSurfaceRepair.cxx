@@ -60,6 +60,18 @@ vtkSmartPointer<vtkPolyData> Make(const std::vector<std::vector<double>>& points
   return pd;
 }
 
+/// A cell array "Tag" holding each cell's number.
+void AddCellTags(vtkPolyData* pd)
+{
+  vtkNew<vtkDoubleArray> tag;
+  tag->SetName("Tag");
+  for (vtkIdType c = 0; c < pd->GetNumberOfCells(); ++c)
+  {
+    tag->InsertNextValue(static_cast<double>(c));
+  }
+  pd->GetCellData()->AddArray(tag);
+}
+
 struct Repaired
 {
   vtkSmartPointer<vtkPolyData> output;
@@ -310,13 +322,7 @@ TEST(vtkQuadCoverSurfaceRepair, FlipsACapAwayGivingItsNeighboursData)
                                            { 0, 0, 1 }, { 0, 0, -1 }, { 0.5, 0.5, 0 } },
     { { 0, 2, 4 }, { 2, 1, 4 }, { 1, 3, 4 }, { 3, 0, 4 }, { 6, 0, 5 }, { 2, 6, 5 }, { 1, 2, 5 },
       { 3, 1, 5 }, { 0, 3, 5 }, { 0, 6, 2 } });
-  vtkNew<vtkDoubleArray> tag;
-  tag->SetName("Tag");
-  for (int c = 0; c < 10; ++c)
-  {
-    tag->InsertNextValue(c);
-  }
-  in->GetCellData()->AddArray(tag);
+  AddCellTags(in);
   const Repaired r = Repair(in);
   ASSERT_EQ(r.error, "");
   EXPECT_EQ(r.Count(names::FlippedEdges), 1);
@@ -335,6 +341,32 @@ TEST(vtkQuadCoverSurfaceRepair, FlipsACapAwayGivingItsNeighboursData)
   EXPECT_EQ(tags->GetTuple1(9), 0.0);
   EXPECT_EQ(tags->GetTuple1(0), 0.0);
   EXPECT_EQ(tags->GetTuple1(4), 4.0);
+}
+
+TEST(vtkQuadCoverSurfaceRepair, ClosesATJunctionGivingThePartsTheirTrianglesData)
+{
+  // two unit squares side by side; the right one has a point (1, 0.5) on the side they share,
+  // which the left one's triangle (0, 1, 2) (cell 0) lacks: a seam of two edges against one
+  vtkSmartPointer<vtkPolyData> in = Make(
+    { { 0, 0, 0 }, { 1, 0, 0 }, { 1, 1, 0 }, { 0, 1, 0 }, { 2, 0, 0 }, { 2, 1, 0 }, { 1, 0.5, 0 } },
+    { { 0, 1, 2 }, { 0, 2, 3 }, { 1, 4, 6 }, { 6, 4, 5 }, { 6, 5, 2 } });
+  AddCellTags(in);
+  const Repaired r = Repair(in);
+  ASSERT_EQ(r.error, "");
+  EXPECT_EQ(r.Count(names::ClosedTJunctions), 1);
+  ASSERT_EQ(r.output->GetNumberOfPolys(), 6);
+  const quadcover::MeshTopology T = Topology(r.output);
+  EXPECT_EQ(T.components.size(), 1u);
+  EXPECT_EQ(T.eulerCharacteristic(), 1) << "one sheet with one boundary loop";
+  EXPECT_TRUE(T.isManifold());
+  vtkDataArray* tags = r.output->GetCellData()->GetArray("Tag");
+  ASSERT_NE(tags, nullptr);
+  std::vector<double> got;
+  for (vtkIdType c = 0; c < tags->GetNumberOfTuples(); ++c)
+  {
+    got.push_back(tags->GetTuple1(c));
+  }
+  EXPECT_EQ(got, (std::vector<double>{ 0, 0, 1, 2, 3, 4 })) << "cell 0's two parts";
 }
 
 TEST(vtkQuadCoverSurfaceRepair, RefusesWhatItCannotRepair)

@@ -285,6 +285,25 @@ def collinear_fans(folder):
     return _write(folder, "collinear_fans.obj", _obj_text((points, faces), "%.17g"))
 
 
+def faces_meshed_apart(folder):
+    # a box whose six faces were meshed one by one (4 to 8 squares a side, as some CAD exports
+    # do): the seams' points do not match, every other point of a seam is a T-junction; before
+    # they were closed it came out as six separate squares
+    points, faces = [], []
+    sides = [((0, 0, 0), (0, 1, 0), (1, 0, 0)), ((0, 0, 1), (1, 0, 0), (0, 1, 0)),
+             ((0, 0, 0), (1, 0, 0), (0, 0, 1)), ((0, 1, 0), (0, 0, 1), (1, 0, 0)),
+             ((0, 0, 0), (0, 0, 1), (0, 1, 0)), ((1, 0, 0), (0, 1, 0), (0, 0, 1))]
+    for (o, u, v), n in zip(sides, (4, 6, 5, 3, 8, 7)):
+        base = len(points)
+        points += [tuple(o[k] + u[k] * i / n + v[k] * j / n for k in range(3))
+                   for j in range(n + 1) for i in range(n + 1)]
+        for j in range(n):
+            for i in range(n):
+                a = base + j * (n + 1) + i
+                faces += [(a, a + 1, a + n + 2), (a, a + n + 2, a + n + 1)]
+    return _write(folder, "faces_meshed_apart.obj", _obj_text((points, faces)))
+
+
 def noisy_sphere(folder):
     # a sphere of 5,120 triangles whose points carry noise of half a mean edge length, as a raw
     # scan: smoothed by the repair, its 500 quads have about 10 irregular vertices (left rough,
@@ -458,6 +477,7 @@ CASES = {
     "degenerate_next_to_sphere": (degenerate_next_to_sphere, Quads(1, 2)),
     "stray_collinear_triangle": (stray_collinear_triangle, Quads(1, 2)),
     "collinear_fans": (collinear_fans, Quads(1, 2)),
+    "faces_meshed_apart": (faces_meshed_apart, Quads(1, 2)),
     "noisy_sphere": (noisy_sphere, Quads(1, 2, irregular=40)),
     "cube_12": (cube_12, Quads(1, 2)),
     "coarse_cone": (coarse_cone, Quads(1, 2)),
