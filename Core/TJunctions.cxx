@@ -132,9 +132,85 @@ double cellWidth(const Eigen::MatrixX3d& V, const std::vector<BoundaryEdge>& edg
   return std::isfinite(width) ? width : 0.0;
 }
 
-/// The boundary points that lie on each boundary edge (closeTJunctions' rule).
-Splits findSplits(
-  const Eigen::MatrixX3d& V, const std::vector<BoundaryEdge>& edges, double tolerance)
+/// Per point, its neighbours through boundary edges.
+std::vector<std::vector<int>> boundaryNeighbours(
+  const Eigen::MatrixX3d& V, const std::vector<BoundaryEdge>& edges)
+{
+  std::vector<std::vector<int>> next(static_cast<std::size_t>(V.rows()));
+  for (const BoundaryEdge& e : edges)
+  {
+    next[e.a].push_back(e.b);
+    next[e.b].push_back(e.a);
+  }
+  return next;
+}
+
+/// The inner points of a crack along e (closeTJunctions), in order from e.a; empty if none.
+std::vector<int> crackAlong(
+  const Eigen::MatrixX3d& V, const BoundaryEdge& e, const std::vector<std::vector<int>>& next)
+{
+  const Eigen::Vector3d a = V.row(e.a).transpose(), b = V.row(e.b).transpose(),
+                        c = V.row(e.c).transpose(), d = b - a;
+  const double length = d.norm();
+  const Eigen::Vector3d facing = d.cross(c - a);
+  std::vector<int> path;
+  // depth first from e.a: (point, place along e, path length so far, next neighbour to try)
+  struct Step
+  {
+    int p;
+    double t, walked;
+    std::size_t tried;
+  };
+  std::vector<Step> stack{ { e.a, 0.0, 0.0, 0 } };
+  while (!stack.empty())
+  {
+    Step& top = stack.back();
+    if (top.tried == next[top.p].size())
+    {
+      stack.pop_back();
+      continue;
+    }
+    const int q = next[top.p][top.tried++];
+    const Eigen::Vector3d x = V.row(q).transpose(), from = V.row(top.p).transpose();
+    const double walked = top.walked + (x - from).norm();
+    if (q == e.b && stack.size() > 1 && walked <= CrackLength * length)
+    {
+      for (std::size_t i = 1; i < stack.size(); ++i)
+      {
+        path.push_back(stack[i].p);
+      }
+      break;
+    }
+    const double t = (x - a).dot(d) / (length * length);
+    if (q == e.b || q == e.c || !(t > top.t && t < 1.0) ||
+      !((x - a - t * d).norm() <= CrackWidth * length) ||
+      !(walked + (b - x).norm() <= CrackLength * length) ||
+      static_cast<int>(stack.size()) > MaximumCrackPoints)
+    {
+      continue;
+    }
+    stack.push_back({ q, t, walked, 0 });
+  }
+  // the fan from e.c over the crack's points must face as e's triangle
+  int last = e.a;
+  path.push_back(e.b);
+  for (const int p : path)
+  {
+    const Eigen::Vector3d u = V.row(last).transpose(), w = V.row(p).transpose();
+    if (!((w - u).cross(c - u).dot(facing) > 0.0))
+    {
+      return {};
+    }
+    last = p;
+  }
+  path.pop_back();
+  return path;
+}
+
+/// The boundary points that lie on each boundary edge, or on a crack along it
+/// (closeTJunctions' rule); `crackPoints` counts the latter.
+Splits findSplits(const Eigen::MatrixX3d& V, const std::vector<BoundaryEdge>& edges,
+  double tolerance, int& crackPoints)
 {
   Splits splits;
   const double width = cellWidth(V, edges);
@@ -151,6 +227,7 @@ Splits findSplits(
   std::sort(points.begin(), points.end());
   points.erase(std::unique(points.begin(), points.end()), points.end());
   const PointCells cells(V, points, width);
+  const std::vector<std::vector<int>> next = boundaryNeighbours(V, edges);
   for (const BoundaryEdge& e : edges)
   {
     const Eigen::Vector3d a = V.row(e.a).transpose(), d = V.row(e.b).transpose() - a;
@@ -176,6 +253,15 @@ Splits findSplits(
     for (int s = 0; s <= samples; ++s)
     {
       cells.near(a + d * (static_cast<double>(s) / std::max(1, samples)), test);
+    }
+    if (found.empty())
+    {
+      for (const int p : crackAlong(V, e, next))
+      {
+        const double t = (V.row(p).transpose() - a).dot(d) / (length * length);
+        found.emplace_back(e.a < e.b ? t : 1.0 - t, p);
+        ++crackPoints;
+      }
     }
     if (!found.empty())
     {
@@ -237,7 +323,7 @@ TJunctionSplits closeTJunctions(const Eigen::MatrixX3d& V, Eigen::MatrixX3i& F, 
   }
   TJunctionSplits out;
   const std::vector<BoundaryEdge> edges = boundaryEdges(F);
-  const Splits splits = edges.empty() ? Splits() : findSplits(V, edges, tolerance);
+  const Splits splits = edges.empty() ? Splits() : findSplits(V, edges, tolerance, out.crackPoints);
   out.triangleSource.resize(static_cast<std::size_t>(F.rows()));
   for (int f = 0; f < F.rows(); ++f)
   {

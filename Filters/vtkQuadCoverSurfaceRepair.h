@@ -16,7 +16,9 @@
  *   a boundary edge that lies on another boundary edge (within 1e-7 of the bounding box's
  *   diagonal, farther from its ends) is put into that edge, its triangle split there, each part
  *   with its cell data; faces meshed one by one, their seams cut at different points, then
- *   share their seams' points and edges and become one surface;
+ *   share their seams' points and edges and become one surface. So are the points of a crack
+ *   along a boundary edge (a curved seam: a path of other boundary edges between the edge's
+ *   ends through at most 8 points, within a twentieth of its length of it);
  * - edges shared by three or more triangles are cut apart into manifold sheets (CutEdges):
  *   around such an edge the two triangles of a surface that passes through it (joined elsewhere
  *   through manifold edges, agreeing in orientation) stay joined, and each other triangle to its

@@ -21,6 +21,11 @@ using namespace quadcover;
 
 namespace
 {
+constexpr double Pi = 3.14159265358979323846;
+}
+
+namespace
+{
 /// A closed unit box from corner (x0, y0, z0): 8 points, 12 outward triangles, appended.
 void appendBox(Surface& s, double x0, double y0, double z0)
 {
@@ -316,6 +321,25 @@ TEST(FlipDegenerateTriangles, LeavesCapsOnTheBoundaryAndProperTrianglesAsTheyAre
 
 namespace
 {
+/// The surface of these points and triangles, its equal points merged.
+Surface welded(
+  const std::vector<Eigen::RowVector3d>& points, const std::vector<Eigen::RowVector3i>& triangles)
+{
+  Surface s;
+  s.V.resize(static_cast<Eigen::Index>(points.size()), 3);
+  for (std::size_t i = 0; i < points.size(); ++i)
+  {
+    s.V.row(static_cast<Eigen::Index>(i)) = points[i];
+  }
+  s.F.resize(static_cast<Eigen::Index>(triangles.size()), 3);
+  for (std::size_t i = 0; i < triangles.size(); ++i)
+  {
+    s.F.row(static_cast<Eigen::Index>(i)) = triangles[i];
+  }
+  weld(s);
+  return s;
+}
+
 /// A unit box whose six faces are gridded one by one, n[i] x n[i] squares of two triangles each,
 /// every face facing out; `gap` moves the points of the last face's sides inside its plane,
 /// off the other faces' edges. Coincident points merged.
@@ -353,19 +377,7 @@ Surface boxMeshedFaceByFace(const std::array<int, 6>& n, double gap = 0.0)
       }
     }
   }
-  Surface s;
-  s.V.resize(static_cast<Eigen::Index>(points.size()), 3);
-  for (std::size_t i = 0; i < points.size(); ++i)
-  {
-    s.V.row(static_cast<Eigen::Index>(i)) = points[i];
-  }
-  s.F.resize(static_cast<Eigen::Index>(triangles.size()), 3);
-  for (std::size_t i = 0; i < triangles.size(); ++i)
-  {
-    s.F.row(static_cast<Eigen::Index>(i)) = triangles[i];
-  }
-  weld(s);
-  return s;
+  return welded(points, triangles);
 }
 }
 
@@ -417,6 +429,99 @@ TEST(CloseTJunctions, LeavesPointsOffTheEdgesAndSurfacesWithoutBoundary)
   EXPECT_EQ(splits.closed, 0);
   EXPECT_EQ(sphere.F, whole);
   EXPECT_THROW(closeTJunctions(sphere.V, sphere.F, -1.0), std::invalid_argument);
+}
+
+namespace
+{
+/// A unit sphere from two hemispheres meshed apart: `upper` and `lower` points on the equator
+/// (lower a multiple of upper: the ends of each upper chord are shared), `rings` rings each.
+Surface hemispheresMeshedApart(int upper, int lower, int rings = 8)
+{
+  std::vector<Eigen::RowVector3d> points;
+  std::vector<Eigen::RowVector3i> triangles;
+  for (const int side : { 1, -1 })
+  {
+    const int n = side > 0 ? upper : lower;
+    const int base = static_cast<int>(points.size());
+    for (int k = 0; k < rings; ++k)
+    {
+      const double latitude = side * 0.5 * Pi * k / rings;
+      for (int i = 0; i < n; ++i)
+      {
+        const double around = 2.0 * Pi * i / n;
+        points.emplace_back(std::cos(latitude) * std::cos(around),
+          std::cos(latitude) * std::sin(around), std::sin(latitude));
+      }
+    }
+    points.emplace_back(0.0, 0.0, side);
+    const int pole = static_cast<int>(points.size()) - 1;
+    const auto add = [&](int a, int b, int c) {
+      triangles.push_back(side > 0 ? Eigen::RowVector3i(a, b, c) : Eigen::RowVector3i(a, c, b));
+    };
+    for (int k = 0; k < rings; ++k)
+    {
+      for (int i = 0; i < n; ++i)
+      {
+        const int a = base + k * n + i, b = base + k * n + (i + 1) % n;
+        if (k + 1 == rings)
+        {
+          add(a, b, pole);
+          continue;
+        }
+        add(a, b, b + n);
+        add(a, b + n, a + n);
+      }
+    }
+  }
+  return welded(points, triangles);
+}
+}
+
+TEST(CloseTJunctions, ACurvedSeamCutAtTwiceThePointsIsZipped)
+{
+  // 32 chords above, 64 below: each upper chord has a lower point 0.5% of the diagonal off it
+  for (const int factor : { 2, 4 })
+  {
+    SCOPED_TRACE(std::to_string(factor) + " lower chords per upper one");
+    Surface s = hemispheresMeshedApart(32, 32 * factor);
+    {
+      Surface apart = s;
+      makeManifold(apart.V, apart.F);
+      EXPECT_EQ(shape(apart), (Shape{ { 1, 1 }, { 1, 1 } })) << "two hemispheres before";
+    }
+    const TJunctionSplits splits = closeTJunctions(s.V, s.F, 1e-9);
+    EXPECT_EQ(splits.closed, 32 * (factor - 1));
+    EXPECT_EQ(splits.crackPoints, splits.closed);
+    makeManifold(s.V, s.F);
+    EXPECT_EQ(shape(s), (Shape{ { 2, 0 } })) << "one closed sphere";
+    EXPECT_GT(signedVolume(s), 4.0);
+  }
+  // a seam whose sides are cut at 6 and 4 chords a quarter (the ends of only every other
+  // chord shared) is not a crack along any one edge: left open
+  Surface mutual = hemispheresMeshedApart(16, 24);
+  EXPECT_EQ(closeTJunctions(mutual.V, mutual.F, 1e-9).closed, 0);
+}
+
+TEST(CloseTJunctions, ALensWiderThanACrackStaysOpen)
+{
+  // a triangle whose edge a-b (length 1) faces a fan bowed away from it through three points,
+  // `bow` of the edge's length off it at the middle: a crack at 0.02, a slot at 0.1
+  for (const double bow : { 0.02, 0.1 })
+  {
+    SCOPED_TRACE("bowed " + std::to_string(bow));
+    Surface s;
+    s.V.resize(6, 3);
+    s.V << 0, 0, 0, 1, 0, 0, 0.5, 1, 0, 0.25, -0.75 * bow, 0, 0.5, -bow, 0, 0.75, -0.75 * bow, 0;
+    s.V.conservativeResize(7, 3);
+    s.V.row(6) << 0.5, -1, 0;
+    s.F.resize(5, 3);
+    s.F << 0, 1, 2, 3, 0, 6, 4, 3, 6, 5, 4, 6, 1, 5, 6;
+    const TJunctionSplits splits = closeTJunctions(s.V, s.F, 1e-9);
+    EXPECT_EQ(splits.closed, bow < CrackWidth ? 3 : 0);
+    makeManifold(s.V, s.F); // where the lens stays open its ends are bowties: split
+    const Shape expected = bow < CrackWidth ? Shape{ { 1, 1 } } : Shape{ { 1, 1 }, { 1, 1 } };
+    EXPECT_EQ(shape(s), expected);
+  }
 }
 
 TEST(MakeManifold, ThreePagesOfABookBecomeASheetAndAPage)

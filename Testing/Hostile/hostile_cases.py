@@ -304,6 +304,28 @@ def faces_meshed_apart(folder):
     return _write(folder, "faces_meshed_apart.obj", _obj_text((points, faces)))
 
 
+def hemispheres_meshed_apart(folder):
+    # a sphere whose hemispheres were meshed apart, 32 and 64 points on the equator: the lower
+    # side's extra points lie 0.5% of the diameter off the upper side's chords (a curved seam's
+    # crack); it came out as two hemispheres
+    points, faces = [], []
+    for side, n in ((1, 32), (-1, 64)):
+        base = len(points)
+        for k in range(8):
+            lat = side * math.pi / 2 * k / 8
+            points += [(math.cos(lat) * math.cos(2 * math.pi * i / n),
+                        math.cos(lat) * math.sin(2 * math.pi * i / n), math.sin(lat))
+                       for i in range(n)]
+        points.append((0.0, 0.0, float(side)))
+        pole = len(points) - 1
+        for k in range(8):
+            for i in range(n):
+                a, b = base + k * n + i, base + k * n + (i + 1) % n
+                tris = [(a, b, pole)] if k == 7 else [(a, b, b + n), (a, b + n, a + n)]
+                faces += [t if side > 0 else t[::-1] for t in tris]
+    return _write(folder, "hemispheres.obj", _obj_text((points, faces), "%.17g"))
+
+
 def noisy_sphere(folder):
     # a sphere of 5,120 triangles whose points carry noise of half a mean edge length, as a raw
     # scan: smoothed by the repair, its 500 quads have about 10 irregular vertices (left rough,
@@ -478,6 +500,7 @@ CASES = {
     "stray_collinear_triangle": (stray_collinear_triangle, Quads(1, 2)),
     "collinear_fans": (collinear_fans, Quads(1, 2)),
     "faces_meshed_apart": (faces_meshed_apart, Quads(1, 2)),
+    "hemispheres_meshed_apart": (hemispheres_meshed_apart, Quads(1, 2)),
     "noisy_sphere": (noisy_sphere, Quads(1, 2, irregular=40)),
     "cube_12": (cube_12, Quads(1, 2)),
     "coarse_cone": (coarse_cone, Quads(1, 2)),
