@@ -31,11 +31,11 @@
  * - triangles are turned over where they disagree with their neighbours; each connected
  *   component keeps the orientation of most of its area (ReorientedTriangles; a cell `Normals`
  *   array turns with its triangles);
- * - a triangle of zero area to round-off whose corner lies on its longest edge (a cap, as the
- *   repair of a T-junction or a point put on an edge leaves it) is removed by flipping that edge:
- *   the neighbour across it is split at the corner, both parts with the neighbour's cell data
- *   (FlippedEdges; quadcover::flipDegenerateTriangles). The surface does not change; the
- *   frames and the map would leave the cap out and could not place its corner;
+ * - a flat triangle (height at most 1e-6 of its longest edge) whose corner lies on that edge (a
+ *   cap, as the repair of a T-junction or a point put on an edge leaves it) is removed by
+ *   flipping that edge: the neighbour across it is split at the corner, both parts with the
+ *   neighbour's cell data (FlippedEdges; quadcover::flipDegenerateTriangles). The surface moves
+ *   by at most the cap's height; its gradients, round-off, would leave the map unsolvable;
  * - a rough component, one whose curvature is mostly noise (two pairs of Taubin's steps take
  *   more than 60% of it away: a raw scan, an isosurface of noisy data), is smoothed by Taubin's
  *   steps, its boundary held (SmoothedPoints; SmoothRoughSurfaces,

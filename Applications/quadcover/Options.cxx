@@ -531,7 +531,7 @@ void PrintUsage(std::ostream& os, const std::vector<Option>& options)
         "another boundary edge), edges of more than two triangles cut apart\n"
         "into manifold sheets, a point where separate fans of triangles touch split into one\n"
         "copy per fan, triangles reoriented to agree with their neighbours (each\n"
-        "component keeping the orientation of most of its area), zero-area triangles with a\n"
+        "component keeping the orientation of most of its area), flat triangles with a\n"
         "corner on the opposite edge flipped away, components rough at the\n"
         "triangle scale (noise) smoothed, and the triangles of components too coarse for a\n"
         "map split at their edges' midpoints.\n"
