@@ -1,6 +1,8 @@
 // TJunctions.cxx: T-junctions closed by splitting the boundary edges their points lie on.
 #include "TJunctions.h"
 
+#include "DegenerateTriangles.h"
+
 #include <Eigen/Geometry>
 
 #include <algorithm>
@@ -22,10 +24,13 @@ struct BoundaryEdge
   int a, b, c, f;
 };
 
-std::vector<BoundaryEdge> boundaryEdges(const Eigen::MatrixX3i& F)
+/// The edges of exactly one triangle (of every triangle, repeats included), but those of
+/// degenerate triangles (DegenerateAreaRatio) and of non-finite points: a stray flat triangle
+/// must not join the surface through its points.
+std::vector<BoundaryEdge> boundaryEdges(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F)
 {
   // per side: its points as one key (lower, higher), and its corner 3 f + k
-  std::vector<std::pair<std::uint64_t, int>> sides;
+  std::vector<std::pair<std::uint64_t, std::int64_t>> sides;
   sides.reserve(3 * static_cast<std::size_t>(F.rows()));
   for (int f = 0; f < F.rows(); ++f)
   {
@@ -34,7 +39,7 @@ std::vector<BoundaryEdge> boundaryEdges(const Eigen::MatrixX3i& F)
       const int a = F(f, k), b = F(f, (k + 1) % 3);
       sides.emplace_back((static_cast<std::uint64_t>(std::min(a, b)) << 32) |
           static_cast<std::uint32_t>(std::max(a, b)),
-        3 * f + k);
+        3 * static_cast<std::int64_t>(f) + k);
     }
   }
   std::sort(sides.begin(), sides.end());
@@ -45,9 +50,12 @@ std::vector<BoundaryEdge> boundaryEdges(const Eigen::MatrixX3i& F)
     {
       ++j;
     }
-    if (j == i + 1)
+    const int f = static_cast<int>(sides[i].second / 3), k = static_cast<int>(sides[i].second % 3);
+    const Eigen::Vector3d a = V.row(F(f, 0)).transpose(), b = V.row(F(f, 1)).transpose(),
+                          c = V.row(F(f, 2)).transpose();
+    if (j == i + 1 && a.allFinite() && b.allFinite() && c.allFinite() &&
+      !isDegenerateTriangle(a, b, c))
     {
-      const int f = sides[i].second / 3, k = sides[i].second % 3;
       out.push_back({ F(f, k), F(f, (k + 1) % 3), F(f, (k + 2) % 3), f });
     }
   }
@@ -113,8 +121,13 @@ private:
 };
 
 using Edge = std::pair<int, int>; // (lower point, higher point)
-/// per edge with T-junctions: their points, with their place along it from its lower point
-using Splits = std::map<Edge, std::vector<std::pair<double, int>>>;
+/// The points an edge gets: with their place along it from its lower point; whether a crack's.
+struct EdgeSplit
+{
+  std::vector<std::pair<double, int>> points;
+  bool crack = false;
+};
+using Splits = std::map<Edge, EdgeSplit>;
 
 /// The cells' width: the boundary's median edge, or a quarter of its mean where a few long
 /// edges would make the walk along them long (0 when every edge has zero length).
@@ -132,11 +145,12 @@ double cellWidth(const Eigen::MatrixX3d& V, const std::vector<BoundaryEdge>& edg
   return std::isfinite(width) ? width : 0.0;
 }
 
-/// Per point, its neighbours through boundary edges.
-std::vector<std::vector<int>> boundaryNeighbours(
-  const Eigen::MatrixX3d& V, const std::vector<BoundaryEdge>& edges)
+/// Per boundary point, its neighbours through boundary edges.
+using Neighbours = std::unordered_map<int, std::vector<int>>;
+
+Neighbours boundaryNeighbours(const std::vector<BoundaryEdge>& edges)
 {
-  std::vector<std::vector<int>> next(static_cast<std::size_t>(V.rows()));
+  Neighbours next;
   for (const BoundaryEdge& e : edges)
   {
     next[e.a].push_back(e.b);
@@ -147,12 +161,10 @@ std::vector<std::vector<int>> boundaryNeighbours(
 
 /// The inner points of a crack along e (closeTJunctions), in order from e.a; empty if none.
 std::vector<int> crackAlong(
-  const Eigen::MatrixX3d& V, const BoundaryEdge& e, const std::vector<std::vector<int>>& next)
+  const Eigen::MatrixX3d& V, const BoundaryEdge& e, const Neighbours& next)
 {
-  const Eigen::Vector3d a = V.row(e.a).transpose(), b = V.row(e.b).transpose(),
-                        c = V.row(e.c).transpose(), d = b - a;
+  const Eigen::Vector3d a = V.row(e.a).transpose(), b = V.row(e.b).transpose(), d = b - a;
   const double length = d.norm();
-  const Eigen::Vector3d facing = d.cross(c - a);
   std::vector<int> path;
   // depth first from e.a: (point, place along e, path length so far, next neighbour to try)
   struct Step
@@ -162,15 +174,16 @@ std::vector<int> crackAlong(
     std::size_t tried;
   };
   std::vector<Step> stack{ { e.a, 0.0, 0.0, 0 } };
-  while (!stack.empty())
+  for (int steps = 0; !stack.empty() && steps < MaximumCrackSteps; ++steps)
   {
     Step& top = stack.back();
-    if (top.tried == next[top.p].size())
+    const std::vector<int>& around = next.at(top.p);
+    if (top.tried == around.size())
     {
       stack.pop_back();
       continue;
     }
-    const int q = next[top.p][top.tried++];
+    const int q = around[top.tried++];
     const Eigen::Vector3d x = V.row(q).transpose(), from = V.row(top.p).transpose();
     const double walked = top.walked + (x - from).norm();
     if (q == e.b && stack.size() > 1 && walked <= CrackLength * length)
@@ -191,26 +204,13 @@ std::vector<int> crackAlong(
     }
     stack.push_back({ q, t, walked, 0 });
   }
-  // the fan from e.c over the crack's points must face as e's triangle
-  int last = e.a;
-  path.push_back(e.b);
-  for (const int p : path)
-  {
-    const Eigen::Vector3d u = V.row(last).transpose(), w = V.row(p).transpose();
-    if (!((w - u).cross(c - u).dot(facing) > 0.0))
-    {
-      return {};
-    }
-    last = p;
-  }
-  path.pop_back();
   return path;
 }
 
 /// The boundary points that lie on each boundary edge, or on a crack along it
-/// (closeTJunctions' rule); `crackPoints` counts the latter.
-Splits findSplits(const Eigen::MatrixX3d& V, const std::vector<BoundaryEdge>& edges,
-  double tolerance, int& crackPoints)
+/// (closeTJunctions' rule).
+Splits findSplits(
+  const Eigen::MatrixX3d& V, const std::vector<BoundaryEdge>& edges, double tolerance)
 {
   Splits splits;
   const double width = cellWidth(V, edges);
@@ -227,7 +227,7 @@ Splits findSplits(const Eigen::MatrixX3d& V, const std::vector<BoundaryEdge>& ed
   std::sort(points.begin(), points.end());
   points.erase(std::unique(points.begin(), points.end()), points.end());
   const PointCells cells(V, points, width);
-  const std::vector<std::vector<int>> next = boundaryNeighbours(V, edges);
+  const Neighbours next = boundaryNeighbours(edges);
   for (const BoundaryEdge& e : edges)
   {
     const Eigen::Vector3d a = V.row(e.a).transpose(), d = V.row(e.b).transpose() - a;
@@ -254,64 +254,113 @@ Splits findSplits(const Eigen::MatrixX3d& V, const std::vector<BoundaryEdge>& ed
     {
       cells.near(a + d * (static_cast<double>(s) / std::max(1, samples)), test);
     }
-    if (found.empty())
+    const bool crack = found.empty();
+    if (crack)
     {
       for (const int p : crackAlong(V, e, next))
       {
         const double t = (V.row(p).transpose() - a).dot(d) / (length * length);
         found.emplace_back(e.a < e.b ? t : 1.0 - t, p);
-        ++crackPoints;
       }
     }
     if (!found.empty())
     {
       std::sort(found.begin(), found.end());
       found.erase(std::unique(found.begin(), found.end()), found.end());
-      splits[{ std::min(e.a, e.b), std::max(e.a, e.b) }] = std::move(found);
+      splits[{ std::min(e.a, e.b), std::max(e.a, e.b) }] = { std::move(found), crack };
     }
   }
   return splits;
 }
 
-/// Triangle t split at the points of its edges in `splits`: a fan from the corner opposite the
-/// first such edge, again for the parts' other edges. The parts go to `out`.
-void splitTriangle(
-  const Eigen::RowVector3i& t, const Splits& splits, std::vector<Eigen::RowVector3i>& out)
+/// The points `splits` gives the edge from x to y, in order from x (none that is a corner of
+/// the triangle, or in `taken`: a point goes into one edge of a triangle only).
+std::vector<int> chainOf(int x, int y, const Eigen::RowVector3i& t, const Splits& splits,
+  std::vector<int>& taken, bool& crack)
 {
-  std::vector<Eigen::RowVector3i> work{ t };
-  while (!work.empty())
+  std::vector<int> chain;
+  const auto it = splits.find({ std::min(x, y), std::max(x, y) });
+  if (it == splits.end())
   {
-    const Eigen::RowVector3i tri = work.back();
-    work.pop_back();
-    int k = 0;
-    auto it = splits.end();
-    for (; k < 3 && it == splits.end(); ++k)
-    {
-      const int x = tri[k], y = tri[(k + 1) % 3];
-      it = splits.find({ std::min(x, y), std::max(x, y) });
-    }
-    if (it == splits.end())
-    {
-      out.push_back(tri);
-      continue;
-    }
-    --k;
-    const int x = tri[k], y = tri[(k + 1) % 3], z = tri[(k + 2) % 3];
-    std::vector<int> chain{ x };
-    for (const auto& [place, p] : it->second)
+    return chain;
+  }
+  crack = it->second.crack;
+  for (const auto& [place, p] : it->second.points)
+  {
+    if (p != t[0] && p != t[1] && p != t[2] &&
+      std::find(taken.begin(), taken.end(), p) == taken.end())
     {
       chain.push_back(p);
-    }
-    if (x > y) // the places run from the lower point
-    {
-      std::reverse(chain.begin() + 1, chain.end());
-    }
-    chain.push_back(y);
-    for (std::size_t j = 0; j + 1 < chain.size(); ++j)
-    {
-      work.emplace_back(chain[j], chain[j + 1], z);
+      taken.push_back(p);
     }
   }
+  if (x > y) // the places run from the lower point
+  {
+    std::reverse(chain.begin(), chain.end());
+  }
+  return chain;
+}
+
+/// Triangle t split at the points `splits` gives its own three edges: a fan from the corner
+/// opposite the first such edge, then for each part that has one of the other two edges, a fan
+/// along it. The parts, when each is proper and faces as t, else t itself, go to `out`; returns
+/// the points put in, and adds those of cracks to `crackPoints`.
+int splitTriangle(const Eigen::MatrixX3d& V, const Eigen::RowVector3i& t, const Splits& splits,
+  std::vector<Eigen::RowVector3i>& out, int& crackPoints)
+{
+  std::array<std::vector<int>, 3> chain; // per edge k of t, from t[k] to t[k + 1]
+  std::vector<int> taken;
+  int ofCracks = 0;
+  for (int k = 0; k < 3; ++k)
+  {
+    bool crack = false;
+    chain[k] = chainOf(t[k], t[(k + 1) % 3], t, splits, taken, crack);
+    ofCracks += crack ? static_cast<int>(chain[k].size()) : 0;
+  }
+  // parts with, per edge, the edge of t it is (-1: none, or split already)
+  std::vector<std::pair<Eigen::RowVector3i, std::array<int, 3>>> work{ { t, { 0, 1, 2 } } };
+  std::vector<Eigen::RowVector3i> parts;
+  while (!work.empty())
+  {
+    const auto [tri, of] = work.back();
+    work.pop_back();
+    int k = 0;
+    while (k < 3 && (of[k] < 0 || chain[of[k]].empty()))
+    {
+      ++k;
+    }
+    if (k == 3)
+    {
+      parts.push_back(tri);
+      continue;
+    }
+    std::vector<int> run{ tri[k] };
+    run.insert(run.end(), chain[of[k]].begin(), chain[of[k]].end());
+    run.push_back(tri[(k + 1) % 3]);
+    const int z = tri[(k + 2) % 3];
+    for (std::size_t j = 0; j + 1 < run.size(); ++j)
+    {
+      work.push_back({ Eigen::RowVector3i(run[j], run[j + 1], z),
+        { -1, j + 2 == run.size() ? of[(k + 1) % 3] : -1, j == 0 ? of[(k + 2) % 3] : -1 } });
+    }
+  }
+  const auto normal = [&](const Eigen::RowVector3i& r) {
+    const Eigen::Vector3d a = V.row(r[0]).transpose();
+    return Eigen::Vector3d((V.row(r[1]).transpose() - a).cross(V.row(r[2]).transpose() - a));
+  };
+  const Eigen::Vector3d facing = normal(t);
+  for (const Eigen::RowVector3i& r : parts)
+  {
+    if (isDegenerateTriangle(V.row(r[0]), V.row(r[1]), V.row(r[2])) ||
+      !(normal(r).dot(facing) > 0.0))
+    {
+      out.push_back(t);
+      return 0;
+    }
+  }
+  out.insert(out.end(), parts.begin(), parts.end());
+  crackPoints += ofCracks;
+  return static_cast<int>(parts.size()) - 1;
 }
 }
 
@@ -321,9 +370,13 @@ TJunctionSplits closeTJunctions(const Eigen::MatrixX3d& V, Eigen::MatrixX3i& F, 
   {
     throw std::invalid_argument("closeTJunctions: the tolerance must be finite and >= 0");
   }
+  if (F.size() > 0 && (F.minCoeff() < 0 || F.maxCoeff() >= V.rows()))
+  {
+    throw std::invalid_argument("closeTJunctions: a point index is out of range");
+  }
   TJunctionSplits out;
-  const std::vector<BoundaryEdge> edges = boundaryEdges(F);
-  const Splits splits = edges.empty() ? Splits() : findSplits(V, edges, tolerance, out.crackPoints);
+  const std::vector<BoundaryEdge> edges = boundaryEdges(V, F);
+  const Splits splits = edges.empty() ? Splits() : findSplits(V, edges, tolerance);
   out.triangleSource.resize(static_cast<std::size_t>(F.rows()));
   for (int f = 0; f < F.rows(); ++f)
   {
@@ -338,10 +391,6 @@ TJunctionSplits closeTJunctions(const Eigen::MatrixX3d& V, Eigen::MatrixX3i& F, 
   {
     touched[e.f] |= splits.count({ std::min(e.a, e.b), std::max(e.a, e.b) }) > 0;
   }
-  for (const auto& [edge, points] : splits)
-  {
-    out.closed += static_cast<int>(points.size());
-  }
   std::vector<Eigen::RowVector3i> triangles;
   out.triangleSource.clear();
   for (int f = 0; f < F.rows(); ++f)
@@ -349,7 +398,7 @@ TJunctionSplits closeTJunctions(const Eigen::MatrixX3d& V, Eigen::MatrixX3i& F, 
     const std::size_t before = triangles.size();
     if (touched[f])
     {
-      splitTriangle(F.row(f), splits, triangles);
+      out.closed += splitTriangle(V, F.row(f), splits, triangles, out.crackPoints);
     }
     else
     {

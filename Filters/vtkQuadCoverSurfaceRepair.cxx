@@ -419,13 +419,14 @@ void vtkQuadCoverSurfaceRepair::Execute(vtkQuadCoverSurface& in, vtkInformationV
   this->UpdateProgress(0.5);
   tri->Initialize(); // the steps below replace the arrays: each copy lives only while needed
 
-  // T-junctions closed; repeated triangles and components of zero area removed; non-manifold
-  // edges cut apart, bowties split, each component oriented, flat caps flipped away.
+  // Repeated triangles and components of zero area removed (a repeat would hide its edges'
+  // T-junctions); T-junctions closed; non-manifold edges cut apart, bowties split, each
+  // component oriented, flat caps flipped away.
   vtkPolyData* output = vtkPolyData::GetData(outputVector);
   output->ShallowCopy(cleaned);
   cleaned = nullptr;
-  CloseTJunctions(output, in, counts);
   counts.removedCells += RemoveRedundantTriangles(output, in);
+  CloseTJunctions(output, in, counts);
   MakeManifold(output, in, counts);
   FlipDegenerateTriangles(output, in, counts);
   if (this->SmoothRoughSurfaces)
