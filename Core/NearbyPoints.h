@@ -8,11 +8,24 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdint>
 #include <map>
 #include <vector>
 
 namespace quadcover
 {
+/// A hash of a grid cell's three indices (FNV-1a over them), for unordered maps of cells: a
+/// collision of two cells only adds candidates to a search.
+inline std::uint64_t cellHash(const std::array<std::int64_t, 3>& c)
+{
+  std::uint64_t h = 1469598103934665603ULL;
+  for (const std::int64_t x : c)
+  {
+    h = (h ^ static_cast<std::uint64_t>(x)) * 1099511628211ULL;
+  }
+  return h;
+}
+
 /// For each point, the later ones (in order) in its own or a neighbouring cell of a grid of cells
 /// `reach` wide: every later point within `reach` of it, and some farther. Without a positive
 /// finite reach, every later point.

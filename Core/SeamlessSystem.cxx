@@ -379,9 +379,8 @@ public:
     }
     const double twiceArea =
       (p[1] - p[0]).x() * (p[2] - p[0]).y() - (p[1] - p[0]).y() * (p[2] - p[0]).x();
-    const double longest2 = std::max(
-      { (p[1] - p[0]).squaredNorm(), (p[2] - p[1]).squaredNorm(), (p[0] - p[2]).squaredNorm() });
-    if (!(twiceArea > DegenerateAreaRatio * longest2)) // left out, as the frames leave it out
+    if (!(twiceArea > 0) || // left out where degenerate, as the frames leave it out
+      isDegenerateTriangle(in_.V.row(in_.F(f, 0)), in_.V.row(in_.F(f, 1)), in_.V.row(in_.F(f, 2))))
     {
       return;
     }

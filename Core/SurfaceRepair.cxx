@@ -2,6 +2,8 @@
 // oriented surface.
 #include "SurfaceRepair.h"
 
+#include "EdgeGroups.h"
+#include "NearbyPoints.h"
 #include "UnionFind.h"
 
 #include <Eigen/Geometry>
@@ -25,51 +27,6 @@ struct Glue
 {
   int c0, c1;
 };
-
-/// The corners 3f+k of every edge, grouped: edge k of face f runs F(f,k) -> F(f,k+1).
-struct EdgeGroups
-{
-  std::vector<int> corners; ///< sorted by the edge's point pair, then by corner
-  std::vector<int> offsets; ///< group g is corners[offsets[g] .. offsets[g+1])
-};
-
-int tail(const Eigen::MatrixX3i& F, int c)
-{
-  return F(c / 3, c % 3);
-}
-
-int head(const Eigen::MatrixX3i& F, int c)
-{
-  return F(c / 3, (c % 3 + 1) % 3);
-}
-
-EdgeGroups groupEdges(const Eigen::MatrixX3i& F)
-{
-  const int nc = 3 * static_cast<int>(F.rows());
-  // (the edge's point pair as one number, the corner), sorted: contiguous keys sort several
-  // times faster than keys looked up in F at every comparison
-  std::vector<std::pair<std::uint64_t, int>> keyed(nc);
-  for (int c = 0; c < nc; ++c)
-  {
-    const int p = tail(F, c), q = head(F, c);
-    const auto low = static_cast<std::uint64_t>(static_cast<std::uint32_t>(std::min(p, q)));
-    const auto high = static_cast<std::uint64_t>(static_cast<std::uint32_t>(std::max(p, q)));
-    keyed[c] = { (low << 32) | high, c };
-  }
-  std::sort(keyed.begin(), keyed.end());
-  EdgeGroups groups;
-  groups.corners.resize(nc);
-  for (int i = 0; i < nc; ++i)
-  {
-    groups.corners[i] = keyed[i].second;
-    if (i == 0 || keyed[i].first != keyed[i - 1].first)
-    {
-      groups.offsets.push_back(i);
-    }
-  }
-  groups.offsets.push_back(nc);
-  return groups;
-}
 
 /**
  * Pairs the n > 2 triangles around one edge (a, b), a < b. First, a patch (`patch`: triangles
@@ -427,14 +384,6 @@ MergedPoints mergeCoincidentPoints(
     : (extent > 0.0 && std::isfinite(extent) ? 1e-9 * extent : 1.0);
   const double tolerance2 = tolerance * tolerance;
   using Cell = std::array<std::int64_t, 3>;
-  const auto key = [](const Cell& c) {
-    std::uint64_t h = 1469598103934665603ULL;
-    for (const std::int64_t x : c)
-    {
-      h = (h ^ static_cast<std::uint64_t>(x)) * 1099511628211ULL;
-    }
-    return h;
-  };
   // per key: the merged points in its cell (a collision of keys only adds candidates)
   std::unordered_map<std::uint64_t, std::vector<int>> cells;
   cells.reserve(static_cast<std::size_t>(nv));
@@ -469,7 +418,7 @@ MergedPoints mergeCoincidentPoints(
         for (int dy = std::min(0, side[1]); dy <= std::max(0, side[1]); ++dy)
           for (int dz = std::min(0, side[2]); dz <= std::max(0, side[2]); ++dz)
           {
-            const auto it = cells.find(key({ c[0] + dx, c[1] + dy, c[2] + dz }));
+            const auto it = cells.find(cellHash({ c[0] + dx, c[1] + dy, c[2] + dz }));
             if (it == cells.end())
             {
               continue;
@@ -487,7 +436,7 @@ MergedPoints mergeCoincidentPoints(
       {
         found = static_cast<int>(out.source.size());
         out.source.push_back(p);
-        cells[key(c)].push_back(found);
+        cells[cellHash(c)].push_back(found);
       }
       out.pointOf[p] = found;
     }

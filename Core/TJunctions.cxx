@@ -2,6 +2,8 @@
 #include "TJunctions.h"
 
 #include "DegenerateTriangles.h"
+#include "EdgeGroups.h"
+#include "NearbyPoints.h"
 
 #include <Eigen/Geometry>
 
@@ -29,32 +31,18 @@ struct BoundaryEdge
 /// must not join the surface through its points.
 std::vector<BoundaryEdge> boundaryEdges(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F)
 {
-  // per side: its points as one key (lower, higher), and its corner 3 f + k
-  std::vector<std::pair<std::uint64_t, std::int64_t>> sides;
-  sides.reserve(3 * static_cast<std::size_t>(F.rows()));
-  for (int f = 0; f < F.rows(); ++f)
-  {
-    for (int k = 0; k < 3; ++k)
-    {
-      const int a = F(f, k), b = F(f, (k + 1) % 3);
-      sides.emplace_back((static_cast<std::uint64_t>(std::min(a, b)) << 32) |
-          static_cast<std::uint32_t>(std::max(a, b)),
-        3 * static_cast<std::int64_t>(f) + k);
-    }
-  }
-  std::sort(sides.begin(), sides.end());
+  const EdgeGroups groups = groupEdges(F);
   std::vector<BoundaryEdge> out;
-  for (std::size_t i = 0, j = 0; i < sides.size(); i = j)
+  for (std::size_t g = 0; g + 1 < groups.offsets.size(); ++g)
   {
-    for (j = i + 1; j < sides.size() && sides[j].first == sides[i].first;)
+    if (groups.offsets[g + 1] - groups.offsets[g] != 1)
     {
-      ++j;
+      continue;
     }
-    const int f = static_cast<int>(sides[i].second / 3), k = static_cast<int>(sides[i].second % 3);
+    const int c = groups.corners[groups.offsets[g]], f = c / 3, k = c % 3;
     const Eigen::Vector3d a = V.row(F(f, 0)).transpose(), b = V.row(F(f, 1)).transpose(),
-                          c = V.row(F(f, 2)).transpose();
-    if (j == i + 1 && a.allFinite() && b.allFinite() && c.allFinite() &&
-      !isDegenerateTriangle(a, b, c))
+                          d = V.row(F(f, 2)).transpose();
+    if (a.allFinite() && b.allFinite() && d.allFinite() && !isDegenerateTriangle(a, b, d))
     {
       out.push_back({ F(f, k), F(f, (k + 1) % 3), F(f, (k + 2) % 3), f });
     }
@@ -72,7 +60,7 @@ public:
   {
     for (const int p : points)
     {
-      this->Cells[Key(this->CellOf(V.row(p).transpose()))].push_back(p);
+      this->Cells[cellHash(this->CellOf(V.row(p).transpose()))].push_back(p);
     }
   }
 
@@ -84,7 +72,7 @@ public:
       for (std::int64_t dy = -1; dy <= 1; ++dy)
         for (std::int64_t dz = -1; dz <= 1; ++dz)
         {
-          const auto it = this->Cells.find(Key({ c[0] + dx, c[1] + dy, c[2] + dz }));
+          const auto it = this->Cells.find(cellHash({ c[0] + dx, c[1] + dy, c[2] + dz }));
           if (it != this->Cells.end())
           {
             for (const int p : it->second)
@@ -104,16 +92,6 @@ private:
       c[d] = static_cast<std::int64_t>(std::clamp(std::floor(x[d] / this->Width), -4e18, 4e18));
     }
     return c;
-  }
-
-  static std::uint64_t Key(const std::array<std::int64_t, 3>& c)
-  {
-    std::uint64_t h = 1469598103934665603ULL;
-    for (const std::int64_t x : c)
-    {
-      h = (h ^ static_cast<std::uint64_t>(x)) * 1099511628211ULL;
-    }
-    return h;
   }
 
   double Width;
