@@ -230,6 +230,54 @@ std::vector<char> shortBoundaryRuns(const Inputs& in, double edgeLength)
   return isShort;
 }
 
+/// Per edge of topo, 1 on one of the two boundary edges at a tip of the boundary (an angle of
+/// less than a quarter turn inside the surface) that would both go on lines of the same coordinate
+/// through the tip (constantCoordinate, the same sector): the shorter of the two. Both on lines,
+/// the lines through the tip are one, and the two sides of the boundary with them: the tip's fan
+/// and every triangle between the sides is squashed onto the line (an isosurface cut by its
+/// volume's face leaves slivers whose tips are single triangles of 10 degrees: no grid cell of
+/// their map gave a quad, at any count).
+std::vector<char> boundaryTips(
+  const Inputs& in, const Field& field, const Parameterization& out, double tolerance)
+{
+  const MeshTopology& topo = in.topo;
+  std::vector<char> tip(topo.numEdges(), 0);
+  std::vector<int> edgeFrom(in.numVertices(), -1);
+  for (int e = 0; e < topo.numEdges(); ++e)
+  {
+    if (topo.edgeFaceCount[e] == 1)
+    {
+      const int c0 = topo.edgeCorners(e, 0);
+      edgeFrom[in.F(c0 / 3, c0 % 3)] = e;
+    }
+  }
+  for (const std::vector<int>& loop : topo.boundaryLoops)
+  {
+    const int n = static_cast<int>(loop.size());
+    for (int i = 0; i < n && n > 2; ++i)
+    {
+      const int p = loop[i];
+      const int before = edgeFrom[loop[(i + n - 1) % n]], after = edgeFrom[p];
+      // the angle inside is pi less the point's defect
+      if (before < 0 || after < 0 || !(in.geometry.defect[p] > Pi / 2))
+      {
+        continue;
+      }
+      const int a = topo.edgeCorners(before, 0), b = topo.edgeCorners(after, 0);
+      const int ca = constantCoordinate(in, field, out, a / 3, a % 3, tolerance);
+      const int cb = constantCoordinate(in, field, out, b / 3, b % 3, tolerance);
+      if (ca >= 0 && ca == cb && sectorOf(in.F, out, a / 3, p) == sectorOf(in.F, out, b / 3, p))
+      {
+        const auto length = [&](int e) {
+          return (in.V.row(topo.edges(e, 0)) - in.V.row(topo.edges(e, 1))).norm();
+        };
+        tip[length(before) < length(after) ? before : after] = 1;
+      }
+    }
+  }
+  return tip;
+}
+
 /// Boundary edges, and sharp edges (featureLines), along a combed frame direction: the other
 /// coordinate is an integer line. Returns per sector coordinate (2s + c) 1 where it is on a line.
 std::vector<char> alignToLines(
@@ -260,10 +308,13 @@ std::vector<char> alignToLines(
   const std::vector<char> shortRun = in.options.alignToBoundary
     ? shortBoundaryRuns(in, out.edgeLength)
     : std::vector<char>(in.topo.numEdges(), 0);
+  const std::vector<char> tip = in.options.alignToBoundary
+    ? boundaryTips(in, field, out, tolerance)
+    : std::vector<char>(in.topo.numEdges(), 0);
   for (int e = 0; e < in.topo.numEdges(); ++e)
   {
     const bool boundary =
-      in.topo.edgeFaceCount[e] == 1 && in.options.alignToBoundary && !shortRun[e];
+      in.topo.edgeFaceCount[e] == 1 && in.options.alignToBoundary && !shortRun[e] && !tip[e];
     const bool feature = in.topo.edgeFaceCount[e] == 2 && sharp[e];
     if (!boundary && !feature)
     {

@@ -471,6 +471,80 @@ TEST(Parameterization, StepsOfJaggedHolesLessThanAGridEdgeApartStayOnLines)
 
 namespace
 {
+/// A flat lens 2 long between the arcs y = +-t (1 - x^2), t = tan(tipAngle / 2) / 2 (each meets
+/// the x axis at tipAngle / 2), as n strips across it: each tip is one triangle of tipAngle.
+Surface lens(int n, double tipAngle)
+{
+  const double t = std::tan(tipAngle / 2) / 2;
+  Surface s;
+  s.V.resize(2 * n, 3); // the tips, then the arcs' inner points: upper 2 + i, lower n + 1 + i
+  s.V.row(0) << -1.0, 0.0, 0.0;
+  s.V.row(1) << 1.0, 0.0, 0.0;
+  auto upper = [&](int i) { return i == 0 ? 0 : (i == n ? 1 : 1 + i); };
+  auto lower = [&](int i) { return i == 0 ? 0 : (i == n ? 1 : n + i); };
+  for (int i = 1; i < n; ++i)
+  {
+    const double x = -1.0 + 2.0 * i / n, y = t * (1 - x * x);
+    s.V.row(upper(i)) << x, y, 0.0;
+    s.V.row(lower(i)) << x, -y, 0.0;
+  }
+  std::vector<Eigen::Vector3i> faces;
+  for (int i = 0; i < n; ++i)
+  {
+    if (i > 0)
+    {
+      faces.emplace_back(lower(i), lower(i + 1), upper(i));
+    }
+    if (i + 1 < n)
+    {
+      faces.emplace_back(upper(i), lower(i + 1), upper(i + 1));
+    }
+  }
+  faces.front() = Eigen::Vector3i(0, lower(1), upper(1));
+  faces.back() = Eigen::Vector3i(upper(n - 1), lower(n - 1), 1);
+  s.F.resize(static_cast<int>(faces.size()), 3);
+  for (std::size_t f = 0; f < faces.size(); ++f)
+  {
+    s.F.row(static_cast<int>(f)) = faces[f].transpose();
+  }
+  return s;
+}
+}
+
+TEST(Parameterization, TheTwoSidesOfASharpTipGoOnLinesApart)
+{
+  // A lens whose tips are single triangles of 10 degrees (as an isosurface cut by its volume's
+  // face leaves them): the frames follow both sides of a tip, and with both on lines through the
+  // tip the two lines were one, and the lens with them: no grid cell gave a quad at any count.
+  // The shorter side of the tip stays off its line; the sides' lines are apart, the lens is
+  // quads.
+  const Surface s = lens(60, 10 * Pi / 180);
+  const MeshTopology topo = buildTopology(s.F, static_cast<int>(s.V.rows()));
+  ASSERT_TRUE(topo.isManifold());
+  ASSERT_EQ(topo.eulerCharacteristic(), 1);
+  ASSERT_EQ(topo.boundaryLoops.size(), 1u);
+  for (const double q : { 24.0, 100.0, 500.0 })
+  {
+    SCOPED_TRACE(q);
+    const Chain r = runChain(s, q);
+    EXPECT_EQ(flippedTriangles(r.map), 0);
+    QuadMesh mesh = extractQuads(r.s.V, r.s.F, r.topo, r.map.cornerUV);
+    patchQuadMesh(r.s.V, r.s.F, r.topo, mesh);
+    splitPinchedVertices(mesh);
+    const QuadQuality quads = measureQuads(mesh.V, mesh.Q);
+    std::printf("%g quads asked: %d quads, %d pieces, chi %d, %d loops\n", q, quads.faces,
+      quads.components, quads.eulerCharacteristic, quads.boundaryLoops);
+    EXPECT_GE(quads.faces, q / 4);
+    EXPECT_EQ(quads.quads, quads.faces);
+    EXPECT_EQ(quads.nonManifoldEdges, 0);
+    EXPECT_EQ(quads.components, 1);
+    EXPECT_EQ(quads.eulerCharacteristic, 1);
+    EXPECT_EQ(quads.boundaryLoops, 1);
+  }
+}
+
+namespace
+{
 /// An icosphere (level 5) with the triangles whose centres lie within `radius` of one of
 /// `centres` removed: holes whose boundaries step along the triangles.
 Surface holedSphere(double radius, const std::vector<Eigen::Vector3d>& centres)

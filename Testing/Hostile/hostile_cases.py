@@ -326,6 +326,19 @@ def hemispheres_meshed_apart(folder):
     return _write(folder, "hemispheres.obj", _obj_text((points, faces), "%.17g"))
 
 
+def sliver_lens(folder):
+    # a thin lens whose tips are single triangles of 10 degrees: no grid cell of its map gave a
+    # quad at any count
+    return _write(folder, "lens.obj", _obj_text(m.lens()))
+
+
+def lens_beside_sphere(folder):
+    # the lens, a tenth of the sphere's size, beside it: its component gave no quad and was lost
+    points, faces = m.lens(length=0.2)
+    points = [(x + 3.0, y, z) for x, y, z in points]
+    return _write(folder, "lens_sphere.obj", _obj_text(m.merge(SPHERE, (points, faces))))
+
+
 def noisy_sphere(folder):
     # a sphere of 5,120 triangles whose points carry noise of half a mean edge length, as a raw
     # scan: smoothed by the repair, its 500 quads have about 10 irregular vertices (left rough,
@@ -501,6 +514,8 @@ CASES = {
     "collinear_fans": (collinear_fans, Quads(1, 2)),
     "faces_meshed_apart": (faces_meshed_apart, Quads(1, 2)),
     "hemispheres_meshed_apart": (hemispheres_meshed_apart, Quads(1, 2)),
+    "sliver_lens": (sliver_lens, Quads(1, 1)),
+    "lens_beside_sphere": (lens_beside_sphere, Quads(2, 3)),
     "noisy_sphere": (noisy_sphere, Quads(1, 2, irregular=40)),
     "cube_12": (cube_12, Quads(1, 2)),
     "coarse_cone": (coarse_cone, Quads(1, 2)),

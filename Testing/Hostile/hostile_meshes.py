@@ -149,6 +149,30 @@ def seamed_torus(n=40, radius=1.0, tube=0.4):
     return points, faces
 
 
+def lens(n=60, tip_degrees=10.0, length=2.0):
+    """A flat lens between the arcs y = +-t (1 - x^2) (x in -1..1, scaled to `length`), t such
+    that each tip is one triangle of tip_degrees, as n strips across it (an isosurface cut by its
+    volume's face leaves such slivers)."""
+    t = math.tan(math.radians(tip_degrees) / 2) / 2
+    s = length / 2
+    points = [(-s, 0.0, 0.0), (s, 0.0, 0.0)]
+    upper, lower = [0], [0]
+    for i in range(1, n):
+        x = -1.0 + 2.0 * i / n
+        y = t * (1 - x * x)
+        upper.append(len(points))
+        points.append((s * x, s * y, 0.0))
+        lower.append(len(points))
+        points.append((s * x, -s * y, 0.0))
+    upper.append(1)
+    lower.append(1)
+    faces = [(0, lower[1], upper[1])]
+    for i in range(1, n - 1):
+        faces += [(lower[i], lower[i + 1], upper[i]), (upper[i], lower[i + 1], upper[i + 1])]
+    faces.append((upper[n - 1], lower[n - 1], 1))
+    return points, faces
+
+
 def moebius(around=48, across=4, radius=1.0, width=0.3):
     """A Moebius strip: a band whose ends are glued after half a turn."""
     points = []
