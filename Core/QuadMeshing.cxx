@@ -193,8 +193,43 @@ QuadMeshResult buildQuadMesh(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& 
   {
     r.invertedFinal += !(r.quality.scaledJacobian[i] > 0);
   }
+  r.emptyComponents = componentsWithoutQuads(topo, r.mesh);
   progress.report(1.0);
   return r;
+}
+
+int componentsWithoutQuads(const MeshTopology& topo, const QuadMesh& mesh)
+{
+  const int nQ = static_cast<int>(mesh.Q.rows());
+  const int nF = static_cast<int>(topo.faceComponent.size());
+  const bool perQuad = mesh.quadTriangle.size() == static_cast<std::size_t>(nQ);
+  std::vector<char> meshed(topo.numComponents(), 0);
+  for (int q = 0; q < nQ; ++q)
+  {
+    const int corner = mesh.Q(q, 0);
+    const int t = perQuad ? mesh.quadTriangle[q]
+                          : (corner >= 0 && corner < static_cast<int>(mesh.vertexTriangle.size())
+                                ? mesh.vertexTriangle[corner]
+                                : -1);
+    if (t >= 0 && t < nF && topo.faceComponent[t] >= 0)
+    {
+      meshed[topo.faceComponent[t]] = 1;
+    }
+  }
+  std::vector<char> hasTriangles(topo.numComponents(), 0);
+  for (int f = 0; f < nF; ++f)
+  {
+    if (topo.faceComponent[f] >= 0)
+    {
+      hasTriangles[topo.faceComponent[f]] = 1;
+    }
+  }
+  int empty = 0;
+  for (int c = 0; c < topo.numComponents(); ++c)
+  {
+    empty += hasTriangles[c] && !meshed[c];
+  }
+  return empty;
 }
 
 Eigen::MatrixX3d joinSplitPoints(

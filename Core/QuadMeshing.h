@@ -65,6 +65,7 @@ struct QuadMeshResult
   int snappedVertices = 0;   ///< vertices snapToCreases moved onto a sharp edge, and
                              ///< straightenCreaseSteps beside one
   int liftedVertices = 0;    ///< vertices liftOffOtherComponents moved off the surface
+  int emptyComponents = 0;   ///< componentsWithoutQuads of the final mesh
   int droppedCells() const
   {
     return mesh.cellsOffSurface + mesh.cellsDegenerate + mesh.cellsConflicting;
@@ -85,6 +86,10 @@ struct QuadMeshResult
 QuadMeshResult buildQuadMesh(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F,
   const MeshTopology& topo, const Eigen::MatrixXd& cornerUV,
   const QuadMeshOptions& options = QuadMeshOptions(), const Progress& progress = Progress());
+
+/// The components of the surface (those with triangles) on which no quad of `mesh` lies (by the
+/// triangle holding each quad's centre, else its first corner's): 0 on a valid remesh.
+int componentsWithoutQuads(const MeshTopology& topo, const QuadMesh& mesh);
 
 /**
  * Joins a surface cut open along its seams (vtkQuadCoverSolver's SplitSeams output) back

@@ -125,6 +125,7 @@ void AddFigures(vtkFieldData* fd, const quadcover::QuadMeshResult& r)
   AddField<vtkIntArray>(fd, names::FragmentQuads, { double(r.fragmentQuads) });
   AddField<vtkIntArray>(fd, names::SnappedVertices, { double(r.snappedVertices) });
   AddField<vtkIntArray>(fd, names::LiftedVertices, { double(r.liftedVertices) });
+  AddField<vtkIntArray>(fd, names::EmptyComponents, { double(r.emptyComponents) });
 }
 
 /// Field data HausdorffDistance: two-sided, surface to quads, quads to surface, in % of the
@@ -331,6 +332,13 @@ void vtkQuadExtractor::Execute(vtkQuadCoverSurface& in, vtkInformationVector* ou
       std::to_string(r.invertedFinal) +
       " have a corner turned inside out (TurnedQuads, InvertedQuads): the map is too distorted "
       "there (slivers, a part thinner than the quads)");
+  }
+  if (r.emptyComponents > 0 && quads.Q.rows() > 0)
+  {
+    this->Warn(std::to_string(r.emptyComponents) + " of the surface's " +
+      std::to_string(in.topo.numComponents()) +
+      " components gave no quad (EmptyComponents): their maps fold (a part thinner than the quads, "
+      "or a sharp tip)");
   }
   if (quads.Q.rows() == 0)
   {

@@ -28,8 +28,10 @@
  * SplitQuadVertices (copies of a vertex where separate fans of quads touched: the output is
  * manifold at its vertices), FragmentQuads (quads removed that hung off their component's
  * quads by a corner), SnappedVertices (quad vertices moved onto creases, or beside one where
- * a quad lay folded across it; SnapToCreases) and LiftedVertices (quad vertices lifted off the
- * input where a quad's centre lay nearer another component's surface than its own).
+ * a quad lay folded across it; SnapToCreases), LiftedVertices (quad vertices lifted off the
+ * input where a quad's centre lay nearer another component's surface than its own) and
+ * EmptyComponents (components of the input on which no quad lies, with a warning; 0 on a valid
+ * remesh).
  * @sa vtkQuadCoverSolver
  */
 #ifndef vtkQuadExtractor_h

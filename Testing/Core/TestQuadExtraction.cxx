@@ -165,6 +165,39 @@ TEST(QuadExtraction, EveryComponentGetsAQuadMeshOfItsOwn)
   EXPECT_GE(smallest, 30);
 }
 
+TEST(QuadExtraction, ComponentsWithoutQuadsAreCounted)
+{
+  // The six components' quads, then without the quads of those on the left (x < 0.25: the
+  // smallest, whose quads the test above counts): one component without quads, the count of
+  // the warning and of EmptyComponents.
+  const Surface s = makeComponents(6, 0.1, 10.0);
+  ParameterizationOptions options;
+  options.minimumComponentQuadCount = 40;
+  const Chain c = runChain(s, 1500, options);
+  QuadMesh q = extractQuads(c.s.V, c.s.F, c.topo, c.map.cornerUV);
+  EXPECT_EQ(componentsWithoutQuads(c.topo, q), 0);
+  std::vector<int> kept;
+  for (Eigen::Index i = 0; i < q.Q.rows(); ++i)
+  {
+    if (q.V(q.Q(i, 0), 0) >= 0.25)
+    {
+      kept.push_back(static_cast<int>(i));
+    }
+  }
+  ASSERT_LT(kept.size(), static_cast<std::size_t>(q.Q.rows()));
+  QuadMesh fewer = q;
+  fewer.Q.resize(static_cast<int>(kept.size()), 4);
+  fewer.quadTriangle.clear();
+  for (std::size_t j = 0; j < kept.size(); ++j)
+  {
+    fewer.Q.row(static_cast<int>(j)) = q.Q.row(kept[j]);
+    fewer.quadTriangle.push_back(q.quadTriangle[kept[j]]);
+  }
+  EXPECT_EQ(componentsWithoutQuads(c.topo, fewer), 1);
+  fewer.quadTriangle.clear(); // by the corners' triangles instead
+  EXPECT_EQ(componentsWithoutQuads(c.topo, fewer), 1);
+}
+
 TEST(QuadPatching, FillsHolesInsideTheSurfaceWithQuads)
 {
   const Chain c = runChain(testSurface("sphere"), 1500);
