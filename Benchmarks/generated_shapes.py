@@ -477,15 +477,19 @@ SHAPES = {
 }
 
 
-def main():
-    if len(sys.argv) != 2:
-        sys.exit(__doc__)
-    out = sys.argv[1]
+def write_all(out, shapes):
+    """Each of `shapes` (name: a function giving (V, F)) to OUT/NAME.obj."""
     os.makedirs(out, exist_ok=True)
-    for name, make in SHAPES.items():
+    for name, make in shapes.items():
         V, F = make()
         write(out, name, V, F)
         print("%s.obj: %d points, %d triangles" % (name, len(V), len(F)))
+
+
+def main():
+    if len(sys.argv) != 2:
+        sys.exit(__doc__)
+    write_all(sys.argv[1], SHAPES)
 
 
 if __name__ == "__main__":

@@ -19,12 +19,13 @@ Writes OUTDIR/NAME.obj:
 Each field has its own seed. `Benchmarks/validity_table.sh` with `GENERATED=OUTDIR` measures them
 (Benchmarks/README.md, 2026-12-07).
 """
-import os
 import sys
 
 import numpy as np
 import vtk
 from vtk.util.numpy_support import numpy_to_vtk, vtk_to_numpy
+
+from generated_shapes import write_all
 
 
 def grid(n):
@@ -85,14 +86,6 @@ def isosurface(f, level):
     return V, F
 
 
-def write(out, name, V, F):
-    with open(os.path.join(out, name + ".obj"), "w") as f:
-        for p in V:
-            f.write("v %.9g %.9g %.9g\n" % tuple(p))
-        for t in F:
-            f.write("f %d %d %d\n" % tuple(np.asarray(t) + 1))
-
-
 SURFACES = {
     "iso_blobs": lambda: isosurface(blobs(96, 60, 1, 0.02, 0.12, np.add, 0.1), 0.5),
     "iso_cut": lambda: isosurface(blobs(128, 400, 3, 0.02, 0.12, np.add, 0.1), 0.3),
@@ -102,12 +95,9 @@ SURFACES = {
 
 
 def main(argv):
-    out = argv[1]
-    os.makedirs(out, exist_ok=True)
-    for name, make in SURFACES.items():
-        V, F = make()
-        write(out, name, V, F)
-        print("%s: %d points, %d triangles" % (name, len(V), len(F)))
+    if len(argv) != 2:
+        sys.exit(__doc__)
+    write_all(argv[1], SURFACES)
 
 
 if __name__ == "__main__":

@@ -170,6 +170,23 @@ std::vector<char> nearOtherLoops(const Inputs& in, double reach)
   return near;
 }
 
+/// Per point, the boundary edge that leaves it along its loop (as the loops run: from a point to
+/// the next), -1 off the boundary.
+std::vector<int> boundaryEdgeFrom(const Inputs& in)
+{
+  const MeshTopology& topo = in.topo;
+  std::vector<int> edgeFrom(in.numVertices(), -1);
+  for (int e = 0; e < topo.numEdges(); ++e)
+  {
+    if (topo.edgeFaceCount[e] == 1)
+    {
+      const int c0 = topo.edgeCorners(e, 0);
+      edgeFrom[in.F(c0 / 3, c0 % 3)] = e;
+    }
+  }
+  return edgeFrom;
+}
+
 /// Per edge of topo, 1 on a boundary edge that lies on a straight run of its loop shorter than
 /// MinimumBoundaryLineRun grid edges and not near another loop (NearLoopReach): its edges are not
 /// put on lines. A run is the stretch between two points where the loop turns by more than
@@ -181,15 +198,7 @@ std::vector<char> shortBoundaryRuns(const Inputs& in, double edgeLength)
   const double minimumLength = MinimumBoundaryLineRun * edgeLength;
   const std::vector<char> near = nearOtherLoops(in, NearLoopReach * edgeLength);
   std::vector<char> isShort(topo.numEdges(), 0);
-  std::vector<int> edgeFrom(in.numVertices(), -1);
-  for (int e = 0; e < topo.numEdges(); ++e)
-  {
-    if (topo.edgeFaceCount[e] == 1)
-    {
-      const int c0 = topo.edgeCorners(e, 0);
-      edgeFrom[in.F(c0 / 3, c0 % 3)] = e;
-    }
-  }
+  const std::vector<int> edgeFrom = boundaryEdgeFrom(in);
   const double cosTurn = std::cos(Pi / 4);
   for (const std::vector<int>& loop : topo.boundaryLoops)
   {
@@ -242,15 +251,7 @@ std::vector<char> boundaryTips(
 {
   const MeshTopology& topo = in.topo;
   std::vector<char> tip(topo.numEdges(), 0);
-  std::vector<int> edgeFrom(in.numVertices(), -1);
-  for (int e = 0; e < topo.numEdges(); ++e)
-  {
-    if (topo.edgeFaceCount[e] == 1)
-    {
-      const int c0 = topo.edgeCorners(e, 0);
-      edgeFrom[in.F(c0 / 3, c0 % 3)] = e;
-    }
-  }
+  const std::vector<int> edgeFrom = boundaryEdgeFrom(in);
   for (const std::vector<int>& loop : topo.boundaryLoops)
   {
     const int n = static_cast<int>(loop.size());
