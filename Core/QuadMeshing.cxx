@@ -216,20 +216,8 @@ int componentsWithoutQuads(const MeshTopology& topo, const QuadMesh& mesh)
       meshed[topo.faceComponent[t]] = 1;
     }
   }
-  std::vector<char> hasTriangles(topo.numComponents(), 0);
-  for (int f = 0; f < nF; ++f)
-  {
-    if (topo.faceComponent[f] >= 0)
-    {
-      hasTriangles[topo.faceComponent[f]] = 1;
-    }
-  }
-  int empty = 0;
-  for (int c = 0; c < topo.numComponents(); ++c)
-  {
-    empty += hasTriangles[c] && !meshed[c];
-  }
-  return empty;
+  // (every component has a triangle: they are the triangles' components)
+  return static_cast<int>(std::count(meshed.begin(), meshed.end(), 0));
 }
 
 Eigen::MatrixX3d joinSplitPoints(

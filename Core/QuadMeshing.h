@@ -87,8 +87,8 @@ QuadMeshResult buildQuadMesh(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& 
   const MeshTopology& topo, const Eigen::MatrixXd& cornerUV,
   const QuadMeshOptions& options = QuadMeshOptions(), const Progress& progress = Progress());
 
-/// The components of the surface (those with triangles) on which no quad of `mesh` lies (by the
-/// triangle holding each quad's centre, else its first corner's): 0 on a valid remesh.
+/// The components of the surface on which no quad of `mesh` lies (by the triangle holding each
+/// quad's centre, else its first corner's): 0 on a valid remesh.
 int componentsWithoutQuads(const MeshTopology& topo, const QuadMesh& mesh);
 
 /**

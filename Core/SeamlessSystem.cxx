@@ -241,32 +241,38 @@ std::vector<char> shortBoundaryRuns(const Inputs& in, double edgeLength)
 
 /// Per edge of topo, 1 on one of the two boundary edges at a tip of the boundary (an angle of
 /// less than a quarter turn inside the surface) that would both go on lines of the same coordinate
-/// through the tip (constantCoordinate, the same sector): the shorter of the two. Both on lines,
+/// through the tip (constantCoordinate, the same sector, neither on a `shortRun`): the shorter of
+/// the two. (Where a cut of the map ends at the tip, its two sides lie in different sectors and
+/// are left as they are.) Both on lines,
 /// the lines through the tip are one, and the two sides of the boundary with them: the tip's fan
 /// and every triangle between the sides is squashed onto the line (an isosurface cut by its
 /// volume's face leaves slivers whose tips are single triangles of 10 degrees: no grid cell of
 /// their map gave a quad, at any count).
-std::vector<char> boundaryTips(
-  const Inputs& in, const Field& field, const Parameterization& out, double tolerance)
+std::vector<char> boundaryTips(const Inputs& in, const Field& field, const Parameterization& out,
+  double tolerance, const std::vector<char>& shortRun)
 {
   const MeshTopology& topo = in.topo;
   std::vector<char> tip(topo.numEdges(), 0);
   const std::vector<int> edgeFrom = boundaryEdgeFrom(in);
+  // the coordinate boundary edge e would be on a line of, or -1 (off its run's line, or neither)
+  const auto lineOf = [&](int e) {
+    const int c = topo.edgeCorners(e, 0);
+    return shortRun[e] ? -1 : constantCoordinate(in, field, out, c / 3, c % 3, tolerance);
+  };
   for (const std::vector<int>& loop : topo.boundaryLoops)
   {
     const int n = static_cast<int>(loop.size());
-    for (int i = 0; i < n && n > 2; ++i)
+    for (int i = 0; i < n; ++i)
     {
       const int p = loop[i];
       const int before = edgeFrom[loop[(i + n - 1) % n]], after = edgeFrom[p];
       // the angle inside is pi less the point's defect
-      if (before < 0 || after < 0 || !(in.geometry.defect[p] > Pi / 2))
+      if (n < 3 || before < 0 || after < 0 || !(in.geometry.defect[p] > Pi / 2))
       {
         continue;
       }
       const int a = topo.edgeCorners(before, 0), b = topo.edgeCorners(after, 0);
-      const int ca = constantCoordinate(in, field, out, a / 3, a % 3, tolerance);
-      const int cb = constantCoordinate(in, field, out, b / 3, b % 3, tolerance);
+      const int ca = lineOf(before), cb = lineOf(after);
       if (ca >= 0 && ca == cb && sectorOf(in.F, out, a / 3, p) == sectorOf(in.F, out, b / 3, p))
       {
         const auto length = [&](int e) {
@@ -310,7 +316,7 @@ std::vector<char> alignToLines(
     ? shortBoundaryRuns(in, out.edgeLength)
     : std::vector<char>(in.topo.numEdges(), 0);
   const std::vector<char> tip = in.options.alignToBoundary
-    ? boundaryTips(in, field, out, tolerance)
+    ? boundaryTips(in, field, out, tolerance, shortRun)
     : std::vector<char>(in.topo.numEdges(), 0);
   for (int e = 0; e < in.topo.numEdges(); ++e)
   {

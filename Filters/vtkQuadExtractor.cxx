@@ -337,8 +337,7 @@ void vtkQuadExtractor::Execute(vtkQuadCoverSurface& in, vtkInformationVector* ou
   {
     this->Warn(std::to_string(r.emptyComponents) + " of the surface's " +
       std::to_string(in.topo.numComponents()) +
-      " components gave no quad (EmptyComponents): their maps fold (a part thinner than the quads, "
-      "or a sharp tip)");
+      " components gave no quad (EmptyComponents): no cell of the map on them became a quad");
   }
   if (quads.Q.rows() == 0)
   {

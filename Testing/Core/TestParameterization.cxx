@@ -472,12 +472,13 @@ TEST(Parameterization, StepsOfJaggedHolesLessThanAGridEdgeApartStayOnLines)
 namespace
 {
 /// A flat lens 2 long between the arcs y = +-t (1 - x^2), t = tan(tipAngle / 2) / 2 (each meets
-/// the x axis at tipAngle / 2), as n strips across it: each tip is one triangle of tipAngle.
+/// the x axis at tipAngle / 2), as n strips across it: each tip is one triangle of a little less
+/// than tipAngle (the chord to the first point is flatter than the arc's tangent).
 Surface lens(int n, double tipAngle)
 {
   const double t = std::tan(tipAngle / 2) / 2;
   Surface s;
-  s.V.resize(2 * n, 3); // the tips, then the arcs' inner points: upper 2 + i, lower n + 1 + i
+  s.V.resize(2 * n, 3); // the tips 0 and 1, then the arcs' inner points (upper, lower)
   s.V.row(0) << -1.0, 0.0, 0.0;
   s.V.row(1) << 1.0, 0.0, 0.0;
   auto upper = [&](int i) { return i == 0 ? 0 : (i == n ? 1 : 1 + i); };
@@ -500,8 +501,6 @@ Surface lens(int n, double tipAngle)
       faces.emplace_back(upper(i), lower(i + 1), upper(i + 1));
     }
   }
-  faces.front() = Eigen::Vector3i(0, lower(1), upper(1));
-  faces.back() = Eigen::Vector3i(upper(n - 1), lower(n - 1), 1);
   s.F.resize(static_cast<int>(faces.size()), 3);
   for (std::size_t f = 0; f < faces.size(); ++f)
   {
@@ -513,10 +512,10 @@ Surface lens(int n, double tipAngle)
 
 TEST(Parameterization, TheTwoSidesOfASharpTipGoOnLinesApart)
 {
-  // A lens whose tips are single triangles of 10 degrees (as an isosurface cut by its volume's
-  // face leaves them): the frames follow both sides of a tip, and with both on lines through the
-  // tip the two lines were one, and the lens with them: no grid cell gave a quad at any count.
-  // The shorter side of the tip stays off its line; the sides' lines are apart, the lens is
+  // A lens whose tips are single triangles of about 10 degrees (as an isosurface cut by its
+  // volume's face leaves them): the frames follow both sides of a tip, and with both on lines
+  // through the tip the two lines were one, and the lens with them: no grid cell gave a quad at any
+  // count. The shorter side of the tip stays off its line; the sides' lines are apart, the lens is
   // quads.
   const Surface s = lens(60, 10 * Pi / 180);
   const MeshTopology topo = buildTopology(s.F, static_cast<int>(s.V.rows()));

@@ -156,6 +156,9 @@ def check_case(cli, work, name):
     for key in ("turned_quads", "inverted_quads"):
         if quads[key][1] != 0:
             problems.append("%s %s, expected 0 in the output" % (key, quads[key]))
+    # every component of the input has quads on it, by the quad stage's own count too
+    if quads.get("empty_components") != 0:
+        problems.append("empty_components %s, expected 0" % quads.get("empty_components"))
     if expect.irregular is not None and quads["irregular_vertices"][0] > expect.irregular:
         problems.append("%d inner irregular vertices, expected at most %d" % (
             quads["irregular_vertices"][0], expect.irregular))
