@@ -242,12 +242,11 @@ std::vector<char> shortBoundaryRuns(const Inputs& in, double edgeLength)
 /// Per edge of topo, 1 on one of the two boundary edges at a tip of the boundary (an angle of
 /// less than a quarter turn inside the surface) that would both go on lines of the same coordinate
 /// through the tip (constantCoordinate, the same sector, neither on a `shortRun`): the shorter of
-/// the two. (Where a cut of the map ends at the tip, its two sides lie in different sectors and
-/// are left as they are.) Both on lines,
-/// the lines through the tip are one, and the two sides of the boundary with them: the tip's fan
-/// and every triangle between the sides is squashed onto the line (an isosurface cut by its
-/// volume's face leaves slivers whose tips are single triangles of 10 degrees: no grid cell of
-/// their map gave a quad, at any count).
+/// the two. Both on lines, the lines through the tip are one, and the two sides of the boundary
+/// with them: the tip's fan and every triangle between the sides is squashed onto the line (an
+/// isosurface cut by its volume's face leaves slivers whose tips are single triangles of about 10
+/// degrees: no grid cell of their map gave a quad, at any count). Where a cut of the map ends at
+/// the tip, its two sides lie in different sectors and are left as they are.
 std::vector<char> boundaryTips(const Inputs& in, const Field& field, const Parameterization& out,
   double tolerance, const std::vector<char>& shortRun)
 {

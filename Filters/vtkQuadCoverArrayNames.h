@@ -220,8 +220,8 @@ constexpr const char* SnappedVertices = "SnappedVertices";
 /// field, 1 x int: quad vertices lifted off the input, where a quad's centre lay nearer another
 /// component's surface than its own (two sheets closer than the quad bulges).
 constexpr const char* LiftedVertices = "LiftedVertices";
-/// field, 1 x int: components of the input on which no quad lies (their maps folded); 0 on a
-/// valid remesh.
+/// field, 1 x int: components of the input on which no quad lies (no cell of the map on them
+/// became a quad), with a warning; 0 on a valid remesh.
 constexpr const char* EmptyComponents = "EmptyComponents";
 }
 
