@@ -253,9 +253,9 @@ std::vector<char> boundaryTips(const Inputs& in, const Field& field, const Param
   const MeshTopology& topo = in.topo;
   std::vector<char> tip(topo.numEdges(), 0);
   const std::vector<int> edgeFrom = boundaryEdgeFrom(in);
-  // the coordinate boundary edge e would be on a line of, or -1 (off its run's line, or neither)
-  const auto lineOf = [&](int e) {
-    const int c = topo.edgeCorners(e, 0);
+  // the coordinate boundary edge e (corner c) would be on a line of, or -1 (off its run's line,
+  // or neither)
+  const auto lineOf = [&](int e, int c) {
     return shortRun[e] ? -1 : constantCoordinate(in, field, out, c / 3, c % 3, tolerance);
   };
   for (const std::vector<int>& loop : topo.boundaryLoops)
@@ -271,13 +271,11 @@ std::vector<char> boundaryTips(const Inputs& in, const Field& field, const Param
         continue;
       }
       const int a = topo.edgeCorners(before, 0), b = topo.edgeCorners(after, 0);
-      const int ca = lineOf(before), cb = lineOf(after);
+      const int ca = lineOf(before, a), cb = lineOf(after, b);
       if (ca >= 0 && ca == cb && sectorOf(in.F, out, a / 3, p) == sectorOf(in.F, out, b / 3, p))
       {
-        const auto length = [&](int e) {
-          return (in.V.row(topo.edges(e, 0)) - in.V.row(topo.edges(e, 1))).norm();
-        };
-        tip[length(before) < length(after) ? before : after] = 1;
+        const auto length = [&](int c) { return in.geometry.edgeLength(c / 3, c % 3); };
+        tip[length(a) < length(b) ? before : after] = 1;
       }
     }
   }
