@@ -160,6 +160,21 @@ void setGridScale(
 {
   sys.cellScale = thinStripGridScale(
     in.V, in.F, in.topo, out.edgeLength, in.options.maximumThinStripRefinement, creases);
+  std::vector<int> singular;
+  for (int p = 0; p < in.numVertices(); ++p)
+  {
+    if (out.singularityIndex.size() > 0 && out.singularityIndex[p] != 0)
+    {
+      singular.push_back(p);
+    }
+  }
+  const Eigen::VectorXd loops = shortLoopGridScale(in.V, in.F, in.topo, in.geometry.edgeLength,
+    singular, out.edgeLength, in.options.maximumThinStripRefinement);
+  if (loops.size() > 0)
+  {
+    sys.cellScale =
+      sys.cellScale.size() > 0 ? Eigen::VectorXd(sys.cellScale.cwiseMin(loops)) : loops;
+  }
   const Eigen::VectorXd curved =
     adaptiveGridScale(in, creases, out.edgeLength, in.options.adaptiveCurvature);
   if (curved.size() > 0)

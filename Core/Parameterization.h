@@ -155,8 +155,11 @@ struct ParameterizationOptions
   /// two creases is lower than one (the rim of a thin plate), the map's grid is made finer
   /// around it, down to the strip's width but at most this many times finer
   /// (thinStripGridScale): on a uniform grid both sides of the strip round onto one grid line,
-  /// which cuts it and joins the holes, and the quads fold over a wall. 1: a uniform grid
-  /// everywhere.
+  /// which cuts it and joins the holes, and the quads fold over a wall. The same bound holds
+  /// around a handle or a neck so narrow that a loop around it within two grid edges of one of
+  /// the field's singular points is shorter than about four (shortLoopGridScale: about three
+  /// grid edges around it), where a uniform grid closes the tunnel or cuts the neck. 1: a
+  /// uniform grid everywhere.
   double maximumThinStripRefinement = 8.0;
   /// Adaptive density: where the surface curves sharply against the grid (a thin ear, finger or
   /// horn, a small bump), the grid edge is about this many times the radius of curvature, seen
@@ -225,8 +228,9 @@ struct Parameterization
   /// made again without, because it kept more defects (flipped triangles and wrong windings) with
   /// them; addedConePairs is then 0
   int droppedConePairs = 0;
-  /// triangles where the grid is finer than edgeLength (maximumThinStripRefinement,
-  /// adaptiveCurvature, or defectGridRefinement where it was kept)
+  /// triangles where the grid is finer than edgeLength (maximumThinStripRefinement: thin strips,
+  /// walls, short loops around handles and necks; adaptiveCurvature; defectGridRefinement where
+  /// it was kept)
   int finerGridTriangles = 0;
   /// the grid was made finer than targetQuadCount asks, for the field's branch points
   /// (minimumQuadsPerSingularity; on a surface of several components, on one of them at least)

@@ -20,16 +20,19 @@ DiskTest::DiskTest(
   , edgeSeen_(topo.numEdges(), 0)
 {}
 
-bool DiskTest::ballIsDisk(int a, double radius)
+DiskTest::Ball DiskTest::ball(int a, double radius, bool boundaryBeyond)
 {
   if (topo_.vertexComponent[a] < 0 || topo_.ringOffsets[a] == topo_.ringOffsets[a + 1])
   {
-    return false; // a point of no triangle
+    return Ball::Beyond; // a point of no triangle
   }
   const int limit = topo_.components[topo_.vertexComponent[a]].numFaces / 2;
   const bool small = grow(a, radius, limit);
-  bool disk = false;
-  if (small && !faces_.empty())
+  const bool beyond = !small || faces_.empty() ||
+    (boundaryBeyond &&
+      std::any_of(points_.begin(), points_.end(), [&](int v) { return topo_.boundaryVertex[v]; }));
+  Ball result = Ball::Beyond;
+  if (!beyond)
   {
     // the triangles around the points reached: a point just beyond the radius among them (edge
     // paths are longer than the surface's distances) leaves no hole
@@ -37,7 +40,7 @@ bool DiskTest::ballIsDisk(int a, double radius)
     {
       faceSeen_[f] = 2;
     }
-    disk = connected(faces_) && eulerCharacteristic(faces_) == 1;
+    result = connected(faces_) && eulerCharacteristic(faces_) == 1 ? Ball::Disk : Ball::NotDisk;
   }
   for (const int v : points_)
   {
@@ -49,7 +52,7 @@ bool DiskTest::ballIsDisk(int a, double radius)
   }
   points_.clear();
   faces_.clear();
-  return disk;
+  return result;
 }
 
 bool DiskTest::reached(int v) const

@@ -27,7 +27,18 @@ public:
   DiskTest(const Eigen::MatrixX3i& F, const MeshTopology& topo, const Eigen::MatrixX3d& edgeLength);
 
   /// Whether the triangles within `radius` of point a form a disk.
-  bool ballIsDisk(int a, double radius);
+  bool ballIsDisk(int a, double radius) { return ball(a, radius, false) == Ball::Disk; }
+
+  /// What the triangles within `radius` of point a are: a disk; no disk (a handle or a neck, or
+  /// with the boundary a hole, within reach); or beyond the test (more than half the component,
+  /// a point of no triangle, or with boundaryBeyond any point of the boundary reached).
+  enum class Ball
+  {
+    Disk,
+    NotDisk,
+    Beyond
+  };
+  Ball ball(int a, double radius, bool boundaryBeyond);
 
 private:
   bool reached(int v) const;

@@ -1,5 +1,6 @@
 // ThinStrips.cxx: the local grid size that keeps strips and walls narrower than a grid edge.
 #include "ThinStrips.h"
+#include "SurfaceDisks.h"
 
 #include "NearbyPoints.h"
 
@@ -233,6 +234,54 @@ Eigen::VectorXd thinStripGridScale(const Eigen::MatrixX3d& V, const Eigen::Matri
     size[0][v] = std::min(size[0][v], size[1][v]);
   }
   return faceGridScale(F, size[0], edgeLength);
+}
+
+Eigen::VectorXd shortLoopGridScale(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F,
+  const MeshTopology& topo, const Eigen::MatrixX3d& edgeLengths, const std::vector<int>& points,
+  double edgeLength, double maximumRefinement, double gradation)
+{
+  // A ball wraps around a loop once its radius is about half the loop's length: loops up to
+  // about 2 Reach grid edges long are seen, and each point asks for a grid edge of Share times
+  // that radius, about a third of its loop. (Half of it, four grid edges around, gave an
+  // isosurface's tunnels at 1,000 quads no more than a third does, and a small slab of three
+  // square tunnels 2.4 times the quads asked at 100 quads instead of 1.7.)
+  constexpr double Reach = 2.0;
+  constexpr double Share = 2.0 / 3.0;
+  constexpr int BisectionSteps = 8; // the radius to 1/256 of the reach
+  if (!(maximumRefinement > 1) || !(edgeLength > 0) || !std::isfinite(edgeLength))
+  {
+    return {};
+  }
+  const double smallest = edgeLength / maximumRefinement;
+  DiskTest disk(F, topo, edgeLengths);
+  std::vector<double> size(static_cast<std::size_t>(topo.numVertices), edgeLength);
+  bool thin = false;
+  for (const int p : points)
+  {
+    double high = Reach * edgeLength;
+    if (disk.ball(p, high, true) != DiskTest::Ball::NotDisk)
+    {
+      continue;
+    }
+    double low = 0.0; // the largest radius known to give a disk (a point's own ring is one)
+    for (int step = 0; step < BisectionSteps; ++step)
+    {
+      const double middle = 0.5 * (low + high);
+      (disk.ball(p, middle, true) == DiskTest::Ball::Disk ? low : high) = middle;
+    }
+    const double wanted = std::max(Share * low, smallest);
+    if (wanted < size[p])
+    {
+      size[p] = wanted;
+      thin = true;
+    }
+  }
+  if (!thin)
+  {
+    return {};
+  }
+  spreadGridSizes(V, topo, gradation, size);
+  return faceGridScale(F, size, edgeLength);
 }
 
 Eigen::VectorXd faceGridScale(

@@ -37,6 +37,24 @@ Eigen::VectorXd thinStripGridScale(const Eigen::MatrixX3d& V, const Eigen::Matri
   const MeshTopology& topo, double edgeLength, double maximumRefinement,
   const std::vector<char>& creases = {}, double gradation = 0.25);
 
+/**
+ * The grid edge each triangle needs, over edgeLength, so that a handle or a neck of the surface
+ * whose loop passes near one of `points` (the field's singular points, which the negative
+ * curvature of a small tunnel or a narrow neck gathers) keeps about three grid edges around it:
+ * where the triangles within 2 edgeLength of such a point (along edge paths, the boundary out of
+ * reach) are no disk, the point asks for two thirds of the largest radius at which they are
+ * (about a third of the loop; never less than edgeLength / maximumRefinement), and the size
+ * grows away from it as around thin strips.
+ * A uniform grid puts such a loop on one or two grid edges, and no map can keep it: its quads
+ * close the tunnel or cut the neck (an isosurface's necks at 3,000 quads, five negative quarter
+ * singularities within one grid cell of a tunnel, kept flipped triangles and three holes).
+ * @param edgeLengths #F x 3, the length of edge k of face f (from corner k to k + 1)
+ * @return #F in [1 / maximumRefinement, 1], as thinStripGridScale; empty when no point asks
+ */
+Eigen::VectorXd shortLoopGridScale(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F,
+  const MeshTopology& topo, const Eigen::MatrixX3d& edgeLengths, const std::vector<int>& points,
+  double edgeLength, double maximumRefinement, double gradation = 0.25);
+
 /// size(v) = min over the points w of size(w) + gradation times the shortest edge path from w to v
 /// (Dijkstra from the smallest sizes up).
 void spreadGridSizes(

@@ -159,10 +159,10 @@ constexpr const char* AddedConePairs = "AddedConePairs";
 /// without.
 constexpr const char* DroppedConePairs = "DroppedConePairs";
 /// Field data of the solver's output: triangles where the map's grid is finer than EdgeLength,
-/// around strips of the surface and walls between creases narrower than a grid edge
-/// (MaximumThinStripRefinement), where the surface curves sharply against the grid
-/// (AdaptiveCurvature), around the defects of a first map and between boundary loops its quads
-/// would join (DefectGridRefinement).
+/// around strips of the surface and walls between creases narrower than a grid edge and around
+/// handles and necks narrower than about four (MaximumThinStripRefinement), where the surface
+/// curves sharply against the grid (AdaptiveCurvature), around the defects of a first map and
+/// between boundary loops its quads would join (DefectGridRefinement).
 constexpr const char* FinerGridTriangles = "FinerGridTriangles";
 /// field, 1 x int, 2 tuples: branch points, and those mapped to a grid point.
 constexpr const char* BranchPointsOnGrid = "BranchPointsOnGrid";

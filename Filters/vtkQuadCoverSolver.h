@@ -248,7 +248,10 @@ public:
    * made finer around it, down to the strip's width but at most this many times finer, in
    * [1, 64] (default 8; 1: a uniform grid): on a uniform grid both sides of such a strip round
    * onto one grid line, which cuts it and joins the holes, and the quads fold over a wall,
-   * turned against the surface. Counted in FinerGridTriangles. */
+   * turned against the surface. The same holds around a handle or a neck whose loop, within two
+   * grid edges of a singular point of the field, is shorter than about four: the grid there
+   * gets about three edges around it (a uniform one closes the tunnel or cuts the neck). Counted
+   * in FinerGridTriangles. */
   vtkSetClampMacro(MaximumThinStripRefinement, double, 1.0, 64.0);
   vtkGetMacro(MaximumThinStripRefinement, double);
   ///@}

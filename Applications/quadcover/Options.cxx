@@ -420,7 +420,8 @@ std::vector<Option> StageOptions(Pipeline& p)
     QC_NUMBER("param", solver, MaximumThinStripRefinement,
       "around a strip between two boundary lines narrower than a grid edge, or a wall between two "
       "creases lower than one, the grid is finer, down to the strip's width but at most this many "
-      "times, 1: uniform"),
+      "times (and around a handle or neck shorter around than about four grid edges near a "
+      "singular point), 1: uniform"),
     QC_NUMBER("param", solver, AdaptiveCurvature,
       "adaptive density: the grid edge about this many times the radius of curvature (thin "
       "parts keep their shape; 0.5: about 12 quads around a thin tube), 0: uniform"),

@@ -377,3 +377,28 @@ TEST(MeshTopology, BallsAreDisksUntilTheyWrapAroundAHandle)
   EXPECT_FALSE(sphereDisks.ballIsDisk(3, 10.0)) << "more than half of it";
   EXPECT_TRUE(sphereDisks.ballIsDisk(3, 0.0)) << "the triangles around the point alone";
 }
+
+TEST(MeshTopology, BallsThatReachTheBoundaryAreBeyondWhenAsked)
+{
+  // An open tube of radius 0.1 (girth 0.63) and length 2, a point halfway: a ball of radius 0.2
+  // is a disk, one of 0.5 wraps around the tube (no disk) and stays 0.5 from its ends. Around a
+  // point 0.31 from an end, one of 0.5 reaches that end: an annulus that holds its loop.
+  using Ball = DiskTest::Ball;
+  const int nAround = 32, nAlong = 64;
+  const Surface tube = makeCylinder(0.1, 2.0, nAround, nAlong);
+  const MeshTopology topo = buildTopology(tube.F, static_cast<int>(tube.V.rows()));
+  const Eigen::MatrixX3d length = edgeLengths(tube);
+  DiskTest disks(tube.F, topo, length);
+  const int middle = nAlong / 2; // vertex i * (nAlong + 1) + j: around i, along j
+  for (const bool boundaryBeyond : { false, true })
+  {
+    EXPECT_EQ(disks.ball(middle, 0.2, boundaryBeyond), Ball::Disk);
+    EXPECT_EQ(disks.ball(middle, 0.5, boundaryBeyond), Ball::NotDisk);
+    EXPECT_EQ(disks.ball(middle, 100.0, boundaryBeyond), Ball::Beyond) << "more than half";
+  }
+  const int nearEnd = 10;
+  EXPECT_EQ(disks.ball(nearEnd, 0.5, false), Ball::NotDisk);
+  EXPECT_EQ(disks.ball(nearEnd, 0.5, true), Ball::Beyond);
+  EXPECT_EQ(disks.ball(0, 0.2, false), Ball::Disk) << "a half disk at an end";
+  EXPECT_EQ(disks.ball(0, 0.2, true), Ball::Beyond);
+}

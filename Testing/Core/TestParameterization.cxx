@@ -1295,12 +1295,13 @@ struct SmoothestComponents
       s.V, s.F, topo, geometry, field.frameU, field.topology.matching, options);
   }
 
-  /// 6,500 quads, no other grids, no limit from the curvature nor from the singularities: their
-  /// maps keep defects
+  /// 6,500 quads, no other grids, no limit from the curvature nor from the singularities, a
+  /// uniform first grid (no finer one around the tori's short loops): their maps keep defects
   static ParameterizationOptions defectOptions()
   {
     ParameterizationOptions options;
     options.targetQuadCount = 6500;
+    options.maximumThinStripRefinement = 1.0;
     options.curvatureEdgeLength = 0.0;
     options.minimumQuadsPerSingularity = 0.0;
     options.minimumComponentQuadCount = 12;

@@ -162,6 +162,47 @@ TEST(ThinStrips, ASlotIsNoStrip)
   EXPECT_EQ(thinStripGridScale(plain.V, plain.F, plainTopo, 1.0 / 16, 8.0).size(), 0);
 }
 
+TEST(ThinStrips, ANeckThinnerThanTheGridAsksForThreeGridEdgesAroundIt)
+{
+  // A dumbbell of bulbs of radius 0.5 joined by a neck of radius 0.03 (girth 0.19), on a grid of
+  // edge 0.2: the triangles within 2 grid edges of a point on the neck wrap around it, and the
+  // point asks for a grid edge of about a third of its girth. A point at a pole, where every
+  // ball that near is a disk, asks for nothing.
+  const int nAround = 32, nAlong = 100;
+  const double neck = 0.03, h = 0.2;
+  const Surface s = makeDumbbell(1.0, 0.5, neck, nAround, nAlong);
+  const MeshTopology topo = buildTopology(s.F, static_cast<int>(s.V.rows()));
+  Eigen::MatrixX3d length(s.F.rows(), 3);
+  for (int f = 0; f < s.F.rows(); ++f)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      length(f, k) = (s.V.row(s.F(f, (k + 1) % 3)) - s.V.row(s.F(f, k))).norm();
+    }
+  }
+  const int pole = (nAlong - 1) * nAround;           // the south pole (after the rings)
+  const int onNeck = (nAlong / 2 - 1) * nAround + 5; // a point of the middle ring
+  ASSERT_NEAR(s.V(onNeck, 2), 0.0, 1e-12);
+  EXPECT_EQ(shortLoopGridScale(s.V, s.F, topo, length, { pole }, h, 8.0).size(), 0);
+  const Eigen::VectorXd scale = shortLoopGridScale(s.V, s.F, topo, length, { onNeck }, h, 8.0);
+  ASSERT_EQ(scale.size(), s.F.rows());
+  const double girth = 2 * 3.14159265358979 * neck;
+  const double finest = scale.minCoeff() * h;
+  std::printf("finest grid edge %.3f of the neck's girth\n", finest / girth);
+  EXPECT_GT(finest, 0.25 * girth) << "about three grid edges around the neck";
+  EXPECT_LT(finest, 0.45 * girth);
+  EXPECT_GE(scale.minCoeff(), 1.0 / 8.0 - 1e-12);
+  for (int f = 0; f < s.F.rows(); ++f)
+  {
+    if (std::abs(s.V(s.F(f, 0), 2)) > 0.9)
+    {
+      EXPECT_DOUBLE_EQ(scale[f], 1.0) << "near the poles the grid stays uniform";
+    }
+  }
+  EXPECT_EQ(shortLoopGridScale(s.V, s.F, topo, length, { onNeck }, h, 1.0).size(), 0)
+    << "no refinement allowed";
+}
+
 TEST(ThinStrips, TheMapWidensAStripNarrowerThanACell)
 {
   // The strip between two slots is a fifth of a grid edge wide. On a uniform grid the continuous
