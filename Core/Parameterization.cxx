@@ -151,10 +151,11 @@ Eigen::VectorXd adaptiveGridScale(
   return curved;
 }
 
-/// sys.cellScale and countedCell: finer around thin strips and walls (thinStripGridScale) and,
-/// with adaptiveCurvature, where the surface curves sharply (curvatureGridScale, at most
-/// AdaptiveMaximumGrowth times the uniform grid's cells in all); the finer wins.
-/// creases: creasesForTheSteps.
+/// sys.cellScale and countedCell: finer around thin strips and walls (thinStripGridScale),
+/// around short loops near the field's singular points (out.singularityIndex;
+/// shortLoopGridScale) and, with adaptiveCurvature, where the surface curves sharply
+/// (curvatureGridScale, at most AdaptiveMaximumGrowth times the uniform grid's cells in all); the
+/// finer wins. creases: creasesForTheSteps.
 void setGridScale(
   const Inputs& in, const std::vector<char>& creases, SeamlessSystem& sys, Parameterization& out)
 {
