@@ -161,10 +161,11 @@ void setGridScale(
 {
   sys.cellScale = thinStripGridScale(
     in.V, in.F, in.topo, out.edgeLength, in.options.maximumThinStripRefinement, creases);
-  std::vector<int> singular;
+  std::vector<int> singular; // inner ones: around a boundary point every ball reaches the boundary
   for (int p = 0; p < in.numVertices(); ++p)
   {
-    if (out.singularityIndex.size() > 0 && out.singularityIndex[p] != 0)
+    if (out.singularityIndex.size() > 0 && out.singularityIndex[p] != 0 &&
+      !in.topo.boundaryVertex[p])
     {
       singular.push_back(p);
     }

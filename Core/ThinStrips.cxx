@@ -270,7 +270,7 @@ Eigen::VectorXd shortLoopGridScale(const Eigen::MatrixX3d& V, const Eigen::Matri
       (disk.ball(p, middle, true) == DiskTest::Ball::Disk ? low : high) = middle;
     }
     const double wanted = std::max(Share * low, smallest);
-    if (wanted < size[p])
+    if (low > 0 && wanted < size[p]) // (no radius gave a disk: nothing to go by)
     {
       size[p] = wanted;
       thin = true;
