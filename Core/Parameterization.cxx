@@ -162,12 +162,11 @@ void setGridScale(
   sys.cellScale = thinStripGridScale(
     in.V, in.F, in.topo, out.edgeLength, in.options.maximumThinStripRefinement, creases);
   std::vector<int> singular; // inner ones: around a boundary point every ball reaches the boundary
-  for (int p = 0; p < in.numVertices(); ++p)
+  for (Eigen::Index p = 0; p < out.singularityIndex.size(); ++p)
   {
-    if (out.singularityIndex.size() > 0 && out.singularityIndex[p] != 0 &&
-      !in.topo.boundaryVertex[p])
+    if (out.singularityIndex[p] != 0 && !in.topo.boundaryVertex[p])
     {
-      singular.push_back(p);
+      singular.push_back(static_cast<int>(p));
     }
   }
   const Eigen::VectorXd loops = shortLoopGridScale(in.V, in.F, in.topo, in.geometry.edgeLength,

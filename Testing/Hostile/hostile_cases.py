@@ -327,8 +327,8 @@ def hemispheres_meshed_apart(folder):
 
 
 def sliver_lens(folder):
-    # a thin lens whose tips are single triangles of about 10 degrees: no grid cell of its map gave a
-    # quad at any count
+    # a thin lens whose tips are single triangles of about 10 degrees: no grid cell of its map gave
+    # a quad at any count
     return _write(folder, "lens.obj", _obj_text(m.lens()))
 
 

@@ -151,8 +151,8 @@ def seamed_torus(n=40, radius=1.0, tube=0.4):
 
 def lens(n=60, tip_degrees=10.0, length=2.0):
     """A flat lens between the arcs y = +-t (1 - x^2) (x in -1..1, scaled to `length`), t such
-    that each tip is one triangle of a little less than tip_degrees, as n strips across it (an isosurface cut by its
-    volume's face leaves such slivers)."""
+    that each tip is one triangle of a little less than tip_degrees, as n strips across it (an
+    isosurface cut by its volume's face leaves such slivers)."""
     t = math.tan(math.radians(tip_degrees) / 2) / 2
     s = length / 2
     points = [(-s, 0.0, 0.0), (s, 0.0, 0.0)]
