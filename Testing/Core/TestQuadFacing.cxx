@@ -287,6 +287,39 @@ TEST(QuadMeshAdjacency, SplitsPinchedVerticesIntoTheirFans)
   EXPECT_EQ(cube.V.rows(), 8);
 }
 
+TEST(QuadMeshAdjacency, ReadsTheQuadsOwnTopology)
+{
+  // a pillow: two quads glued along all four edges, a sphere; both have the corners 0 and 2
+  // opposite, where two triangles a quad would put one diagonal into four triangles
+  QuadMesh pillow;
+  pillow.V = Eigen::MatrixX3d::Random(4, 3);
+  pillow.Q.resize(2, 4);
+  pillow.Q << 0, 1, 2, 3, 0, 3, 2, 1;
+  const MeshTopology sphere = quadTopology(pillow);
+  EXPECT_TRUE(sphere.isManifold());
+  EXPECT_TRUE(sphere.isOriented());
+  EXPECT_EQ(sphere.eulerCharacteristic(), 2);
+  EXPECT_TRUE(sphere.boundaryLoops.empty());
+  EXPECT_EQ(sphere.numComponents(), 1);
+  // a strip of three quads, then a fourth quad on its middle edge 4-5 beside the two there
+  QuadMesh strip;
+  strip.V = Eigen::MatrixX3d::Random(10, 3);
+  strip.Q.resize(3, 4);
+  strip.Q << 0, 1, 5, 4, 1, 2, 6, 5, 2, 3, 7, 6;
+  const MeshTopology disk = quadTopology(strip);
+  EXPECT_TRUE(disk.isManifold());
+  EXPECT_EQ(disk.eulerCharacteristic(), 1);
+  EXPECT_EQ(disk.boundaryLoops.size(), 1u);
+  ASSERT_EQ(disk.boundaryLoops[0].size(), 8u);
+  for (const int v : disk.boundaryLoops[0])
+  {
+    EXPECT_LT(v, 8); // the quads' points: the centres are inner points
+  }
+  strip.Q.conservativeResize(4, 4);
+  strip.Q.row(3) << 1, 5, 9, 8;
+  EXPECT_EQ(quadTopology(strip).nonManifoldEdges.size(), 1u);
+}
+
 TEST(QuadMeshAdjacency, DropsQuadsHangingByACornerOffTheirComponent)
 {
   // A 3 x 3 block of quads (points 0..15, p = 4 j + i) on component 0, and around it: a quad
