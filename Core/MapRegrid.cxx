@@ -66,14 +66,18 @@ std::size_t defectsBeyondFlat(
 /// more budget) cost seconds; on a large surface (armadillo) minutes, for nothing.
 constexpr double SpentTrianglesPerQuad = 10.0;
 
-/// The quads that map uv gives, cut out and their holes inside the surface filled, as the quad
-/// stage does.
+/// The quads that map uv gives, with the connectivity the quad stage leaves them: cut out, their
+/// holes inside the surface filled, pieces of a quad or two hanging by a corner dropped, and
+/// points where quads touch in several fans split (what the quad stage does besides moving
+/// vertices).
 QuadMesh patchedQuads(
   const Inputs& in, const Eigen::MatrixX2d& uv, const std::vector<int>& cornerSector)
 {
   QuadMesh quads =
     extractQuads(in.V, in.F, in.topo, cornerUVOf(uv, cornerSector), QuadExtractionOptions());
   patchQuadMesh(in.V, in.F, in.topo, quads);
+  dropPinchedFragments(quads, in.topo.faceComponent, PinchedFragmentQuads);
+  splitPinchedVertices(quads);
   return quads;
 }
 
@@ -213,9 +217,8 @@ std::vector<int> pointsBetweenJoinedLoops(
   {
     return {};
   }
-  QuadMesh quads = patchedQuads(in, uv, cornerSector);
-  // two loops that the quads pinch together at a point are one loop (the quad stage splits it)
-  splitPinchedVertices(quads);
+  // (two loops that the quads pinch together at a point are two: the quad stage splits it)
+  const QuadMesh quads = patchedQuads(in, uv, cornerSector);
   const MeshTopology quadTopo = quadTopology(quads);
   if (sameTopology(quadTopo, in.topo))
   {

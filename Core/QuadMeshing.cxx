@@ -177,10 +177,7 @@ QuadMeshResult buildQuadMesh(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& 
     relaxQuads(V, F, topo, r.mesh, relax, progress.part(0.75, 0.95));
     undoWrongMoves(facings, unrelaxed, r.mesh);
   }
-  // a quad or two hanging by a corner off its component's quads (the truck's disk of 512
-  // triangles: 21 quads and one more at a corner, at 1,000, 3,000 and 6,500 quads)
-  constexpr int FragmentQuads = 2;
-  r.fragmentQuads = dropPinchedFragments(r.mesh, topo.faceComponent, FragmentQuads);
+  r.fragmentQuads = dropPinchedFragments(r.mesh, topo.faceComponent, PinchedFragmentQuads);
   // the quads whose centre lies nearer another component's sheet, the last move: the
   // relaxation's projections would put their corners back onto the surface (one more search a
   // quad, so only where there are other components)

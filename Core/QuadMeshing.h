@@ -49,6 +49,11 @@ struct QuadMeshOptions
   bool computeHausdorffDistance = true;
 };
 
+/// The largest pieces of quads hanging by a corner off their component's quads that the quad
+/// stage drops (dropPinchedFragments; the truck's disk of 512 triangles: 21 quads and one more
+/// at a corner, at 1,000, 3,000 and 6,500 quads).
+constexpr int PinchedFragmentQuads = 2;
+
 struct QuadMeshResult
 {
   QuadMesh mesh;
