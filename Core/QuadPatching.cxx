@@ -122,10 +122,7 @@ public:
       }
       rings = takeIn(growing);
     }
-    for (const Loop& loop : boundaryLoops())
-    {
-      r.holesLeft += loop.inside ? 1 : 0;
-    }
+    r.holesLeft = holesOpened(boundaryLoops());
   }
 
   /// Writes the quads back, without the points no quad uses.
@@ -331,6 +328,36 @@ private:
       }
     }
     return loops;
+  }
+
+  /// The loops inside the surface (no point on its boundary) that are not its own holes: per
+  /// component, those beyond its boundary loops that no loop of the quads touches (where the
+  /// quads stop short of a hole of the surface, their loop around it lies inside it too).
+  int holesOpened(const std::vector<Loop>& loops) const
+  {
+    const int nc = topo_.numComponents();
+    std::vector<int> inside(nc, 0), own(nc, 0);
+    for (int c = 0; c < nc; ++c)
+    {
+      own[c] = topo_.components[c].numBoundaryLoops;
+    }
+    for (const Loop& loop : loops)
+    {
+      if (loop.inside)
+      {
+        ++inside[componentOf(loop)];
+      }
+      else
+      {
+        --own[componentOf(loop)]; // a hole of the surface the quads reach
+      }
+    }
+    int opened = 0;
+    for (int c = 0; c < nc; ++c)
+    {
+      opened += std::max(0, inside[c] - std::max(0, own[c]));
+    }
+    return opened;
   }
 
   /// The surface's component a loop lies on.

@@ -17,8 +17,9 @@ namespace quadcover
 struct QuadPatchResult
 {
   int holesFilled = 0; ///< holes inside the surface filled with quads
-  int holesLeft = 0;   ///< holes left open: odd or too long loops, or a component whose holes
-                       ///< are no disks
+  /// holes left open: odd or too long loops, or a component whose holes are no disks (loops
+  /// inside the surface, less those standing for its own holes where the quads stop short of them)
+  int holesLeft = 0;
   int quadsAdded = 0;
 };
 

@@ -287,6 +287,38 @@ TEST(QuadPatching, LeavesALoopTooLongForOneFillOpen)
   EXPECT_EQ(q.Q.rows(), before.rows());
 }
 
+TEST(QuadPatching, CountsTheSurfacesOwnHolesAsNoneLeftOpen)
+{
+  // the open cylinder's quads less the ring along its lower end: their loop there touches the
+  // surface's boundary nowhere but stands for its own hole, which no fill may close
+  const Chain c = runChain(testSurface("cylinder"), 600);
+  QuadMesh q = extractQuads(c.s.V, c.s.F, c.topo, c.map.cornerUV);
+  const double low = q.V.col(2).minCoeff();
+  auto atLowEnd = [&](int i) {
+    bool touches = false;
+    for (int k = 0; k < 4; ++k)
+    {
+      touches = touches || q.V(q.Q(i, k), 2) < low + 1e-9;
+    }
+    return touches;
+  };
+  dropQuads(q, atLowEnd);
+  ASSERT_EQ(measureQuads(q.V, q.Q).boundaryLoops, 2);
+  QuadMesh once = q;
+  const QuadPatchResult own = patchQuadMesh(c.s.V, c.s.F, c.topo, once);
+  EXPECT_EQ(own.holesFilled, 0);
+  EXPECT_EQ(own.holesLeft, 0) << "the cylinder's own hole";
+  EXPECT_EQ(once.Q.rows(), q.Q.rows());
+  // one quad out in the middle too: a hole the quads opened, left open (with the other loop
+  // inside, the holes are not all disks), and counted
+  const int middle = static_cast<int>(q.Q.rows()) / 2;
+  dropQuads(q, [&](int i) { return i == middle; });
+  ASSERT_EQ(measureQuads(q.V, q.Q).boundaryLoops, 3);
+  const QuadPatchResult opened = patchQuadMesh(c.s.V, c.s.F, c.topo, q);
+  EXPECT_EQ(opened.holesFilled, 0);
+  EXPECT_EQ(opened.holesLeft, 1);
+}
+
 TEST(QuadPatching, PutsBackARingTakenInWhenTheGrownHoleCannotBeFilled)
 {
   // a torus whose tube is three quads around: one quad out, its hole's four points swapped
