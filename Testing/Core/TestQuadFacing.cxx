@@ -301,7 +301,7 @@ TEST(QuadMeshAdjacency, ReadsTheQuadsOwnTopology)
   EXPECT_EQ(sphere.eulerCharacteristic(), 2);
   EXPECT_TRUE(sphere.boundaryLoops.empty());
   EXPECT_EQ(sphere.numComponents(), 1);
-  // a strip of three quads, then a fourth quad on its middle edge 4-5 beside the two there
+  // a strip of three quads, then a fourth quad on the edge 1-5 between the first two
   QuadMesh strip;
   strip.V = Eigen::MatrixX3d::Random(10, 3);
   strip.Q.resize(3, 4);
