@@ -172,14 +172,7 @@ TEST(ThinStrips, ANeckThinnerThanTheGridAsksForThreeGridEdgesAroundIt)
   const double neck = 0.03, h = 0.2;
   const Surface s = makeDumbbell(1.0, 0.5, neck, nAround, nAlong);
   const MeshTopology topo = buildTopology(s.F, static_cast<int>(s.V.rows()));
-  Eigen::MatrixX3d length(s.F.rows(), 3);
-  for (int f = 0; f < s.F.rows(); ++f)
-  {
-    for (int k = 0; k < 3; ++k)
-    {
-      length(f, k) = (s.V.row(s.F(f, (k + 1) % 3)) - s.V.row(s.F(f, k))).norm();
-    }
-  }
+  const Eigen::MatrixX3d length = computeFrameGeometry(s.V, s.F, topo).edgeLength; // as the map
   const int pole = (nAlong - 1) * nAround;           // the south pole (after the rings)
   const int onNeck = (nAlong / 2 - 1) * nAround + 5; // a point of the middle ring
   ASSERT_NEAR(s.V(onNeck, 2), 0.0, 1e-12);
