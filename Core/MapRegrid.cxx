@@ -213,7 +213,7 @@ std::vector<int> pointsBetweenJoinedLoops(
   const Inputs& in, const Eigen::MatrixX2d& uv, const std::vector<int>& cornerSector, double reach)
 {
   const std::size_t loops = in.topo.boundaryLoops.size();
-  if (loops < 2)
+  if (loops == 0)
   {
     return {};
   }
@@ -225,13 +225,15 @@ std::vector<int> pointsBetweenJoinedLoops(
     return {}; // the quads keep the loops (however the nearest points fall)
   }
   std::vector<int> quadLoop = quadLoopOfEachLoop(in, quads, quadTopo, reach);
-  // quads in more pieces than the surface: strips between loops were cut through, and the loops
-  // may each still have one of their own: every pair of loops counts as joined
-  if (quadTopo.numComponents() > in.topo.numComponents())
+  // quads in more pieces than the surface: strips between loops, or necks between two stretches
+  // of one loop, were cut through, and the loops may each still have one of their own: every
+  // loop counts as joined, to the others and to itself
+  const bool cut = quadTopo.numComponents() > in.topo.numComponents();
+  if (cut)
   {
     quadLoop.assign(loops, 0);
   }
-  // the points of joined loops, and which quad loop joined them
+  // the points of joined loops, which quad loop joined them, and how far along its loop each lies
   std::vector<int> sharing(quadTopo.boundaryLoops.size() + 2, 0);
   for (const int q : quadLoop)
   {
@@ -239,27 +241,37 @@ std::vector<int> pointsBetweenJoinedLoops(
   }
   std::vector<Eigen::Vector3d> points;
   std::vector<int> pointId, joinedIn, loopOf;
+  std::vector<double> along, loopLength(loops, 0.0);
   for (std::size_t l = 0; l < loops; ++l)
   {
-    const bool joined = quadLoop[l] >= 0 && sharing[quadLoop[l] + 1] > 1;
-    for (const int p : in.topo.boundaryLoops[l])
+    if (!cut && (quadLoop[l] < 0 || sharing[quadLoop[l] + 1] < 2))
     {
-      if (joined)
-      {
-        points.push_back(in.V.row(p).transpose());
-        pointId.push_back(p);
-        joinedIn.push_back(quadLoop[l]);
-        loopOf.push_back(static_cast<int>(l));
-      }
+      continue;
+    }
+    const std::vector<int>& loop = in.topo.boundaryLoops[l];
+    for (std::size_t k = 0; k < loop.size(); ++k)
+    {
+      points.push_back(in.V.row(loop[k]).transpose());
+      pointId.push_back(loop[k]);
+      joinedIn.push_back(quadLoop[l]);
+      loopOf.push_back(static_cast<int>(l));
+      along.push_back(loopLength[l]);
+      loopLength[l] += (in.V.row(loop[(k + 1) % loop.size()]) - in.V.row(loop[k])).norm();
     }
   }
+  // two points of one loop are across a neck when the loop between them is NeckLength times as
+  // long as the reach either way round
+  constexpr double NeckLength = 2.0;
   std::vector<char> between(points.size(), 0);
   const std::vector<std::vector<int>> near = nearbyPoints(points, reach);
   for (std::size_t i = 0; i < points.size(); ++i)
   {
     for (const int j : near[i])
     {
-      if (loopOf[i] != loopOf[j] && joinedIn[i] == joinedIn[j] &&
+      const double apart = std::abs(along[i] - along[j]);
+      const bool acrossNeck = loopOf[i] == loopOf[j] &&
+        std::min(apart, loopLength[loopOf[i]] - apart) > NeckLength * reach;
+      if ((loopOf[i] != loopOf[j] || acrossNeck) && joinedIn[i] == joinedIn[j] &&
         (points[i] - points[j]).norm() < reach)
       {
         between[i] = between[j] = 1;

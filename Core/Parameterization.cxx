@@ -629,15 +629,16 @@ constexpr int JoinedLoopTries = 2;
 constexpr double JoinedLoopMaximumRefinement = 8.0;
 
 /// Where the map's quads join two boundary loops into one (the strip between two holes less than
-/// a grid edge or two wide, cut; pointsBetweenJoinedLoops), the grid defectGridRefinement times
-/// finer between them: the map made again (as refineAroundDefects does) and kept when its quads
-/// keep the surface's topology (whatever its defects: the topology first, as mapRank ranks maps).
+/// a grid edge or two wide, cut), or cut off a tongue between two stretches of one loop
+/// (pointsBetweenJoinedLoops), the grid defectGridRefinement times finer between them: the map made
+/// again (as refineAroundDefects does) and kept when its quads keep the surface's topology
+/// (whatever its defects: the topology first, as mapRank ranks maps).
 void refineBetweenJoinedLoops(const Inputs& in, const Field& field, SeamlessSystem& sys,
   const HessianFactor& factor, bool greedy, Eigen::VectorXd& x, Defects& defects,
   Parameterization& out, const Progress& progress)
 {
   const double finer = in.options.defectGridRefinement;
-  if (in.topo.boundaryLoops.size() < 2 || !in.options.pureQuads || !(finer > 1) ||
+  if (in.topo.boundaryLoops.empty() || !in.options.pureQuads || !(finer > 1) ||
     repairBudget(in, out, 1.0) <= 0)
   {
     return;

@@ -318,8 +318,10 @@ bool keepsTopology(
 /// into one (the strip between two holes cut): the surface points of those loops within `reach`
 /// of a point of another loop joined to the same. Each loop belongs to the quads' loop nearest to
 /// the most of its points (within reach); where the quads fall into more pieces than the
-/// surface (strips between loops cut through), every pair of loops counts as joined. Empty when
-/// no loops were joined.
+/// surface (strips between loops, or the neck of a tongue between two stretches of one loop, cut
+/// through), every loop counts as joined, to the others and to itself: then two points of one
+/// loop count too when the loop between them is more than twice the reach long either way round.
+/// Empty when no loops were joined.
 std::vector<int> pointsBetweenJoinedLoops(
   const Inputs& in, const Eigen::MatrixX2d& uv, const std::vector<int>& cornerSector, double reach);
 

@@ -620,6 +620,70 @@ TEST(Parameterization, TwoHolesTheQuadsWouldJoinGetAFinerGridBetweenThem)
   }
 }
 
+TEST(Parameterization, ATongueTheQuadsWouldCutOffGetsAFinerGridAcrossItsNeck)
+{
+  // One stepped hole in a sphere with a tongue of the surface reaching into it, 0.12 wide,
+  // about a grid edge at 1,000 quads: both sides of the tongue are the hole's one loop. The first
+  // map's quads cut the tongue off at its neck (a piece more than the sphere); the grid is made
+  // finer across the neck, where the loop comes back within reach of itself, and the map made again
+  // keeps the tongue on. Without the finer grid (defectGridRefinement 1) it does not.
+  const Surface sphere = makeIcosphere(1.0, 5);
+  const Eigen::Vector3d pole(0, 0, 1);
+  std::vector<int> kept;
+  for (int f = 0; f < sphere.F.rows(); ++f)
+  {
+    const Eigen::Vector3d c =
+      (sphere.V.row(sphere.F(f, 0)) + sphere.V.row(sphere.F(f, 1)) + sphere.V.row(sphere.F(f, 2)))
+        .transpose() /
+      3.0;
+    const bool tongue = c.x() > 0.02 && std::abs(c.y()) < 0.06;
+    if ((c - pole).norm() > 0.4 || tongue)
+    {
+      kept.push_back(f);
+    }
+  }
+  Surface holed;
+  holed.V = sphere.V;
+  holed.F.resize(static_cast<int>(kept.size()), 3);
+  for (std::size_t i = 0; i < kept.size(); ++i)
+  {
+    holed.F.row(static_cast<int>(i)) = sphere.F.row(kept[i]);
+  }
+  const MeshTopology topo = buildTopology(holed.F, static_cast<int>(holed.V.rows()));
+  ASSERT_TRUE(topo.isManifold());
+  ASSERT_EQ(topo.numComponents(), 1);
+  ASSERT_EQ(topo.eulerCharacteristic(), 1);
+  ASSERT_EQ(topo.boundaryLoops.size(), 1u);
+  auto quadsOf = [](const Chain& r) {
+    QuadMesh mesh = extractQuads(r.s.V, r.s.F, r.topo, r.map.cornerUV);
+    patchQuadMesh(r.s.V, r.s.F, r.topo, mesh);
+    splitPinchedVertices(mesh);
+    return measureQuads(mesh.V, mesh.Q);
+  };
+  for (const double q : { 1000.0, 1500.0, 2000.0 })
+  {
+    SCOPED_TRACE(q);
+    ParameterizationOptions uniform;
+    uniform.defectGridRefinement = 1.0;
+    const Chain plain = runChain(holed, q, uniform);
+    const QuadQuality before = quadsOf(plain);
+    const Chain r = runChain(holed, q);
+    const QuadQuality after = quadsOf(r);
+    std::printf("%g quads: %d pieces, chi %d, %d loops -> %d pieces, chi %d, %d loops; finer "
+                "triangles %d -> %d\n",
+      q, before.components, before.eulerCharacteristic, before.boundaryLoops, after.components,
+      after.eulerCharacteristic, after.boundaryLoops, plain.map.finerGridTriangles,
+      r.map.finerGridTriangles);
+    EXPECT_GT(before.components, 1) << "the first map's quads cut the tongue off";
+    EXPECT_GT(r.map.finerGridTriangles, plain.map.finerGridTriangles);
+    EXPECT_EQ(after.quads, after.faces);
+    EXPECT_EQ(after.nonManifoldEdges, 0);
+    EXPECT_EQ(after.components, 1);
+    EXPECT_EQ(after.eulerCharacteristic, 1);
+    EXPECT_EQ(after.boundaryLoops, 1);
+  }
+}
+
 namespace
 {
 /// How many of the sharp edges (the smoother's default angle and length) the map puts on a grid
