@@ -209,13 +209,61 @@ bool keepsTopology(
   return topo.isManifold() && sameTopology(topo, in.topo);
 }
 
+namespace
+{
+/// Two points of one loop are across a neck when the loop between them is this many times as
+/// long as the reach either way round (pointsBetweenJoinedLoops).
+constexpr double NeckLength = 2.0;
+
+/// The pairs of the surface's boundary points (index pairs into in.topo's loops, flattened) that
+/// pointsBetweenJoinedLoops may refine between, whatever the map: within `reach`, of two loops or
+/// across a neck of one. loopOf: per flattened point, its loop.
+std::vector<std::pair<int, int>> pairsAcrossLoops(
+  const Inputs& in, double reach, std::vector<int>& loopOf)
+{
+  std::vector<Eigen::Vector3d> points;
+  std::vector<double> along;
+  std::vector<double> loopLength(in.topo.boundaryLoops.size(), 0.0);
+  loopOf.clear();
+  for (std::size_t l = 0; l < in.topo.boundaryLoops.size(); ++l)
+  {
+    const std::vector<int>& loop = in.topo.boundaryLoops[l];
+    for (std::size_t k = 0; k < loop.size(); ++k)
+    {
+      points.push_back(in.V.row(loop[k]).transpose());
+      loopOf.push_back(static_cast<int>(l));
+      along.push_back(loopLength[l]);
+      loopLength[l] += (in.V.row(loop[(k + 1) % loop.size()]) - in.V.row(loop[k])).norm();
+    }
+  }
+  std::vector<std::pair<int, int>> pairs;
+  const std::vector<std::vector<int>> near = nearbyPoints(points, reach);
+  for (std::size_t i = 0; i < points.size(); ++i)
+  {
+    for (const int j : near[i])
+    {
+      const double apart = std::abs(along[i] - along[j]);
+      const bool acrossNeck = loopOf[i] == loopOf[j] &&
+        std::min(apart, loopLength[loopOf[i]] - apart) > NeckLength * reach;
+      if (static_cast<int>(i) < j && (loopOf[i] != loopOf[j] || acrossNeck) &&
+        (points[i] - points[j]).norm() < reach)
+      {
+        pairs.emplace_back(static_cast<int>(i), j);
+      }
+    }
+  }
+  return pairs;
+}
+}
+
 std::vector<int> pointsBetweenJoinedLoops(
   const Inputs& in, const Eigen::MatrixX2d& uv, const std::vector<int>& cornerSector, double reach)
 {
-  const std::size_t loops = in.topo.boundaryLoops.size();
-  if (loops == 0)
+  std::vector<int> loopOf;
+  const std::vector<std::pair<int, int>> pairs = pairsAcrossLoops(in, reach, loopOf);
+  if (pairs.empty())
   {
-    return {};
+    return {}; // no loop comes near another or itself: nothing to refine between
   }
   // (two loops that the quads pinch together at a point are two: the quad stage splits it)
   const QuadMesh quads = patchedQuads(in, uv, cornerSector);
@@ -231,59 +279,31 @@ std::vector<int> pointsBetweenJoinedLoops(
   const bool cut = quadTopo.numComponents() > in.topo.numComponents();
   if (cut)
   {
-    quadLoop.assign(loops, 0);
+    quadLoop.assign(in.topo.boundaryLoops.size(), 0);
   }
-  // the points of joined loops, which quad loop joined them, and how far along its loop each lies
   std::vector<int> sharing(quadTopo.boundaryLoops.size() + 2, 0);
   for (const int q : quadLoop)
   {
     ++sharing[q + 1]; // (-1: none)
   }
-  std::vector<Eigen::Vector3d> points;
-  std::vector<int> pointId, joinedIn, loopOf;
-  std::vector<double> along, loopLength(loops, 0.0);
-  for (std::size_t l = 0; l < loops; ++l)
+  auto joined = [&](int l) { return cut || (quadLoop[l] >= 0 && sharing[quadLoop[l] + 1] > 1); };
+  std::vector<char> between(loopOf.size(), 0);
+  for (const auto& [i, j] : pairs)
   {
-    if (!cut && (quadLoop[l] < 0 || sharing[quadLoop[l] + 1] < 2))
+    if (joined(loopOf[i]) && joined(loopOf[j]) && quadLoop[loopOf[i]] == quadLoop[loopOf[j]])
     {
-      continue;
-    }
-    const std::vector<int>& loop = in.topo.boundaryLoops[l];
-    for (std::size_t k = 0; k < loop.size(); ++k)
-    {
-      points.push_back(in.V.row(loop[k]).transpose());
-      pointId.push_back(loop[k]);
-      joinedIn.push_back(quadLoop[l]);
-      loopOf.push_back(static_cast<int>(l));
-      along.push_back(loopLength[l]);
-      loopLength[l] += (in.V.row(loop[(k + 1) % loop.size()]) - in.V.row(loop[k])).norm();
-    }
-  }
-  // two points of one loop are across a neck when the loop between them is NeckLength times as
-  // long as the reach either way round
-  constexpr double NeckLength = 2.0;
-  std::vector<char> between(points.size(), 0);
-  const std::vector<std::vector<int>> near = nearbyPoints(points, reach);
-  for (std::size_t i = 0; i < points.size(); ++i)
-  {
-    for (const int j : near[i])
-    {
-      const double apart = std::abs(along[i] - along[j]);
-      const bool acrossNeck = loopOf[i] == loopOf[j] &&
-        std::min(apart, loopLength[loopOf[i]] - apart) > NeckLength * reach;
-      if ((loopOf[i] != loopOf[j] || acrossNeck) && joinedIn[i] == joinedIn[j] &&
-        (points[i] - points[j]).norm() < reach)
-      {
-        between[i] = between[j] = 1;
-      }
+      between[i] = between[j] = 1;
     }
   }
   std::vector<int> result;
-  for (std::size_t i = 0; i < points.size(); ++i)
+  for (std::size_t l = 0, i = 0; l < in.topo.boundaryLoops.size(); ++l)
   {
-    if (between[i])
+    for (const int p : in.topo.boundaryLoops[l])
     {
-      result.push_back(pointId[i]);
+      if (between[i++])
+      {
+        result.push_back(p);
+      }
     }
   }
   return result;
