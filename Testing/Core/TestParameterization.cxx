@@ -544,9 +544,10 @@ TEST(Parameterization, TheTwoSidesOfASharpTipGoOnLinesApart)
 
 namespace
 {
-/// An icosphere (level 5) with the triangles whose centres lie within `radius` of one of
-/// `centres` removed: holes whose boundaries step along the triangles.
-Surface holedSphere(double radius, const std::vector<Eigen::Vector3d>& centres)
+/// An icosphere (level 5) without the triangles whose centres are `removed`: holes whose
+/// boundaries step along the triangles.
+template<typename Removed>
+Surface sphereWithout(Removed removed)
 {
   const Surface sphere = makeIcosphere(1.0, 5);
   std::vector<int> kept;
@@ -556,8 +557,7 @@ Surface holedSphere(double radius, const std::vector<Eigen::Vector3d>& centres)
       (sphere.V.row(sphere.F(f, 0)) + sphere.V.row(sphere.F(f, 1)) + sphere.V.row(sphere.F(f, 2)))
         .transpose() /
       3.0;
-    if (std::all_of(centres.begin(), centres.end(),
-          [&](const Eigen::Vector3d& c) { return (centre - c).norm() > radius; }))
+    if (!removed(centre))
     {
       kept.push_back(f);
     }
@@ -570,6 +570,48 @@ Surface holedSphere(double radius, const std::vector<Eigen::Vector3d>& centres)
     s.F.row(static_cast<int>(i)) = sphere.F.row(kept[i]);
   }
   return s;
+}
+
+/// An icosphere (level 5) with the triangles whose centres lie within `radius` of one of
+/// `centres` removed.
+Surface holedSphere(double radius, const std::vector<Eigen::Vector3d>& centres)
+{
+  return sphereWithout([&](const Eigen::Vector3d& centre) {
+    return std::any_of(centres.begin(), centres.end(),
+      [&](const Eigen::Vector3d& c) { return (centre - c).norm() <= radius; });
+  });
+}
+}
+
+namespace
+{
+/// The quads of one surface at one count without the finer grid between joined loops
+/// (defectGridRefinement 1) and with the defaults, cut out and patched as the quad stage does.
+struct JoinedLoopTrial
+{
+  Chain plain, refined;
+  QuadQuality before, after;
+};
+
+JoinedLoopTrial joinedLoopTrial(const Surface& s, double quads)
+{
+  auto quadsOf = [](const Chain& r) {
+    QuadMesh mesh = extractQuads(r.s.V, r.s.F, r.topo, r.map.cornerUV);
+    patchQuadMesh(r.s.V, r.s.F, r.topo, mesh);
+    splitPinchedVertices(mesh);
+    return measureQuads(mesh.V, mesh.Q);
+  };
+  ParameterizationOptions uniform;
+  uniform.defectGridRefinement = 1.0;
+  JoinedLoopTrial t{ runChain(s, quads, uniform), runChain(s, quads), {}, {} };
+  t.before = quadsOf(t.plain);
+  t.after = quadsOf(t.refined);
+  std::printf("%g quads: %d pieces, chi %d, %d loops -> %d pieces, chi %d, %d loops; finer "
+              "triangles %d -> %d\n",
+    quads, t.before.components, t.before.eulerCharacteristic, t.before.boundaryLoops,
+    t.after.components, t.after.eulerCharacteristic, t.after.boundaryLoops,
+    t.plain.map.finerGridTriangles, t.refined.map.finerGridTriangles);
+  return t;
 }
 }
 
@@ -587,26 +629,14 @@ TEST(Parameterization, TwoHolesTheQuadsWouldJoinGetAFinerGridBetweenThem)
   ASSERT_TRUE(topo.isManifold());
   ASSERT_EQ(topo.eulerCharacteristic(), 0);
   ASSERT_EQ(topo.boundaryLoops.size(), 2u);
-  auto quadsOf = [](const Chain& r) {
-    QuadMesh mesh = extractQuads(r.s.V, r.s.F, r.topo, r.map.cornerUV);
-    patchQuadMesh(r.s.V, r.s.F, r.topo, mesh);
-    splitPinchedVertices(mesh);
-    return measureQuads(mesh.V, mesh.Q);
-  };
   for (const double q : { 1000.0, 1500.0, 2000.0 })
   {
     SCOPED_TRACE(q);
-    ParameterizationOptions uniform;
-    uniform.defectGridRefinement = 1.0;
-    const Chain plain = runChain(sphere, q, uniform);
-    const QuadQuality before = quadsOf(plain);
-    const Chain r = runChain(sphere, q);
-    const QuadQuality after = quadsOf(r);
-    std::printf("%g quads: %d pieces, chi %d, %d loops -> %d pieces, chi %d, %d loops; finer "
-                "triangles %d -> %d\n",
-      q, before.components, before.eulerCharacteristic, before.boundaryLoops, after.components,
-      after.eulerCharacteristic, after.boundaryLoops, plain.map.finerGridTriangles,
-      r.map.finerGridTriangles);
+    const JoinedLoopTrial t = joinedLoopTrial(sphere, q);
+    const Chain& plain = t.plain;
+    const Chain& r = t.refined;
+    const QuadQuality& before = t.before;
+    const QuadQuality& after = t.after;
     EXPECT_EQ(plain.map.flipped + plain.map.wrongWindings, 0) << "no defects to refine around";
     const bool keptBefore =
       before.components == 1 && before.eulerCharacteristic == 0 && before.boundaryLoops == 2;
@@ -627,55 +657,24 @@ TEST(Parameterization, ATongueTheQuadsWouldCutOffGetsAFinerGridAcrossItsNeck)
   // map's quads cut the tongue off at its neck (a piece more than the sphere); the grid is made
   // finer across the neck, where the loop comes back within reach of itself, and the map made again
   // keeps the tongue on. Without the finer grid (defectGridRefinement 1) it does not.
-  const Surface sphere = makeIcosphere(1.0, 5);
   const Eigen::Vector3d pole(0, 0, 1);
-  std::vector<int> kept;
-  for (int f = 0; f < sphere.F.rows(); ++f)
-  {
-    const Eigen::Vector3d c =
-      (sphere.V.row(sphere.F(f, 0)) + sphere.V.row(sphere.F(f, 1)) + sphere.V.row(sphere.F(f, 2)))
-        .transpose() /
-      3.0;
+  const Surface holed = sphereWithout([&](const Eigen::Vector3d& c) {
     const bool tongue = c.x() > 0.02 && std::abs(c.y()) < 0.06;
-    if ((c - pole).norm() > 0.4 || tongue)
-    {
-      kept.push_back(f);
-    }
-  }
-  Surface holed;
-  holed.V = sphere.V;
-  holed.F.resize(static_cast<int>(kept.size()), 3);
-  for (std::size_t i = 0; i < kept.size(); ++i)
-  {
-    holed.F.row(static_cast<int>(i)) = sphere.F.row(kept[i]);
-  }
+    return (c - pole).norm() <= 0.4 && !tongue;
+  });
   const MeshTopology topo = buildTopology(holed.F, static_cast<int>(holed.V.rows()));
   ASSERT_TRUE(topo.isManifold());
   ASSERT_EQ(topo.numComponents(), 1);
   ASSERT_EQ(topo.eulerCharacteristic(), 1);
   ASSERT_EQ(topo.boundaryLoops.size(), 1u);
-  auto quadsOf = [](const Chain& r) {
-    QuadMesh mesh = extractQuads(r.s.V, r.s.F, r.topo, r.map.cornerUV);
-    patchQuadMesh(r.s.V, r.s.F, r.topo, mesh);
-    splitPinchedVertices(mesh);
-    return measureQuads(mesh.V, mesh.Q);
-  };
   for (const double q : { 1000.0, 1500.0, 2000.0 })
   {
     SCOPED_TRACE(q);
-    ParameterizationOptions uniform;
-    uniform.defectGridRefinement = 1.0;
-    const Chain plain = runChain(holed, q, uniform);
-    const QuadQuality before = quadsOf(plain);
-    const Chain r = runChain(holed, q);
-    const QuadQuality after = quadsOf(r);
-    std::printf("%g quads: %d pieces, chi %d, %d loops -> %d pieces, chi %d, %d loops; finer "
-                "triangles %d -> %d\n",
-      q, before.components, before.eulerCharacteristic, before.boundaryLoops, after.components,
-      after.eulerCharacteristic, after.boundaryLoops, plain.map.finerGridTriangles,
-      r.map.finerGridTriangles);
+    const JoinedLoopTrial t = joinedLoopTrial(holed, q);
+    const QuadQuality& before = t.before;
+    const QuadQuality& after = t.after;
     EXPECT_GT(before.components, 1) << "the first map's quads cut the tongue off";
-    EXPECT_GT(r.map.finerGridTriangles, plain.map.finerGridTriangles);
+    EXPECT_GT(t.refined.map.finerGridTriangles, t.plain.map.finerGridTriangles);
     EXPECT_EQ(after.quads, after.faces);
     EXPECT_EQ(after.nonManifoldEdges, 0);
     EXPECT_EQ(after.components, 1);
