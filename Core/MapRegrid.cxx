@@ -211,8 +211,8 @@ bool keepsTopology(
 
 namespace
 {
-/// Two points of one loop are across a neck when the loop between them is this many times as
-/// long as the reach either way round (pointsBetweenJoinedLoops).
+/// Two points of one loop are across a neck when the loop between them is more than this many
+/// times the reach long, either way round (pointsBetweenJoinedLoops).
 constexpr double NeckLength = 2.0;
 
 /// The pairs of the surface's boundary points (index pairs into in.topo's loops, flattened) that
