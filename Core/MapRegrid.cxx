@@ -236,7 +236,7 @@ std::vector<std::pair<int, int>> pairsAcrossLoops(
       loopLength[l] += (in.V.row(loop[(k + 1) % loop.size()]) - in.V.row(loop[k])).norm();
     }
   }
-  std::vector<std::pair<int, int>> pairs;
+  std::vector<std::pair<int, int>> pairs; // each once: nearbyPoints gives only the later points
   const std::vector<std::vector<int>> near = nearbyPoints(points, reach);
   for (std::size_t i = 0; i < points.size(); ++i)
   {
@@ -245,8 +245,7 @@ std::vector<std::pair<int, int>> pairsAcrossLoops(
       const double apart = std::abs(along[i] - along[j]);
       const bool acrossNeck = loopOf[i] == loopOf[j] &&
         std::min(apart, loopLength[loopOf[i]] - apart) > NeckLength * reach;
-      if (static_cast<int>(i) < j && (loopOf[i] != loopOf[j] || acrossNeck) &&
-        (points[i] - points[j]).norm() < reach)
+      if ((loopOf[i] != loopOf[j] || acrossNeck) && (points[i] - points[j]).norm() < reach)
       {
         pairs.emplace_back(static_cast<int>(i), j);
       }
