@@ -178,6 +178,16 @@ QuadMeshResult buildQuadMesh(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& 
     undoWrongMoves(facings, unrelaxed, r.mesh);
   }
   r.fragmentQuads = dropPinchedFragments(r.mesh, topo.faceComponent, PinchedFragmentQuads);
+  if (options.repairInvertedQuads)
+  {
+    // what no move of the corners mended (the tip of a tube thinner than the quads, a quad
+    // squeezed between two others): a change of the connectivity
+    std::vector<int> bad = facings.turned(r.mesh), inverted = invertedQuads(r.mesh.V, r.mesh.Q);
+    bad.insert(bad.end(), inverted.begin(), inverted.end());
+    std::sort(bad.begin(), bad.end());
+    bad.erase(std::unique(bad.begin(), bad.end()), bad.end());
+    r.collapse = removeTurnedQuads(surface, bad, r.mesh);
+  }
   // the quads whose centre lies nearer another component's sheet, the last move: the
   // relaxation's projections would put their corners back onto the surface (one more search a
   // quad, so only where there are other components)

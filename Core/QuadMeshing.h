@@ -7,6 +7,7 @@
 #include "FrameSmoother.h"
 #include "MeshTopology.h"
 #include "Progress.h"
+#include "QuadCollapse.h"
 #include "QuadExtraction.h"
 #include "QuadFacing.h"
 #include "QuadPatching.h"
@@ -67,6 +68,7 @@ struct QuadMeshResult
   int turnedQuads = 0;       ///< turnedQuads of the final mesh
   int splitVertices = 0;     ///< copies splitPinchedVertices added
   int fragmentQuads = 0;     ///< quads dropPinchedFragments removed
+  QuadCollapseResult collapse; ///< what removeTurnedQuads did
   int snappedVertices = 0;   ///< vertices snapToCreases moved onto a sharp edge, and
                              ///< straightenCreaseSteps beside one
   int liftedVertices = 0;    ///< vertices liftOffOtherComponents moved off the surface
@@ -83,7 +85,8 @@ struct QuadMeshResult
  * QuadRelaxOptions::unfold for the quads still inside out (kept when fewer stay so and none more
  * faces against the surface), relaxQuads with options.relaxationIterations sweeps
  * (QuadRelaxOptions::holdAcrossBends; the corners of a quad it made face against the surface or
- * turn inside out are put back), dropPinchedFragments (of at most 2 quads),
+ * turn inside out are put back), dropPinchedFragments (of at most 2 quads), removeTurnedQuads
+ * (with options.repairInvertedQuads) of the quads still facing against the surface or inside out,
  * liftOffOtherComponents, splitPinchedVertices, then measureQuads. The quads' facing is measured
  * by quadFacing with the surface's triangles labelled by their components.
  * @throws std::invalid_argument as extractQuads does

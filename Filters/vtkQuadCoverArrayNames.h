@@ -215,6 +215,10 @@ constexpr const char* SplitQuadVertices = "SplitQuadVertices";
 /// field, 1 x int: quads removed as fragments of a component's quads (a quad or two that touched
 /// the rest of their component's quads, four times as many or more, at a corner only).
 constexpr const char* FragmentQuads = "FragmentQuads";
+/// field, 1 x int, 2 tuples: quads facing against the input or turned inside out after the
+/// vertex moves that were removed as ears (three of their edges on the boundary) and that were
+/// collapsed along a diagonal (RepairInvertedQuads).
+constexpr const char* RemovedTurnedQuads = "RemovedTurnedQuads";
 /// field, 1 x int: quad vertices moved onto a sharp edge of the input (SnapToCreases).
 constexpr const char* SnappedVertices = "SnappedVertices";
 /// field, 1 x int: quad vertices lifted off the input, where a quad's centre lay nearer another

@@ -22,8 +22,7 @@
 
 #include "QuadMeshing.h"
 #include "QuadQuality.h"
-#include "ScaledJacobian.h"
-#include "SurfaceLocator.h"
+#include "QuadsOntoSource.h"
 
 #include <algorithm>
 #include <cmath>
@@ -123,6 +122,8 @@ void AddFigures(vtkFieldData* fd, const quadcover::QuadMeshResult& r)
     fd, names::TurnedQuads, { double(r.turnedExtracted), double(r.turnedQuads) });
   AddField<vtkIntArray>(fd, names::SplitQuadVertices, { double(r.splitVertices) });
   AddField<vtkIntArray>(fd, names::FragmentQuads, { double(r.fragmentQuads) });
+  AddField<vtkIntArray>(
+    fd, names::RemovedTurnedQuads, { double(r.collapse.ears), double(r.collapse.collapsed) });
   AddField<vtkIntArray>(fd, names::SnappedVertices, { double(r.snappedVertices) });
   AddField<vtkIntArray>(fd, names::LiftedVertices, { double(r.liftedVertices) });
   AddField<vtkIntArray>(fd, names::EmptyComponents, { double(r.emptyComponents) });
@@ -169,55 +170,6 @@ void SourceSurface(
     throw std::invalid_argument(
       "the source surface (input 1) has point ids out of range or non-finite points");
   }
-}
-
-/// Each vertex of the result moved to its closest point on the surface V, F. The corners of a
-/// quad that this turns over (its normal against the one it had: across a crease or a thin rim
-/// the closest points can lie on different sides) or turns a corner of inside out go back where
-/// they were, until none does; the quality figures are then measured again. The source's own
-/// orientation is not used: a raw input may have triangles the repair turned over.
-void PutOnto(quadcover::QuadMeshResult& r, const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F)
-{
-  quadcover::QuadMesh& quads = r.mesh;
-  const quadcover::SurfaceLocator locator(V, F);
-  const Eigen::MatrixX3d before = quads.V;
-  for (Eigen::Index v = 0; v < quads.V.rows(); ++v)
-  {
-    const quadcover::SurfaceLocator::Hit hit = locator.closest(quads.V.row(v).transpose());
-    if (hit.triangle >= 0)
-    {
-      quads.V.row(v) = hit.point.transpose();
-    }
-  }
-  std::vector<char> wasInverted(quads.Q.rows());
-  for (Eigen::Index q = 0; q < quads.Q.rows(); ++q)
-  {
-    wasInverted[q] = quadcover::quadScaledJacobian(before, quads.Q, static_cast<int>(q)) <= 0.0;
-  }
-  for (bool moved = true; moved;)
-  {
-    moved = false;
-    for (Eigen::Index q = 0; q < quads.Q.rows(); ++q)
-    {
-      const int i = static_cast<int>(q);
-      const bool turned = quadcover::quadAreaVector(quads.V, quads.Q, i)
-                            .dot(quadcover::quadAreaVector(before, quads.Q, i)) <= 0.0;
-      const bool inverted =
-        !wasInverted[q] && quadcover::quadScaledJacobian(quads.V, quads.Q, i) <= 0.0;
-      if (!turned && !inverted)
-      {
-        continue;
-      }
-      for (int k = 0; k < 4; ++k)
-      {
-        const int v = quads.Q(q, k);
-        moved = moved || quads.V.row(v) != before.row(v);
-        quads.V.row(v) = before.row(v);
-      }
-    }
-  }
-  r.quality = quadcover::measureQuads(quads.V, quads.Q);
-  r.invertedFinal = quadcover::countInvertedQuads(quads.V, quads.Q);
 }
 }
 
@@ -351,7 +303,7 @@ void vtkQuadExtractor::Execute(vtkQuadCoverSurface& in, vtkInformationVector* ou
   if (hasSource)
   {
     SourceSurface(vtkPolyData::SafeDownCast(this->GetInputDataObject(1, 0)), in, sourceV, sourceF);
-    PutOnto(r, sourceV, sourceF);
+    quadcover::putQuadsOnto(r, in.V, in.F, sourceV, sourceF);
   }
   vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
   WriteQuads(output, r, in);

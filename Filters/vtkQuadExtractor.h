@@ -29,7 +29,9 @@
  * manifold at its vertices), FragmentQuads (quads removed that hung off their component's
  * quads by a corner), SnappedVertices (quad vertices moved onto creases, or beside one where
  * a quad lay folded across it; SnapToCreases), LiftedVertices (quad vertices lifted off the
- * input where a quad's centre lay nearer another component's surface than its own) and
+ * input where a quad's centre lay nearer another component's surface than its own),
+ * RemovedTurnedQuads (quads facing against the input or inside out that were cut off as ears or
+ * collapsed along a diagonal; RepairInvertedQuads) and
  * EmptyComponents (components of the input on which no quad lies, with a warning; 0 on a valid
  * remesh).
  * @sa vtkQuadCoverSolver
@@ -77,8 +79,13 @@ public:
    * of the quads around them, are moved one at a time to the point of the input nearby that makes
    * the worst of their quads best (quadcover::repairFacing). Quads still inside out then get a
    * last round in which their vertices also try short steps around them, kept when fewer stay
-   * inside out and none more faces against the input. Far from them nothing moves.
-   * InvertedQuads and TurnedQuads report how many there were and are. */
+   * inside out and none more faces against the input. Far from them nothing moves. A quad that
+   * no move mends is removed at the end by a change of the connectivity that keeps the output
+   * all quads, manifold, of the same Euler characteristic and boundary loops: an ear (three edges
+   * on the boundary) is cut off, another quad collapsed along a diagonal where that leaves its
+   * neighbours facing right (quadcover::removeTurnedQuads; also after the quads are put onto the
+   * source). InvertedQuads and TurnedQuads report how many there were and are,
+   * RemovedTurnedQuads how many were removed so. */
   vtkSetMacro(RepairInvertedQuads, bool);
   vtkGetMacro(RepairInvertedQuads, bool);
   vtkBooleanMacro(RepairInvertedQuads, bool);
