@@ -108,6 +108,25 @@ std::vector<int> bad(const SurfaceLocator& surface, const QuadMesh& q)
   return list;
 }
 
+void expectSameTopology(const QuadMesh& before, const QuadMesh& after);
+
+/// removeTurnedQuads on q's one bad quad `which`: it mends it with `ears` ears and `collapsed`
+/// collapses, leaving `quads` quads on `points` points, none bad, the topology q had.
+void expectMended(const SurfaceLocator& surface, QuadMesh& q, int which, int ears, int collapsed,
+  int quads, int points)
+{
+  const std::vector<int> turned = bad(surface, q);
+  ASSERT_EQ(turned, std::vector<int>{ which }) << "the test needs one quad turned over";
+  const QuadMesh before = q;
+  const QuadCollapseResult r = removeTurnedQuads(surface, turned, q);
+  EXPECT_EQ(r.ears, ears);
+  EXPECT_EQ(r.collapsed, collapsed);
+  EXPECT_EQ(q.Q.rows(), quads);
+  EXPECT_EQ(q.V.rows(), points);
+  EXPECT_TRUE(bad(surface, q).empty());
+  expectSameTopology(before, q);
+}
+
 void expectSameTopology(const QuadMesh& before, const QuadMesh& after)
 {
   const MeshTopology was = quadTopology(before), is = quadTopology(after);
@@ -129,16 +148,7 @@ TEST(QuadCollapse, CollapsesAQuadTurnedOverAlongItsDiagonal)
   // -z, its neighbours stay convex
   q.V.row(6) << 1.6, 1.6, 0.0;
   q.V.row(12) << 1.4, 1.4, 0.0;
-  const std::vector<int> turned = bad(surface, q);
-  ASSERT_EQ(turned, std::vector<int>{ 5 }) << "the test needs one quad turned over";
-  const QuadMesh before = q;
-  const QuadCollapseResult r = removeTurnedQuads(surface, turned, q);
-  EXPECT_EQ(r.ears, 0);
-  EXPECT_EQ(r.collapsed, 1);
-  EXPECT_EQ(q.Q.rows(), 15);
-  EXPECT_EQ(q.V.rows(), 24);
-  EXPECT_TRUE(bad(surface, q).empty());
-  expectSameTopology(before, q);
+  expectMended(surface, q, 5, 0, 1, 15, 24);
 }
 
 TEST(QuadCollapse, RemovesAnEarTurnedOver)
@@ -149,16 +159,7 @@ TEST(QuadCollapse, RemovesAnEarTurnedOver)
   QuadMesh q = quadMesh(surface,
     { { 0, 0 }, { 1, 0 }, { 2, 0 }, { 0, 1 }, { 1, 1 }, { 2, 1 }, { 1.6, 0.1 }, { 1.6, 0.9 } },
     { { 0, 1, 4, 3 }, { 1, 2, 5, 4 }, { 5, 2, 6, 7 } });
-  const std::vector<int> turned = bad(surface, q);
-  ASSERT_EQ(turned, std::vector<int>{ 2 }) << "the test needs the ear turned over";
-  const QuadMesh before = q;
-  const QuadCollapseResult r = removeTurnedQuads(surface, turned, q);
-  EXPECT_EQ(r.ears, 1);
-  EXPECT_EQ(r.collapsed, 0);
-  EXPECT_EQ(q.Q.rows(), 2);
-  EXPECT_EQ(q.V.rows(), 6);
-  EXPECT_TRUE(bad(surface, q).empty());
-  expectSameTopology(before, q);
+  expectMended(surface, q, 2, 1, 0, 2, 6);
 }
 
 TEST(QuadCollapse, LeavesAQuadNoChangeMends)
