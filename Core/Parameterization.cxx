@@ -628,18 +628,25 @@ constexpr int JoinedLoopTries = 2;
 /// The finest grid between joined loops, over the grid edge (as around a thin strip by default).
 constexpr double JoinedLoopMaximumRefinement = 8.0;
 
+/// A map that keeps more defects than this is beyond what a finer grid between two loops mends:
+/// over the robustness corpus at 1,000, 3,000 and 6,500 quads the maps whose quads this refinement
+/// kept had at most 16 defects, and the trials on maps of 300 and more (the noise isosurface at
+/// 1,000 and 3,000 quads) cost 16 and 24 s, never kept (Benchmarks/README.md "2026-12-07 (5)").
+constexpr std::size_t JoinedLoopMaximumDefects = 64;
+
 /// Where the map's quads join two boundary loops into one (the strip between two holes less than
 /// a grid edge or two wide, cut), or cut off a tongue between two stretches of one loop
 /// (pointsBetweenJoinedLoops), the grid defectGridRefinement times finer between them: the map made
 /// again (as refineAroundDefects does) and kept when its quads keep the surface's topology
-/// (whatever its defects: the topology first, as mapRank ranks maps).
+/// (whatever its defects: the topology first, as mapRank ranks maps). Not on a map of more than
+/// JoinedLoopMaximumDefects defects.
 void refineBetweenJoinedLoops(const Inputs& in, const Field& field, SeamlessSystem& sys,
   const HessianFactor& factor, bool greedy, Eigen::VectorXd& x, Defects& defects,
   Parameterization& out, const Progress& progress)
 {
   const double finer = in.options.defectGridRefinement;
   if (in.topo.boundaryLoops.empty() || !in.options.pureQuads || !(finer > 1) ||
-    repairBudget(in, out, 1.0) <= 0)
+    defects.count() > JoinedLoopMaximumDefects || repairBudget(in, out, 1.0) <= 0)
   {
     return;
   }

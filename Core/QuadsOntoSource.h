@@ -22,7 +22,8 @@ namespace quadcover
  * (V, F) (the facing's cosine and the scaled Jacobian, the smaller), counted in r.collapse; the
  * quality figures are then measured again. (V, F)'s triangles are measured by their normals
  * turned as the working surface faces beside them: a raw input may have triangles the repair
- * turned over.
+ * turned over. The points the collapses move or merge get the triangles of (V, F) they lie in; the
+ * others keep their triangles of the working surface.
  */
 void putQuadsOnto(QuadMeshResult& r, const Eigen::MatrixX3d& workV, const Eigen::MatrixX3i& workF,
   const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F);
