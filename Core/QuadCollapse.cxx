@@ -58,8 +58,8 @@ public:
     return true;
   }
 
-  /// Collapses quad q along the diagonal and to the point that leave its neighbours' worst
-  /// (quadWorstOf) best, when that is above 0. @return whether it was collapsed
+  /// Collapses quad q along the diagonal and to the point that leave its neighbours' worst (the
+  /// judge's) best, when that is above 0. @return whether it was collapsed
   bool collapse(int q)
   {
     Choice best;
@@ -224,7 +224,7 @@ private:
   }
 
   /// Quad q's corner `gone` put onto `keep` in its other quads and keep moved to `place`, with q
-  /// left out; the worst (quadWorstOf) of keep's quads then, everything put back.
+  /// left out; the worst (the judge's) of keep's quads then, everything put back.
   double tryMerge(int q, int keep, int gone, const Place& place)
   {
     const std::vector<std::pair<int, Eigen::Vector4i>> saved = renumber(q, gone, keep);
