@@ -127,16 +127,17 @@ QuadMeshResult buildQuadMesh(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& 
   const bool components = topo.numComponents() > 1;
   r.turnedExtracted =
     static_cast<int>(turned + (components ? quadsToLift(surface, r.mesh).size() : 0));
+  // the quads facing against the surface or turned inside out, in index order
+  auto bad = [&](const QuadMesh& m) {
+    std::vector<int> list = facings.turned(m), inverted = invertedQuads(m.V, m.Q);
+    list.insert(list.end(), inverted.begin(), inverted.end());
+    std::sort(list.begin(), list.end());
+    list.erase(std::unique(list.begin(), list.end()), list.end());
+    return list;
+  };
   if (options.repairInvertedQuads && turned > 0)
   {
-    // quads facing against the surface (or turned inside out): their neighbourhoods relaxed
-    auto bad = [&](const QuadMesh& m) {
-      std::vector<int> list = facings.turned(m), inverted = invertedQuads(m.V, m.Q);
-      list.insert(list.end(), inverted.begin(), inverted.end());
-      std::sort(list.begin(), list.end());
-      list.erase(std::unique(list.begin(), list.end()), list.end());
-      return list;
-    };
+    // their neighbourhoods relaxed
     repairQuads(V, F, topo, r.mesh, bad, 2, 10, 3, progress.part(0.7, 0.73));
   }
   progress.report(0.75);
@@ -182,11 +183,7 @@ QuadMeshResult buildQuadMesh(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& 
   {
     // what no move of the corners mended (the tip of a tube thinner than the quads, a quad
     // squeezed between two others): a change of the connectivity
-    std::vector<int> bad = facings.turned(r.mesh), inverted = invertedQuads(r.mesh.V, r.mesh.Q);
-    bad.insert(bad.end(), inverted.begin(), inverted.end());
-    std::sort(bad.begin(), bad.end());
-    bad.erase(std::unique(bad.begin(), bad.end()), bad.end());
-    r.collapse = removeTurnedQuads(surface, bad, r.mesh);
+    r.collapse = removeTurnedQuads(surface, bad(r.mesh), r.mesh);
   }
   // the quads whose centre lies nearer another component's sheet, the last move: the
   // relaxation's projections would put their corners back onto the surface (one more search a
