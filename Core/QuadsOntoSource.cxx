@@ -88,7 +88,7 @@ void forEach(int n, Body&& body)
 }
 
 void putQuadsOnto(QuadMeshResult& r, const Eigen::MatrixX3d& workV, const Eigen::MatrixX3i& workF,
-  const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F)
+  const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F, bool removeTurned)
 {
   QuadMesh& quads = r.mesh;
   const int nQ = static_cast<int>(quads.Q.rows());
@@ -146,7 +146,7 @@ void putQuadsOnto(QuadMeshResult& r, const Eigen::MatrixX3d& workV, const Eigen:
   // quads that face against (V, F) or are inside out as they are: a thin part whose working
   // surface lies farther from its other side than the quads bulge
   std::vector<int> bad;
-  for (int q = 0; q < nQ; ++q)
+  for (int q = 0; removeTurned && q < nQ; ++q)
   {
     if (!(cosine[q] > 0.0) || !(quadScaledJacobian(quads.V, quads.Q, q) > 0.0))
     {

@@ -18,7 +18,8 @@ namespace quadcover
  * (V, F) closest to its centre where it faced the one closest before go back where they were,
  * until none does. The quads that then face against (V, F) or are inside out (a thin part whose
  * working surface lies farther from its other side than the quads bulge: a quad facing the
- * working surface can face the far side of the part) go to removeTurnedQuads, measured against
+ * working surface can face the far side of the part) go to removeTurnedQuads when removeTurned
+ * is set (QuadMeshOptions::repairInvertedQuads), measured against
  * (V, F) (the facing's cosine and the scaled Jacobian, the smaller), counted in r.collapse; the
  * quality figures are then measured again. (V, F)'s triangles are measured by their normals
  * turned as the working surface faces beside them: a raw input may have triangles the repair
@@ -26,8 +27,7 @@ namespace quadcover
  * others keep their triangles of the working surface.
  */
 void putQuadsOnto(QuadMeshResult& r, const Eigen::MatrixX3d& workV, const Eigen::MatrixX3i& workF,
-  const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F);
-
+  const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F, bool removeTurned = true);
 }
 
 #endif

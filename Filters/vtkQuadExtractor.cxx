@@ -303,7 +303,7 @@ void vtkQuadExtractor::Execute(vtkQuadCoverSurface& in, vtkInformationVector* ou
   if (hasSource)
   {
     SourceSurface(vtkPolyData::SafeDownCast(this->GetInputDataObject(1, 0)), in, sourceV, sourceF);
-    quadcover::putQuadsOnto(r, in.V, in.F, sourceV, sourceF);
+    quadcover::putQuadsOnto(r, in.V, in.F, sourceV, sourceF, options.repairInvertedQuads);
   }
   vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
   WriteQuads(output, r, in);
