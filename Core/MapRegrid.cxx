@@ -67,7 +67,8 @@ std::size_t defectsBeyondFlat(
 constexpr double SpentTrianglesPerQuad = 10.0;
 
 /// The quads that map uv gives, with the connectivity the quad stage leaves them: cut out, their
-/// holes inside the surface filled, pieces of a quad or two hanging by a corner dropped, and
+/// holes inside the surface filled, pieces of a quad or two hanging by a corner and disks cut
+/// off lying against the rest dropped, and
 /// points where quads touch in several fans split (what the quad stage does besides moving
 /// vertices).
 QuadMesh patchedQuads(
@@ -77,6 +78,7 @@ QuadMesh patchedQuads(
     extractQuads(in.V, in.F, in.topo, cornerUVOf(uv, cornerSector), QuadExtractionOptions());
   patchQuadMesh(in.V, in.F, in.topo, quads);
   dropPinchedFragments(quads, in.topo.faceComponent, PinchedFragmentQuads);
+  dropPiecesAgainstRest(quads, in.topo.faceComponent, PieceAgainstRestReach);
   splitPinchedVertices(quads);
   return quads;
 }
@@ -255,8 +257,8 @@ std::vector<std::pair<int, int>> pairsAcrossLoops(
 }
 }
 
-std::vector<int> pointsBetweenJoinedLoops(
-  const Inputs& in, const Eigen::MatrixX2d& uv, const std::vector<int>& cornerSector, double reach)
+std::vector<int> pointsBetweenJoinedLoops(const Inputs& in, const Eigen::MatrixX2d& uv,
+  const std::vector<int>& cornerSector, double reach, bool everyPair)
 {
   std::vector<int> loopOf;
   const std::vector<std::pair<int, int>> pairs = pairsAcrossLoops(in, reach, loopOf);
@@ -274,8 +276,8 @@ std::vector<int> pointsBetweenJoinedLoops(
   std::vector<int> quadLoop = quadLoopOfEachLoop(in, quads, quadTopo, reach);
   // quads in more pieces than the surface: strips between loops, or necks between two stretches
   // of one loop, were cut through, and the loops may each still have one of their own: every
-  // loop counts as joined, to the others and to itself
-  const bool cut = quadTopo.numComponents() > in.topo.numComponents();
+  // loop counts as joined, to the others and to itself (and so when asked)
+  const bool cut = everyPair || quadTopo.numComponents() > in.topo.numComponents();
   if (cut)
   {
     quadLoop.assign(in.topo.boundaryLoops.size(), 0);

@@ -319,11 +319,11 @@ bool keepsTopology(
 /// of a point of another loop joined to the same. Each loop belongs to the quads' loop nearest to
 /// the most of its points (within reach); where the quads fall into more pieces than the
 /// surface (strips between loops, or the neck of a tongue between two stretches of one loop, cut
-/// through), every loop counts as joined, to the others and to itself: then two points of one
-/// loop count too when the loop between them is more than twice the reach long either way round.
-/// Empty when no loops were joined.
-std::vector<int> pointsBetweenJoinedLoops(
-  const Inputs& in, const Eigen::MatrixX2d& uv, const std::vector<int>& cornerSector, double reach);
+/// through), or when `everyPair`, every loop counts as joined, to the others and to itself: then
+/// two points of one loop count too when the loop between them is more than twice the reach long
+/// either way round. Empty when no loops were joined.
+std::vector<int> pointsBetweenJoinedLoops(const Inputs& in, const Eigen::MatrixX2d& uv,
+  const std::vector<int>& cornerSector, double reach, bool everyPair = false);
 
 /// When the repaired map x still has defects, or its quads (cut out and patched as the quad stage
 /// does) would not have the surface's topology: rounds the continuous minimizer `continuous` at
@@ -340,6 +340,51 @@ std::vector<int> pointsBetweenJoinedLoops(
 bool regridDefectiveMap(const Inputs& in, const Field& field, SeamlessSystem& sys,
   const HessianFactor& factor, const Eigen::VectorXd& continuous, bool greedy, Eigen::VectorXd& x,
   Defects& defects, Parameterization& out, const Progress& progress);
+
+/// For ParameterizationOptions::minimumQuadsPerSingularity: the grid made finer (refineGrid)
+/// where the map would cover fewer unit cells (countedCells) than that many per branch point of
+/// its cut surface (out.branchPoints: the cone pairs' and the moved ones included). (Folds of the
+/// continuous map cancel area: the grid can come out finer than it must.)
+void limitEdgeLengthBySingularities(
+  const Inputs& in, SeamlessSystem& sys, Eigen::VectorXd& x, Parameterization& out);
+
+/// The adaptive grid's scale (curvatureGridScale: the grid edge about edgeOverRadius times the
+/// radius of curvature, at most 8 times finer, creases left out), bounded to at most
+/// AdaptiveMaximumGrowth times the uniform grid's cells; empty where the grid stays uniform.
+Eigen::VectorXd adaptiveGridScale(
+  const Inputs& in, const std::vector<char>& creases, double edgeLength, double edgeOverRadius);
+
+/// Where the repaired map keeps defects, the adaptive grid (curvatureGridScale with
+/// ParameterizationOptions::defectAdaptiveCurvature, creases left out, finer still where the grid
+/// already was): the map made again on it, its edge length corrected so that the quads count as
+/// with adaptiveCurvature, kept when it has fewer defects.
+void adaptAroundThinParts(const Inputs& in, const std::vector<char>& creases, const Field& field,
+  SeamlessSystem& sys, const HessianFactor& factor, bool greedy, Eigen::VectorXd& x,
+  Defects& defects, Parameterization& out, const Progress& progress);
+
+/// Where the repaired map x keeps defects, the grid ParameterizationOptions::defectGridRefinement
+/// times finer around them (growing back by a quarter of the distance walked, as around thin
+/// strips): the continuous map solved again with the same factor (only the right-hand side
+/// changes), rounded and repaired; kept when it has fewer defects (flipped triangles and points
+/// wound the wrong way), and then counted in out.finerGridTriangles.
+void refineAroundDefects(const Inputs& in, const Field& field, SeamlessSystem& sys,
+  const HessianFactor& factor, bool greedy, Eigen::VectorXd& x, Defects& defects,
+  Parameterization& out, const Progress& progress);
+
+/// Where the map's quads join two boundary loops into one (the strip between two holes less than
+/// a grid edge or two wide, cut), or cut off a tongue between two stretches of one loop
+/// (pointsBetweenJoinedLoops), the grid defectGridRefinement times finer between them, then its
+/// square: the map made again (as refineAroundDefects does) and kept when its quads keep the
+/// surface's topology (whatever its defects: the topology first, as mapRank ranks maps). When
+/// neither is kept, the grid defectGridRefinement times finer between every two loops within the
+/// reach, joined or not: a map made on it is more than a local change, and the joins of the next
+/// map are not always where the first map's were (the truck's body alone, at the truck's grid edge
+/// for 6,500 quads, kept three pairs of loops joined on both finer grids around them, and none on
+/// the grid finer around all its loops). Not on a map of more than JoinedLoopMaximumDefects
+/// defects.
+void refineBetweenJoinedLoops(const Inputs& in, const Field& field, SeamlessSystem& sys,
+  const HessianFactor& factor, bool greedy, Eigen::VectorXd& x, Defects& defects,
+  Parameterization& out, const Progress& progress);
 }
 }
 

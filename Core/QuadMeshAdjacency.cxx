@@ -1,5 +1,6 @@
 // QuadMeshAdjacency.cxx: vertexQuads, quadTopology, quadMeshBoundary, onSurfaceBoundary,
-// verticesNear, splitPinchedVertices, removeUnusedVertices, dropPinchedFragments.
+// verticesNear, splitPinchedVertices, removeUnusedVertices, dropPinchedFragments,
+// dropPiecesAgainstRest.
 #include "QuadMeshAdjacency.h"
 
 #include "SurfaceLocator.h"
@@ -384,6 +385,154 @@ int dropPinchedFragments(QuadMesh& mesh, const Eigen::VectorXi& faceComponent, i
   for (int i = 0; i < nQ; ++i)
   {
     remove[i] = fragment[piece[i]];
+    removed += remove[i];
+  }
+  if (removed > 0)
+  {
+    removeQuads(mesh, remove);
+  }
+  return removed;
+}
+
+namespace
+{
+/// Per piece (piecesThroughEdges' roots) its Euler characteristic: points - edges + quads.
+std::vector<int> pieceEulerCharacteristics(const QuadMesh& mesh, const std::vector<int>& piece)
+{
+  const int nQ = static_cast<int>(mesh.Q.rows());
+  std::vector<int> chi(nQ, 0);
+  std::vector<std::pair<int, int>> points; // (point, piece)
+  std::vector<std::array<int, 3>> edges;   // (lower end, upper end, piece)
+  for (int i = 0; i < nQ; ++i)
+  {
+    ++chi[piece[i]];
+    for (int k = 0; k < 4; ++k)
+    {
+      const int a = mesh.Q(i, k), b = mesh.Q(i, (k + 1) % 4);
+      points.emplace_back(a, piece[i]);
+      edges.push_back({ std::min(a, b), std::max(a, b), piece[i] });
+    }
+  }
+  std::sort(points.begin(), points.end());
+  std::sort(edges.begin(), edges.end());
+  for (std::size_t j = 0; j < points.size(); ++j)
+  {
+    chi[points[j].second] += (j == 0 || points[j] != points[j - 1]);
+  }
+  for (std::size_t j = 0; j < edges.size(); ++j)
+  {
+    chi[edges[j][2]] -= (j == 0 || edges[j] != edges[j - 1]);
+  }
+  return chi;
+}
+
+/// The median length of the edges of the quads of `piece` (each quad's four).
+double medianEdgeOf(const QuadMesh& mesh, const std::vector<int>& piece, int which)
+{
+  std::vector<double> lengths;
+  for (int i = 0; i < static_cast<int>(mesh.Q.rows()); ++i)
+  {
+    for (int k = 0; piece[i] == which && k < 4; ++k)
+    {
+      lengths.push_back((mesh.V.row(mesh.Q(i, k)) - mesh.V.row(mesh.Q(i, (k + 1) % 4))).norm());
+    }
+  }
+  if (lengths.empty())
+  {
+    return 0.0;
+  }
+  const auto middle = lengths.begin() + static_cast<std::ptrdiff_t>(lengths.size() / 2);
+  std::nth_element(lengths.begin(), middle, lengths.end());
+  return *middle;
+}
+
+/// The quads of piece `which`, each as two triangles.
+Eigen::MatrixX3i trianglesOfPiece(const QuadMesh& mesh, const std::vector<int>& piece, int which)
+{
+  const int nQ = static_cast<int>(mesh.Q.rows());
+  Eigen::MatrixX3i F(2 * std::count(piece.begin(), piece.end(), which), 3);
+  for (int i = 0, t = 0; i < nQ; ++i)
+  {
+    if (piece[i] == which)
+    {
+      F.row(t++) << mesh.Q(i, 0), mesh.Q(i, 1), mesh.Q(i, 2);
+      F.row(t++) << mesh.Q(i, 0), mesh.Q(i, 2), mesh.Q(i, 3);
+    }
+  }
+  return F;
+}
+
+/// Whether every corner of the quads of piece `which` lies within `reach` of `rest`.
+bool pieceWithin(const QuadMesh& mesh, const std::vector<int>& piece, int which,
+  const SurfaceLocator& rest, double reach)
+{
+  for (int i = 0; i < static_cast<int>(mesh.Q.rows()); ++i)
+  {
+    for (int k = 0; piece[i] == which && k < 4; ++k)
+    {
+      if (!(rest.closest(mesh.V.row(mesh.Q(i, k)).transpose()).distance <= reach))
+      {
+        return false;
+      }
+    }
+  }
+  return true;
+}
+}
+
+int dropPiecesAgainstRest(QuadMesh& mesh, const Eigen::VectorXi& faceComponent, double reach)
+{
+  const int nQ = static_cast<int>(mesh.Q.rows());
+  if (nQ == 0 || !(reach > 0) || mesh.quadTriangle.size() != static_cast<std::size_t>(nQ))
+  {
+    return 0;
+  }
+  const std::vector<int> piece = piecesThroughEdges(mesh);
+  std::vector<int> size(nQ, 0);
+  std::map<int, std::vector<int>> pieces; // component -> its pieces (roots), in index order
+  for (int i = 0; i < nQ; ++i)
+  {
+    ++size[piece[i]];
+    const int t = mesh.quadTriangle[i];
+    if (piece[i] == i && t >= 0 && t < faceComponent.size())
+    {
+      pieces[faceComponent[t]].push_back(i);
+    }
+  }
+  std::vector<int> chi;
+  std::vector<char> remove(nQ, 0);
+  for (const auto& [component, roots] : pieces)
+  {
+    if (roots.size() < 2)
+    {
+      continue;
+    }
+    if (chi.empty())
+    {
+      chi = pieceEulerCharacteristics(mesh, piece);
+    }
+    // the largest piece (the first of equal size), and its unit of length
+    const int rest = *std::max_element(
+      roots.begin(), roots.end(), [&](int a, int b) { return size[a] < size[b]; });
+    if (std::none_of(roots.begin(), roots.end(), [&](int p) { return p != rest && chi[p] == 1; }))
+    {
+      continue;
+    }
+    const double within = reach * medianEdgeOf(mesh, piece, rest);
+    const Eigen::MatrixX3i restTriangles = trianglesOfPiece(mesh, piece, rest);
+    const SurfaceLocator restLocator(mesh.V, restTriangles);
+    for (const int p : roots)
+    {
+      if (p != rest && chi[p] == 1 && pieceWithin(mesh, piece, p, restLocator, within))
+      {
+        remove[p] = 1;
+      }
+    }
+  }
+  int removed = 0;
+  for (int i = 0; i < nQ; ++i)
+  {
+    remove[i] = remove[piece[i]];
     removed += remove[i];
   }
   if (removed > 0)

@@ -77,6 +77,20 @@ void removeUnusedVertices(QuadMesh& mesh);
  * @return the quads removed
  */
 int dropPinchedFragments(QuadMesh& mesh, const Eigen::VectorXi& faceComponent, int largest);
+
+/**
+ * Removes the pieces of a component's quads (quads joined through edges) that are disks lying
+ * against the rest: a piece other than the largest on its component of the surface (by
+ * quadTriangle), of Euler characteristic 1, whose every corner lies within `reach` times the
+ * largest piece's median edge of that piece's quads. Such a piece is a tongue of the surface
+ * narrower than the grid, lying on or beside the rest, that the map cut off at its neck: a
+ * strip 0.001 wide in a CAD part's seam, where the quads are 0.033 (the truck's body). Without
+ * it the component's quads keep the surface's topology (a disk cut off at a neck takes none of
+ * it along), and the surface lost lies within the reach of the quads. A disk that sticks out, or
+ * a larger piece, is kept. The vertices no quad uses any more are removed.
+ * @return the quads removed
+ */
+int dropPiecesAgainstRest(QuadMesh& mesh, const Eigen::VectorXi& faceComponent, double reach);
 }
 
 #endif

@@ -179,6 +179,7 @@ QuadMeshResult buildQuadMesh(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& 
     undoWrongMoves(facings, unrelaxed, r.mesh);
   }
   r.fragmentQuads = dropPinchedFragments(r.mesh, topo.faceComponent, PinchedFragmentQuads);
+  r.fragmentQuads += dropPiecesAgainstRest(r.mesh, topo.faceComponent, PieceAgainstRestReach);
   if (options.repairInvertedQuads)
   {
     // what no move of the corners mended (the tip of a tube thinner than the quads, a quad

@@ -55,6 +55,10 @@ struct QuadMeshOptions
 /// at a corner, at 1,000, 3,000 and 6,500 quads).
 constexpr int PinchedFragmentQuads = 2;
 
+/// How near the rest of its component's quads, in their median edges, a disk cut off them lies
+/// when the quad stage drops it (dropPiecesAgainstRest).
+constexpr double PieceAgainstRestReach = 0.25;
+
 struct QuadMeshResult
 {
   QuadMesh mesh;
@@ -67,7 +71,7 @@ struct QuadMeshResult
   int turnedExtracted = 0;   ///< turnedQuads as extracted (after the holes are filled)
   int turnedQuads = 0;       ///< turnedQuads of the final mesh
   int splitVertices = 0;     ///< copies splitPinchedVertices added
-  int fragmentQuads = 0;     ///< quads dropPinchedFragments removed
+  int fragmentQuads = 0;     ///< quads dropPinchedFragments and dropPiecesAgainstRest removed
   QuadCollapseResult collapse; ///< what removeTurnedQuads did
   int snappedVertices = 0;   ///< vertices snapToCreases moved onto a sharp edge, and
                              ///< straightenCreaseSteps beside one
@@ -85,7 +89,8 @@ struct QuadMeshResult
  * QuadRelaxOptions::unfold for the quads still inside out (kept when fewer stay so and none more
  * faces against the surface), relaxQuads with options.relaxationIterations sweeps
  * (QuadRelaxOptions::holdAcrossBends; the corners of a quad it made face against the surface or
- * turn inside out are put back), dropPinchedFragments (of at most 2 quads), removeTurnedQuads
+ * turn inside out are put back), dropPinchedFragments (of at most 2 quads) and
+ * dropPiecesAgainstRest, removeTurnedQuads
  * (with options.repairInvertedQuads) of the quads still facing against the surface or inside out,
  * liftOffOtherComponents, splitPinchedVertices, then measureQuads. The quads' facing is measured
  * by quadFacing with the surface's triangles labelled by their components.

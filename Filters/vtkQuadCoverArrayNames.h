@@ -213,7 +213,8 @@ constexpr const char* TurnedQuads = "TurnedQuads";
 /// vertices; 0 on a valid remesh.
 constexpr const char* SplitQuadVertices = "SplitQuadVertices";
 /// field, 1 x int: quads removed as fragments of a component's quads (a quad or two that touched
-/// the rest of their component's quads, four times as many or more, at a corner only).
+/// the rest of their component's quads, four times as many or more, at a corner only; or a disk
+/// cut off the component's largest piece, every corner within a quarter of its median edge).
 constexpr const char* FragmentQuads = "FragmentQuads";
 /// field, 1 x int, 2 tuples: quads facing against the input or turned inside out after the
 /// vertex moves that were removed as ears (three of their edges on the boundary) and that were

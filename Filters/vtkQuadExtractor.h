@@ -27,13 +27,12 @@
  * RepairInvertedQuads), DroppedCells, FilledHoles, TurnedQuads (before and after it) and
  * SplitQuadVertices (copies of a vertex where separate fans of quads touched: the output is
  * manifold at its vertices), FragmentQuads (quads removed that hung off their component's
- * quads by a corner), SnappedVertices (quad vertices moved onto creases, or beside one where
- * a quad lay folded across it; SnapToCreases), LiftedVertices (quad vertices lifted off the
- * input where a quad's centre lay nearer another component's surface than its own),
- * RemovedTurnedQuads (quads facing against the input or inside out that were cut off as ears or
- * collapsed along a diagonal; RepairInvertedQuads) and
- * EmptyComponents (components of the input on which no quad lies, with a warning; 0 on a valid
- * remesh).
+ * quads by a corner, or lay against them as a disk cut off), SnappedVertices (quad vertices moved
+ * onto creases, or beside one where a quad lay folded across it; SnapToCreases), LiftedVertices
+ * (quad vertices lifted off the input where a quad's centre lay nearer another component's surface
+ * than its own), RemovedTurnedQuads (quads facing against the input or inside out that were cut off
+ * as ears or collapsed along a diagonal; RepairInvertedQuads) and EmptyComponents (components of
+ * the input on which no quad lies, with a warning; 0 on a valid remesh).
  * @sa vtkQuadCoverSolver
  */
 #ifndef vtkQuadExtractor_h

@@ -389,3 +389,78 @@ TEST(QuadMeshAdjacency, DropsQuadsHangingByACornerOffTheirComponent)
   EXPECT_TRUE(bare.vertexTriangle.empty());
   EXPECT_TRUE(bare.vertexPoint.empty());
 }
+
+namespace
+{
+/// Adds a block of nx x ny unit quads at (x0, y0, z) to q (counterclockwise seen from +z), on
+/// triangle `triangle`, leaving out the quads (i, j) that `skip` says.
+template<typename Skip>
+void addBlock(QuadMesh& q, int nx, int ny, double x0, double y0, double z, int triangle, Skip skip)
+{
+  const int base = static_cast<int>(q.V.rows());
+  q.V.conservativeResize(base + (nx + 1) * (ny + 1), 3);
+  for (int j = 0; j <= ny; ++j)
+  {
+    for (int i = 0; i <= nx; ++i)
+    {
+      q.V.row(base + j * (nx + 1) + i) << x0 + i, y0 + j, z;
+    }
+  }
+  for (int j = 0; j < ny; ++j)
+  {
+    for (int i = 0; i < nx; ++i)
+    {
+      if (skip(i, j))
+      {
+        continue;
+      }
+      const int p = base + j * (nx + 1) + i;
+      q.Q.conservativeResize(q.Q.rows() + 1, 4);
+      q.Q.row(q.Q.rows() - 1) << p, p + 1, p + nx + 2, p + nx + 1;
+      q.quadTriangle.push_back(triangle);
+    }
+  }
+}
+}
+
+TEST(QuadMeshAdjacency, DropsDisksCutOffLyingAgainstTheRest)
+{
+  // component 0: a 6 x 4 block of unit quads at z = 0 (the rest); a strip of 3 quads 0.1 above
+  // it (a tongue cut off, lying on the rest: dropped); the same strip 0.5 above (sticking out:
+  // kept); a ring of 8 quads around a hole 0.1 above (not a disk: kept). Component 1: a strip 0.1
+  // above, its component's only piece (kept).
+  QuadMesh q;
+  q.V.resize(0, 3);
+  q.Q.resize(0, 4);
+  auto none = [](int, int) { return false; };
+  addBlock(q, 6, 4, 0.0, 0.0, 0.0, 0, none);
+  addBlock(q, 3, 1, 0.5, 0.5, 0.1, 0, none);
+  addBlock(q, 3, 1, 0.5, 2.5, 0.5, 0, none);
+  addBlock(q, 3, 3, 2.5, 0.5, 0.1, 0, [](int i, int j) { return i == 1 && j == 1; });
+  addBlock(q, 3, 1, 0.5, 1.5, 0.1, 1, none);
+  const Eigen::VectorXi component = (Eigen::VectorXi(2) << 0, 1).finished();
+  ASSERT_EQ(q.Q.rows(), 24 + 3 + 3 + 8 + 3);
+  QuadMesh dropped = q;
+  EXPECT_EQ(dropPiecesAgainstRest(dropped, component, 0.25), 3);
+  ASSERT_EQ(dropped.Q.rows(), q.Q.rows() - 3);
+  EXPECT_EQ(dropped.V.rows(), q.V.rows() - 8);
+  for (Eigen::Index i = 0; i < dropped.Q.rows(); ++i)
+  {
+    const int was = i < 24 ? static_cast<int>(i) : static_cast<int>(i) + 3;
+    for (int k = 0; k < 4; ++k)
+    {
+      EXPECT_TRUE(dropped.V.row(dropped.Q(i, k)) == q.V.row(q.Q(was, k))) << i << " " << k;
+    }
+    EXPECT_EQ(dropped.quadTriangle[i], q.quadTriangle[was]);
+  }
+  // nothing more to drop; a reach of 0.05 edges drops nothing, one of 0.6 the far strip too
+  EXPECT_EQ(dropPiecesAgainstRest(dropped, component, 0.25), 0);
+  QuadMesh nearer = q;
+  EXPECT_EQ(dropPiecesAgainstRest(nearer, component, 0.05), 0);
+  QuadMesh farther = q;
+  EXPECT_EQ(dropPiecesAgainstRest(farther, component, 0.6), 6);
+  // without a triangle a quad the pieces' components are unknown: nothing is dropped
+  QuadMesh bare = q;
+  bare.quadTriangle.clear();
+  EXPECT_EQ(dropPiecesAgainstRest(bare, component, 0.25), 0);
+}
