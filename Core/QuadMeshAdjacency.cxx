@@ -323,6 +323,24 @@ void removeQuads(QuadMesh& mesh, const std::vector<char>& remove)
   mesh.quadTriangle.resize(perQuad ? kept : 0);
   removeUnusedVertices(mesh);
 }
+
+/// The mesh without the pieces marked (marked: per piece root, piecesThroughEdges'); returns the
+/// quads removed.
+int removePieces(QuadMesh& mesh, const std::vector<int>& piece, const std::vector<char>& marked)
+{
+  std::vector<char> remove(piece.size(), 0);
+  int removed = 0;
+  for (std::size_t i = 0; i < piece.size(); ++i)
+  {
+    remove[i] = marked[piece[i]];
+    removed += remove[i];
+  }
+  if (removed > 0)
+  {
+    removeQuads(mesh, remove);
+  }
+  return removed;
+}
 }
 
 int dropPinchedFragments(QuadMesh& mesh, const Eigen::VectorXi& faceComponent, int largest)
@@ -380,18 +398,7 @@ int dropPinchedFragments(QuadMesh& mesh, const Eigen::VectorXi& faceComponent, i
       fragment[i] = most[{ findRoot(group, i), component[i] }] >= 4 * size[i];
     }
   }
-  std::vector<char> remove(nQ, 0);
-  int removed = 0;
-  for (int i = 0; i < nQ; ++i)
-  {
-    remove[i] = fragment[piece[i]];
-    removed += remove[i];
-  }
-  if (removed > 0)
-  {
-    removeQuads(mesh, remove);
-  }
-  return removed;
+  return removePieces(mesh, piece, fragment);
 }
 
 namespace
@@ -529,16 +536,6 @@ int dropPiecesAgainstRest(QuadMesh& mesh, const Eigen::VectorXi& faceComponent, 
       }
     }
   }
-  int removed = 0;
-  for (int i = 0; i < nQ; ++i)
-  {
-    remove[i] = remove[piece[i]];
-    removed += remove[i];
-  }
-  if (removed > 0)
-  {
-    removeQuads(mesh, remove);
-  }
-  return removed;
+  return removePieces(mesh, piece, remove);
 }
 }
