@@ -3,10 +3,12 @@
 // (each trial kept only when it is better).
 #include "ParameterizationSteps.h"
 
+#include "NearbyPoints.h"
 #include "ThinStrips.h"
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <utility>
 
 namespace quadcover
@@ -147,18 +149,86 @@ Eigen::VectorXd finerAround(const Inputs& in, const SeamlessSystem& sys, double 
   return newScale;
 }
 
+/// Per point of the surface, its distance to the nearest boundary point of another boundary loop
+/// within `reach` (infinity for the others).
+std::vector<double> gapsToOtherLoops(const Inputs& in, double reach)
+{
+  std::vector<Eigen::Vector3d> where;
+  std::vector<int> point, loop;
+  for (std::size_t l = 0; l < in.topo.boundaryLoops.size(); ++l)
+  {
+    for (const int p : in.topo.boundaryLoops[l])
+    {
+      where.push_back(in.V.row(p).transpose());
+      point.push_back(p);
+      loop.push_back(static_cast<int>(l));
+    }
+  }
+  std::vector<double> gap(
+    static_cast<std::size_t>(in.numVertices()), std::numeric_limits<double>::infinity());
+  const std::vector<std::vector<int>> near = nearbyPoints(where, reach);
+  for (std::size_t i = 0; i < where.size(); ++i)
+  {
+    for (const int j : near[i])
+    {
+      if (loop[i] != loop[j])
+      {
+        const double d = (where[i] - where[j]).norm();
+        gap[point[i]] = std::min(gap[point[i]], d);
+        gap[point[j]] = std::min(gap[point[j]], d);
+      }
+    }
+  }
+  return gap;
+}
+
+/// sys's cell scale with a grid edge at each of `points` no longer than its gap to the nearest
+/// point of another boundary loop (gapsToOtherLoops within `reach`) over `cellsPerGap`, at most
+/// `maximumFiner` times finer than the grid there already is, growing back by a quarter of the
+/// distance walked (as finerAround).
+Eigen::VectorXd finerAtGaps(const Inputs& in, const SeamlessSystem& sys, double h,
+  const std::vector<int>& points, double reach, double cellsPerGap, double maximumFiner)
+{
+  const int nF = in.numFaces();
+  const Eigen::VectorXd oldScale =
+    sys.cellScale.size() > 0 ? sys.cellScale : Eigen::VectorXd::Ones(nF);
+  std::vector<double> local(static_cast<std::size_t>(in.numVertices()), 1.0);
+  for (int f = 0; f < nF; ++f)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      local[in.F(f, k)] = std::min(local[in.F(f, k)], oldScale[f]);
+    }
+  }
+  const std::vector<double> gap = gapsToOtherLoops(in, reach);
+  std::vector<double> size(static_cast<std::size_t>(in.numVertices()), h);
+  for (const int p : points)
+  {
+    const double wanted = std::max(gap[p] / cellsPerGap, h * local[p] / maximumFiner);
+    size[p] = std::min(h * local[p], wanted);
+  }
+  spreadGridSizes(in.V, in.topo, 0.25, size);
+  Eigen::VectorXd newScale = oldScale;
+  for (int f = 0; f < nF; ++f)
+  {
+    const double s = (size[in.F(f, 0)] + size[in.F(f, 1)] + size[in.F(f, 2)]) / (3 * h);
+    newScale[f] = std::min(oldScale[f], s);
+  }
+  return newScale;
+}
+
 /// The map made again on a grid `finer` times finer around `points` (finerAround, remapOnCells,
 /// with `budget`), kept in place of out when better(trial, its x, its defects) (keepTrialIf).
 /// Returns whether it was kept.
 template<typename Better>
-bool remapFinerAround(const Inputs& in, const Field& field, SeamlessSystem& sys,
-  const HessianFactor& factor, bool greedy, long long budget, double finer,
-  const std::vector<int>& points, Eigen::VectorXd& x, Defects& defects, Parameterization& out,
-  const Progress& progress, Better better)
+bool remapOnScale(const Inputs& in, const Field& field, SeamlessSystem& sys,
+  const HessianFactor& factor, bool greedy, long long budget, const Eigen::VectorXd& scale,
+  Eigen::VectorXd& x, Defects& defects, Parameterization& out, const Progress& progress,
+  Better better)
 {
   const double h = out.edgeLength;
   const SavedCells saved(sys);
-  setCellScale(finerAround(in, sys, h, finer, points), h, sys);
+  setCellScale(scale, h, sys);
   Eigen::VectorXd xt;
   Defects found;
   Parameterization trial =
@@ -166,6 +236,17 @@ bool remapFinerAround(const Inputs& in, const Field& field, SeamlessSystem& sys,
   const bool keep = better(trial, xt, found);
   keepTrialIf(keep, std::move(trial), std::move(xt), std::move(found), saved, sys, x, defects, out);
   return keep;
+}
+
+/// remapOnScale on a grid `finer` times finer around `points` (finerAround).
+template<typename Better>
+bool remapFinerAround(const Inputs& in, const Field& field, SeamlessSystem& sys,
+  const HessianFactor& factor, bool greedy, long long budget, double finer,
+  const std::vector<int>& points, Eigen::VectorXd& x, Defects& defects, Parameterization& out,
+  const Progress& progress, Better better)
+{
+  return remapOnScale(in, field, sys, factor, greedy, budget,
+    finerAround(in, sys, out.edgeLength, finer, points), x, defects, out, progress, better);
 }
 
 /// In grid edges, how near to another loop joined to the same quads' loop the points of a
@@ -178,6 +259,11 @@ constexpr int JoinedLoopTries = 2;
 
 /// The finest grid between joined loops, over the grid edge (as around a thin strip by default).
 constexpr double JoinedLoopMaximumRefinement = 8.0;
+
+/// How many grid cells the grid between every two loops puts across the gap between them, at
+/// most (refineBetweenJoinedLoops): with 2 the truck's body at 6,500 quads still joined two pairs
+/// of its loops, with 3 and 4 none (20,114 and 21,457 quads).
+constexpr double JoinedLoopCellsPerGap = 3.0;
 
 /// A map that keeps more defects than this is beyond what a finer grid between two loops mends:
 /// over the robustness corpus at 1,000, 3,000 and 6,500 quads the maps whose quads this refinement
@@ -248,11 +334,26 @@ void refineBetweenJoinedLoops(const Inputs& in, const Field& field, SeamlessSyst
   }
   const std::vector<int> all =
     pointsBetweenJoinedLoops(in, sys.uv(x), out.cornerSector, reach, true);
-  const long long budget = repairBudget(in, out, 1.0);
-  if (all.size() > points.size() && budget > 0)
+  if (all.size() <= points.size())
+  {
+    return;
+  }
+  // first a grid that puts JoinedLoopCellsPerGap cells across each gap between two loops, then
+  // one defectGridRefinement times finer around them all
+  long long budget = repairBudget(in, out, 1.0);
+  if (budget <= 0 ||
+    remapOnScale(in, field, sys, factor, greedy, budget,
+      finerAtGaps(
+        in, sys, out.edgeLength, all, reach, JoinedLoopCellsPerGap, JoinedLoopMaximumRefinement),
+      x, defects, out, halving(progress, JoinedLoopTries), whole))
+  {
+    return;
+  }
+  budget = repairBudget(in, out, 1.0);
+  if (budget > 0)
   {
     remapFinerAround(in, field, sys, factor, greedy, budget, finer, all, x, defects, out,
-      halving(progress, JoinedLoopTries), whole);
+      halving(progress, JoinedLoopTries + 1), whole);
   }
 }
 

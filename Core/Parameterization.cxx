@@ -594,9 +594,11 @@ Parameterization computeParameterization(const Eigen::MatrixX3d& V, const Eigen:
   }
   Parameterization out = mapComponent(given, progress);
   // on a surface between two or more boundary loops, a map that keeps defects with cone pairs
-  // added is made again without them (nor the moves), and that one kept when it keeps fewer: a
-  // pair can turn the frames between the loops (Documentation/Algorithms.md). Elsewhere a second
-  // map would only cost time (armadillo, which keeps a few defects either way: 3.0 -> 4.5 s).
+  // added is made again without them (nor the moves), and that one kept when it is better: its
+  // quads keep the surface's topology where the first map's do not, or neither or both do and it
+  // keeps fewer defects (the topology first, as mapRank ranks maps). A pair can turn the frames
+  // between the loops (Documentation/Algorithms.md). Elsewhere a second map would only cost time
+  // (armadillo, which keeps a few defects either way: 3.0 -> 4.5 s).
   const bool betweenLoops = topo.numComponents() == 1 && topo.components[0].numBoundaryLoops >= 2;
   if (betweenLoops && defectsOf(out) > 0 && out.addedConePairs > 0)
   {
@@ -604,7 +606,10 @@ Parameterization computeParameterization(const Eigen::MatrixX3d& V, const Eigen:
     plainOptions.conePairGain = 0.0;
     const Inputs plainInputs{ V, F, topo, geometry, frameU, matching, plainOptions };
     Parameterization plain = mapComponent(plainInputs, progress.part(1.0, 1.0));
-    if (defectsOf(plain) < defectsOf(out))
+    const bool whole = !options.pureQuads || keepsTopology(given, out.sectorUV, out.cornerSector);
+    const bool plainWhole =
+      !options.pureQuads || keepsTopology(given, plain.sectorUV, plain.cornerSector);
+    if (plainWhole != whole ? plainWhole : defectsOf(plain) < defectsOf(out))
     {
       plain.droppedConePairs = out.addedConePairs;
       return plain;

@@ -376,12 +376,14 @@ void refineAroundDefects(const Inputs& in, const Field& field, SeamlessSystem& s
 /// (pointsBetweenJoinedLoops), the grid defectGridRefinement times finer between them, then its
 /// square: the map made again (as refineAroundDefects does) and kept when its quads keep the
 /// surface's topology (whatever its defects: the topology first, as mapRank ranks maps). When
-/// neither is kept, the grid defectGridRefinement times finer between every two loops within the
-/// reach, joined or not: a map made on it is more than a local change, and the joins of the next
-/// map are not always where the first map's were (the truck's body alone, at the truck's grid edge
-/// for 6,500 quads, kept three pairs of loops joined on both finer grids around them, and none on
-/// the grid finer around all its loops). Not on a map of more than JoinedLoopMaximumDefects
-/// defects.
+/// neither is kept, two grids between every two loops within the reach, joined or not: first one
+/// whose edge at each of their points is at most a third of its gap to the other loop (at most
+/// JoinedLoopMaximumRefinement times finer than the grid there), then one defectGridRefinement
+/// times finer around them all. A map made on such a grid is more than a local change, and the
+/// joins of the next map are not always where the first map's were (the truck's body alone, at
+/// grid edges near that of the truck at 6,500 quads, kept three pairs of loops joined on both
+/// finer grids around them; each of the two grids kept them apart at some of five grid edges, and
+/// one of them at all five). Not on a map of more than JoinedLoopMaximumDefects defects.
 void refineBetweenJoinedLoops(const Inputs& in, const Field& field, SeamlessSystem& sys,
   const HessianFactor& factor, bool greedy, Eigen::VectorXd& x, Defects& defects,
   Parameterization& out, const Progress& progress);
