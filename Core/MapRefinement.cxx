@@ -117,11 +117,12 @@ void keepFewerDefects(Parameterization&& trial, Eigen::VectorXd&& xt, Defects&& 
     fewer, std::move(trial), std::move(xt), std::move(found), saved, sys, x, defects, out);
 }
 
-/// sys's cell scale made `finer` times finer around `points` (each asks for its own grid, finer
-/// already around a thin strip, over finer), growing back by a quarter of the distance walked, as
-/// around thin strips.
-Eigen::VectorXd finerAround(const Inputs& in, const SeamlessSystem& sys, double h, double finer,
-  const std::vector<int>& points)
+/// sys's cell scale with the grid edge at each of `points` sizeAt(point, the scale of the grid
+/// there already is, its smallest over the point's triangles), growing back by a quarter of the
+/// distance walked, as around thin strips; never coarser than before.
+template<typename SizeAt>
+Eigen::VectorXd finerAt(const Inputs& in, const SeamlessSystem& sys, double h,
+  const std::vector<int>& points, SizeAt sizeAt)
 {
   const int nF = in.numFaces();
   const Eigen::VectorXd oldScale =
@@ -137,7 +138,7 @@ Eigen::VectorXd finerAround(const Inputs& in, const SeamlessSystem& sys, double 
   std::vector<double> size(static_cast<std::size_t>(in.numVertices()), h);
   for (const int p : points)
   {
-    size[p] = h * local[p] / finer;
+    size[p] = sizeAt(p, local[p]);
   }
   spreadGridSizes(in.V, in.topo, 0.25, size);
   Eigen::VectorXd newScale = oldScale;
@@ -147,6 +148,14 @@ Eigen::VectorXd finerAround(const Inputs& in, const SeamlessSystem& sys, double 
     newScale[f] = std::min(oldScale[f], s);
   }
   return newScale;
+}
+
+/// sys's cell scale made `finer` times finer around `points` (each asks for its own grid, finer
+/// already around a thin strip, over finer; finerAt).
+Eigen::VectorXd finerAround(const Inputs& in, const SeamlessSystem& sys, double h, double finer,
+  const std::vector<int>& points)
+{
+  return finerAt(in, sys, h, points, [&](int, double local) { return h * local / finer; });
 }
 
 /// Per point of the surface, its distance to the nearest boundary point of another boundary loop
@@ -184,37 +193,14 @@ std::vector<double> gapsToOtherLoops(const Inputs& in, double reach)
 
 /// sys's cell scale with a grid edge at each of `points` no longer than its gap to the nearest
 /// point of another boundary loop (gapsToOtherLoops within `reach`) over `cellsPerGap`, at most
-/// `maximumFiner` times finer than the grid there already is, growing back by a quarter of the
-/// distance walked (as finerAround).
+/// `maximumFiner` times finer than the grid there already is (finerAt).
 Eigen::VectorXd finerAtGaps(const Inputs& in, const SeamlessSystem& sys, double h,
   const std::vector<int>& points, double reach, double cellsPerGap, double maximumFiner)
 {
-  const int nF = in.numFaces();
-  const Eigen::VectorXd oldScale =
-    sys.cellScale.size() > 0 ? sys.cellScale : Eigen::VectorXd::Ones(nF);
-  std::vector<double> local(static_cast<std::size_t>(in.numVertices()), 1.0);
-  for (int f = 0; f < nF; ++f)
-  {
-    for (int k = 0; k < 3; ++k)
-    {
-      local[in.F(f, k)] = std::min(local[in.F(f, k)], oldScale[f]);
-    }
-  }
   const std::vector<double> gap = gapsToOtherLoops(in, reach);
-  std::vector<double> size(static_cast<std::size_t>(in.numVertices()), h);
-  for (const int p : points)
-  {
-    const double wanted = std::max(gap[p] / cellsPerGap, h * local[p] / maximumFiner);
-    size[p] = std::min(h * local[p], wanted);
-  }
-  spreadGridSizes(in.V, in.topo, 0.25, size);
-  Eigen::VectorXd newScale = oldScale;
-  for (int f = 0; f < nF; ++f)
-  {
-    const double s = (size[in.F(f, 0)] + size[in.F(f, 1)] + size[in.F(f, 2)]) / (3 * h);
-    newScale[f] = std::min(oldScale[f], s);
-  }
-  return newScale;
+  return finerAt(in, sys, h, points, [&](int p, double local) {
+    return std::min(h * local, std::max(gap[p] / cellsPerGap, h * local / maximumFiner));
+  });
 }
 
 /// The map made again on a grid `finer` times finer around `points` (finerAround, remapOnCells,
