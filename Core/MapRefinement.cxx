@@ -3,12 +3,10 @@
 // (each trial kept only when it is better).
 #include "ParameterizationSteps.h"
 
-#include "NearbyPoints.h"
 #include "ThinStrips.h"
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 #include <utility>
 
 namespace quadcover
@@ -158,54 +156,19 @@ Eigen::VectorXd finerAround(const Inputs& in, const SeamlessSystem& sys, double 
   return finerAt(in, sys, h, points, [&](int, double local) { return h * local / finer; });
 }
 
-/// Per point of the surface, its distance to the nearest boundary point of another boundary loop
-/// within `reach` (infinity for the others).
-std::vector<double> gapsToOtherLoops(const Inputs& in, double reach)
-{
-  std::vector<Eigen::Vector3d> where;
-  std::vector<int> point, loop;
-  for (std::size_t l = 0; l < in.topo.boundaryLoops.size(); ++l)
-  {
-    for (const int p : in.topo.boundaryLoops[l])
-    {
-      where.push_back(in.V.row(p).transpose());
-      point.push_back(p);
-      loop.push_back(static_cast<int>(l));
-    }
-  }
-  std::vector<double> gap(
-    static_cast<std::size_t>(in.numVertices()), std::numeric_limits<double>::infinity());
-  const std::vector<std::vector<int>> near = nearbyPoints(where, reach);
-  for (std::size_t i = 0; i < where.size(); ++i)
-  {
-    for (const int j : near[i])
-    {
-      if (loop[i] != loop[j])
-      {
-        const double d = (where[i] - where[j]).norm();
-        gap[point[i]] = std::min(gap[point[i]], d);
-        gap[point[j]] = std::min(gap[point[j]], d);
-      }
-    }
-  }
-  return gap;
-}
-
-/// sys's cell scale with a grid edge at each of `points` no longer than its gap to the nearest
-/// point of another boundary loop (gapsToOtherLoops within `reach`) over `cellsPerGap`, at most
-/// `maximumFiner` times finer than the grid there already is (finerAt).
+/// sys's cell scale with a grid edge at each of near.points no longer than its gap to the nearest
+/// point of another boundary loop over `cellsPerGap`, at most `maximumFiner` times finer than
+/// the grid there already is (finerAt).
 Eigen::VectorXd finerAtGaps(const Inputs& in, const SeamlessSystem& sys, double h,
-  const std::vector<int>& points, double reach, double cellsPerGap, double maximumFiner)
+  const LoopGaps& near, double cellsPerGap, double maximumFiner)
 {
-  const std::vector<double> gap = gapsToOtherLoops(in, reach);
-  return finerAt(in, sys, h, points, [&](int p, double local) {
-    return std::min(h * local, std::max(gap[p] / cellsPerGap, h * local / maximumFiner));
+  return finerAt(in, sys, h, near.points, [&](int p, double local) {
+    return std::min(h * local, std::max(near.gap[p] / cellsPerGap, h * local / maximumFiner));
   });
 }
 
-/// The map made again on a grid `finer` times finer around `points` (finerAround, remapOnCells,
-/// with `budget`), kept in place of out when better(trial, its x, its defects) (keepTrialIf).
-/// Returns whether it was kept.
+/// The map made again on sys's cells scaled to `scale` (remapOnCells, with `budget`), kept in
+/// place of out when better(trial, its x, its defects) (keepTrialIf). Returns whether it was kept.
 template<typename Better>
 bool remapOnScale(const Inputs& in, const Field& field, SeamlessSystem& sys,
   const HessianFactor& factor, bool greedy, long long budget, const Eigen::VectorXd& scale,
@@ -318,9 +281,8 @@ void refineBetweenJoinedLoops(const Inputs& in, const Field& field, SeamlessSyst
       return;
     }
   }
-  const std::vector<int> all =
-    pointsBetweenJoinedLoops(in, sys.uv(x), out.cornerSector, reach, true);
-  if (all.size() <= points.size())
+  const LoopGaps near = pointsNearOtherLoops(in, reach);
+  if (near.points.size() <= points.size())
   {
     return;
   }
@@ -330,7 +292,7 @@ void refineBetweenJoinedLoops(const Inputs& in, const Field& field, SeamlessSyst
   if (budget <= 0 ||
     remapOnScale(in, field, sys, factor, greedy, budget,
       finerAtGaps(
-        in, sys, out.edgeLength, all, reach, JoinedLoopCellsPerGap, JoinedLoopMaximumRefinement),
+        in, sys, out.edgeLength, near, JoinedLoopCellsPerGap, JoinedLoopMaximumRefinement),
       x, defects, out, halving(progress, JoinedLoopTries), whole))
   {
     return;
@@ -338,7 +300,7 @@ void refineBetweenJoinedLoops(const Inputs& in, const Field& field, SeamlessSyst
   budget = repairBudget(in, out, 1.0);
   if (budget > 0)
   {
-    remapFinerAround(in, field, sys, factor, greedy, budget, finer, all, x, defects, out,
+    remapFinerAround(in, field, sys, factor, greedy, budget, finer, near.points, x, defects, out,
       halving(progress, JoinedLoopTries + 1), whole);
   }
 }

@@ -13,6 +13,7 @@
 #include <algorithm>
 #include <cmath>
 #include <iterator>
+#include <limits>
 #include <map>
 #include <utility>
 
@@ -257,8 +258,8 @@ std::vector<std::pair<int, int>> pairsAcrossLoops(
 }
 }
 
-std::vector<int> pointsBetweenJoinedLoops(const Inputs& in, const Eigen::MatrixX2d& uv,
-  const std::vector<int>& cornerSector, double reach, bool everyPair)
+std::vector<int> pointsBetweenJoinedLoops(
+  const Inputs& in, const Eigen::MatrixX2d& uv, const std::vector<int>& cornerSector, double reach)
 {
   std::vector<int> loopOf;
   const std::vector<std::pair<int, int>> pairs = pairsAcrossLoops(in, reach, loopOf);
@@ -276,8 +277,8 @@ std::vector<int> pointsBetweenJoinedLoops(const Inputs& in, const Eigen::MatrixX
   std::vector<int> quadLoop = quadLoopOfEachLoop(in, quads, quadTopo, reach);
   // quads in more pieces than the surface: strips between loops, or necks between two stretches
   // of one loop, were cut through, and the loops may each still have one of their own: every
-  // loop counts as joined, to the others and to itself (and so when asked)
-  const bool cut = everyPair || quadTopo.numComponents() > in.topo.numComponents();
+  // loop counts as joined, to the others and to itself
+  const bool cut = quadTopo.numComponents() > in.topo.numComponents();
   if (cut)
   {
     quadLoop.assign(in.topo.boundaryLoops.size(), 0);
@@ -308,6 +309,39 @@ std::vector<int> pointsBetweenJoinedLoops(const Inputs& in, const Eigen::MatrixX
     }
   }
   return result;
+}
+
+LoopGaps pointsNearOtherLoops(const Inputs& in, double reach)
+{
+  std::vector<int> loopOf;
+  const std::vector<std::pair<int, int>> pairs = pairsAcrossLoops(in, reach, loopOf);
+  std::vector<int> point; // per flattened boundary point, its surface point
+  for (const std::vector<int>& loop : in.topo.boundaryLoops)
+  {
+    point.insert(point.end(), loop.begin(), loop.end());
+  }
+  LoopGaps r;
+  r.gap.assign(static_cast<std::size_t>(in.numVertices()), std::numeric_limits<double>::infinity());
+  std::vector<char> near(point.size(), 0);
+  for (const auto& [i, j] : pairs)
+  {
+    near[i] = near[j] = 1;
+    if (loopOf[i] != loopOf[j])
+    {
+      const Eigen::Vector3d a = in.V.row(point[i]).transpose(), b = in.V.row(point[j]).transpose();
+      const double d = (a - b).norm();
+      r.gap[point[i]] = std::min(r.gap[point[i]], d);
+      r.gap[point[j]] = std::min(r.gap[point[j]], d);
+    }
+  }
+  for (std::size_t i = 0; i < point.size(); ++i)
+  {
+    if (near[i])
+    {
+      r.points.push_back(point[i]);
+    }
+  }
+  return r;
 }
 
 bool regridDefectiveMap(const Inputs& in, const Field& field, SeamlessSystem& sys,

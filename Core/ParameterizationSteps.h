@@ -319,11 +319,22 @@ bool keepsTopology(
 /// of a point of another loop joined to the same. Each loop belongs to the quads' loop nearest to
 /// the most of its points (within reach); where the quads fall into more pieces than the
 /// surface (strips between loops, or the neck of a tongue between two stretches of one loop, cut
-/// through), or when `everyPair`, every loop counts as joined, to the others and to itself: then
-/// two points of one loop count too when the loop between them is more than twice the reach long
-/// either way round. Empty when no loops were joined.
-std::vector<int> pointsBetweenJoinedLoops(const Inputs& in, const Eigen::MatrixX2d& uv,
-  const std::vector<int>& cornerSector, double reach, bool everyPair = false);
+/// through), every loop counts as joined, to the others and to itself: then two points of one
+/// loop count too when the loop between them is more than twice the reach long either way round.
+/// Empty when no loops were joined.
+std::vector<int> pointsBetweenJoinedLoops(
+  const Inputs& in, const Eigen::MatrixX2d& uv, const std::vector<int>& cornerSector, double reach);
+
+/// The surface's boundary points near another loop or across a neck of their own, whatever the
+/// map (the pairs pointsBetweenJoinedLoops chooses among), and the gaps between loops.
+struct LoopGaps
+{
+  std::vector<int> points; ///< in the loops' order
+  /// #V: each boundary point's distance to the nearest point of another loop within the reach;
+  /// infinity for the others
+  std::vector<double> gap;
+};
+LoopGaps pointsNearOtherLoops(const Inputs& in, double reach);
 
 /// When the repaired map x still has defects, or its quads (cut out and patched as the quad stage
 /// does) would not have the surface's topology: rounds the continuous minimizer `continuous` at
