@@ -81,7 +81,7 @@ struct ParameterizationOptions
   double featureAngle = SmootherOptions().featureAngle;
   int minimumFeatureLength = SmootherOptions().minimumFeatureLength;
   /// After rounding, triangles whose (u, v) image is flipped are untangled: the real unknowns
-  /// of their neighbourhood (2 rings, then 4, 8, 16) move to minimize a foldover-free distortion
+  /// of their neighbourhood (2 rings, then 4 and 8) move to minimize a foldover-free distortion
   /// energy, in at most this many rounds per neighbourhood; 0 leaves flips as they are.
   int maximumUntangleRounds = 30;
   /// The untangling's budget, so that its time stays bounded: at most this many energy
