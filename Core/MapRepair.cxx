@@ -94,9 +94,9 @@ public:
       if (!defects.wrong.empty())
       {
         defects.flipped = flippedIn(x);
-        untangleRings(MaximumRings, xs, x, defects.flipped, frozen);
+        untangleRings(xs, x, defects.flipped, frozen);
       }
-      regions += untangleRings(MaximumRings, xs, x, defects.flipped, {});
+      regions += untangleRings(xs, x, defects.flipped, {});
       defects.wrong = wrongIn(x);
       const std::pair<int, std::size_t> attemptScore = score(x, defects);
       if (attempt > 0 && attemptScore > bestScore)
@@ -146,14 +146,15 @@ private:
     return wrongWindings(in_, field_, out_, sys_.uv(x), sys_.faceArea);
   }
 
-  /// Untangles neighbourhoods of 2, 4, ... maxRings rings around the flipped triangles while
+  /// Untangles neighbourhoods of 2, 4, ... MaximumRings rings around the flipped triangles while
   /// any are left, the frozen unknowns held; xs (symbols) and x (columns) move together.
   /// Returns the number of neighbourhoods untangled.
-  int untangleRings(int maxRings, Eigen::VectorXd& xs, Eigen::VectorXd& x,
-    std::vector<int>& flipped, const std::vector<char>& frozen)
+  int untangleRings(Eigen::VectorXd& xs, Eigen::VectorXd& x, std::vector<int>& flipped,
+    const std::vector<char>& frozen)
   {
     int regions = 0;
-    for (int rings = 2; rings <= maxRings && !flipped.empty() && !untangler_.spent(); rings *= 2)
+    for (int rings = 2; rings <= MaximumRings && !flipped.empty() && !untangler_.spent();
+         rings *= 2)
     {
       untangler_.run(in_.topo, in_.F, flipped, rings, in_.options.maximumUntangleRounds, xs, frozen,
         halving(progress_, runs_++));
