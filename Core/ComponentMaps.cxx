@@ -133,6 +133,7 @@ void addComponent(const Inputs& in, const Component& part, const MeshTopology& t
   out.movedSingularities += map.movedSingularities;
   out.addedConePairs += map.addedConePairs;
   out.droppedConePairs += map.droppedConePairs;
+  out.finerGridRetries += map.finerGridRetries;
   out.finerGridTriangles += map.finerGridTriangles;
   out.branchPoints += map.branchPoints;
   out.branchPointsOnGrid += map.branchPointsOnGrid;

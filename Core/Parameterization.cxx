@@ -572,6 +572,10 @@ Parameterization mapComponent(const Inputs& given, const Progress& progress)
   return out;
 }
 
+/// How much finer each grid a map whose quads do not keep the surface's topology is made again
+/// on is than the one before (ParameterizationOptions::maximumFinerGridRetries).
+constexpr double FinerGridStep = 1.4142135623730951;
+
 /// Defects a repaired map keeps: triangles flipped, points wound the wrong way.
 int defectsOf(const Parameterization& map)
 {
@@ -593,6 +597,15 @@ Parameterization computeParameterization(const Eigen::MatrixX3d& V, const Eigen:
     return mapEachComponent(given, progress);
   }
   Parameterization out = mapComponent(given, progress);
+  if (defectsOf(out) == 0)
+  {
+    return out;
+  }
+  const auto whole = [&](const Parameterization& map) {
+    return !options.pureQuads || keepsTopology(given, map.sectorUV, map.cornerSector);
+  };
+  bool outWhole = whole(out);
+  ParameterizationOptions kept = options;
   // on a surface between two or more boundary loops, a map that keeps defects with cone pairs
   // added is made again without them (nor the moves), and that one kept when it is better: its
   // quads keep the surface's topology where the first map's do not, or neither or both do and it
@@ -600,19 +613,37 @@ Parameterization computeParameterization(const Eigen::MatrixX3d& V, const Eigen:
   // between the loops (Documentation/Algorithms.md). Elsewhere a second map would only cost time
   // (armadillo, which keeps a few defects either way: 3.0 -> 4.5 s).
   const bool betweenLoops = topo.numComponents() == 1 && topo.components[0].numBoundaryLoops >= 2;
-  if (betweenLoops && defectsOf(out) > 0 && out.addedConePairs > 0)
+  if (betweenLoops && out.addedConePairs > 0)
   {
     ParameterizationOptions plainOptions = options;
     plainOptions.conePairGain = 0.0;
     const Inputs plainInputs{ V, F, topo, geometry, frameU, matching, plainOptions };
     Parameterization plain = mapComponent(plainInputs, progress.part(1.0, 1.0));
-    const bool whole = !options.pureQuads || keepsTopology(given, out.sectorUV, out.cornerSector);
-    const bool plainWhole =
-      !options.pureQuads || keepsTopology(given, plain.sectorUV, plain.cornerSector);
-    if (plainWhole != whole ? plainWhole : defectsOf(plain) < defectsOf(out))
+    const bool plainWhole = whole(plain);
+    if (plainWhole != outWhole ? plainWhole : defectsOf(plain) < defectsOf(out))
     {
       plain.droppedConePairs = out.addedConePairs;
-      return plain;
+      out = std::move(plain);
+      outWhole = plainWhole;
+      kept = plainOptions;
+    }
+  }
+  // quads that do not keep the surface's topology: the map made again on uniformly finer grids,
+  // the first whose quads keep it kept (the truck's body at 1,000 quads, whose 33 loops the
+  // grid's local refinements could not keep apart)
+  const double edgeLength = out.edgeLength;
+  for (int i = 1; !outWhole && i <= options.maximumFinerGridRetries; ++i)
+  {
+    ParameterizationOptions finerOptions = kept;
+    finerOptions.targetEdgeLength = edgeLength / std::pow(FinerGridStep, i);
+    const Inputs finerInputs{ V, F, topo, geometry, frameU, matching, finerOptions };
+    Parameterization finer = mapComponent(finerInputs, progress.part(1.0, 1.0));
+    if (whole(finer))
+    {
+      finer.droppedConePairs = out.droppedConePairs;
+      finer.finerGridRetries = i;
+      out = std::move(finer);
+      outWhole = true;
     }
   }
   return out;

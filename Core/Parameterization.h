@@ -185,6 +185,12 @@ struct ParameterizationOptions
   /// cell around keeps its shape (armadillo at 1,000 quads: Hausdorff distance 11.2 -> 8.1%,
   /// at 3,000 quads 3.9 -> 1.4%). 0 (or adaptiveCurvature set): not tried.
   double defectAdaptiveCurvature = 1.5;
+  /// A map (per component) whose quads would not keep the surface's Euler characteristic and
+  /// boundary loops after all the local repairs and trials above is made again on a uniformly
+  /// finer grid, sqrt(2) times finer each time, at most this many times; the first whose quads
+  /// keep them is kept (the truck's body at 1,000 quads, whose 33 loops the local refinements
+  /// could not keep apart, at a grid sqrt(2) times finer). 0: never.
+  int maximumFinerGridRetries = 2;
 };
 
 /**
@@ -228,6 +234,9 @@ struct Parameterization
   /// made again without, because it kept more defects (flipped triangles and wrong windings) with
   /// them; addedConePairs is then 0
   int droppedConePairs = 0;
+  /// how many times the map was made again on a uniformly finer grid (each sqrt(2) times finer,
+  /// at most twice) because its quads would not keep the surface's topology; per component, summed
+  int finerGridRetries = 0;
   /// triangles where the grid is finer than edgeLength (maximumThinStripRefinement: thin strips,
   /// walls, short loops around handles and necks; adaptiveCurvature; defectGridRefinement where
   /// it was kept)

@@ -140,6 +140,7 @@ void AddFigures(
   AddField<vtkIntArray>(fd, names::MovedSingularities, { double(map.movedSingularities) });
   AddField<vtkIntArray>(fd, names::AddedConePairs, { double(map.addedConePairs) });
   AddField<vtkIntArray>(fd, names::DroppedConePairs, { double(map.droppedConePairs) });
+  AddField<vtkIntArray>(fd, names::FinerGridRetries, { double(map.finerGridRetries) });
   AddField<vtkIntArray>(fd, names::FinerGridTriangles, { double(map.finerGridTriangles) });
   AddField<vtkIntArray>(
     fd, names::BranchPointsOnGrid, { double(map.branchPoints), double(map.branchPointsOnGrid) });
@@ -174,6 +175,7 @@ vtkQuadCoverSolver::vtkQuadCoverSolver()
   this->MaximumThinStripRefinement = defaults.maximumThinStripRefinement;
   this->AdaptiveCurvature = defaults.adaptiveCurvature;
   this->DefectGridRefinement = defaults.defectGridRefinement;
+  this->MaximumFinerGridRetries = defaults.maximumFinerGridRetries;
   this->DefectAdaptiveCurvature = defaults.defectAdaptiveCurvature;
   this->NumberOfThreads = defaults.numberOfThreads;
   this->SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_CELLS, names::FrameU);
@@ -335,6 +337,7 @@ void vtkQuadCoverSolver::Execute(vtkQuadCoverSurface& in, vtkInformationVector* 
   options.adaptiveCurvature = this->AdaptiveCurvature;
   options.defectGridRefinement = this->DefectGridRefinement;
   options.defectAdaptiveCurvature = this->DefectAdaptiveCurvature;
+  options.maximumFinerGridRetries = this->MaximumFinerGridRetries;
   options.numberOfThreads = this->NumberOfThreads;
   CheckQuadCount(in, options, this->TargetEdgeLength);
   const int refined = RefineLongEdges(in, options, m, U, matching);
@@ -432,6 +435,7 @@ void vtkQuadCoverSolver::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "MaximumThinStripRefinement: " << this->MaximumThinStripRefinement << "\n";
   os << indent << "AdaptiveCurvature: " << this->AdaptiveCurvature << "\n";
   os << indent << "DefectGridRefinement: " << this->DefectGridRefinement << "\n";
+  os << indent << "MaximumFinerGridRetries: " << this->MaximumFinerGridRetries << "\n";
   os << indent << "DefectAdaptiveCurvature: " << this->DefectAdaptiveCurvature << "\n";
   os << indent << "NumberOfThreads: " << this->NumberOfThreads << "\n";
   os << indent << "SplitSeams: " << (this->SplitSeams ? "On" : "Off") << "\n";

@@ -293,6 +293,15 @@ public:
   ///@}
 
   ///@{
+  /** A component whose quads would not keep its Euler characteristic and boundary loops after
+   * all the local repairs is mapped again on a uniformly finer grid, sqrt(2) times finer each
+   * time, at most this many times; the first whose quads keep them is kept (more quads there
+   * than asked). In [0, 4] (default 2; 0: never). Counted in FinerGridRetries. */
+  vtkSetClampMacro(MaximumFinerGridRetries, int, 0, 4);
+  vtkGetMacro(MaximumFinerGridRetries, int);
+  ///@}
+
+  ///@{
   /** Number of threads for the untangling and for the maps of the components (each component
    * on its own), 0 for all cores (default 0). The result does not depend on it. */
   vtkSetClampMacro(NumberOfThreads, int, 0, 1024);
@@ -347,6 +356,7 @@ protected:
   double MaximumThinStripRefinement;
   double AdaptiveCurvature;
   double DefectGridRefinement;
+  int MaximumFinerGridRetries;
   double DefectAdaptiveCurvature;
   int NumberOfThreads;
   bool SplitSeams = false;

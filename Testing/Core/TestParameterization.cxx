@@ -1460,6 +1460,7 @@ TEST(Parameterization, AGridTooCoarseForTheFieldsSingularitiesIsMadeFiner)
   options.curvatureEdgeLength = 0.0;
   options.conePairGain = 0.0;
   options.maximumRegrids = 0;
+  options.maximumFinerGridRetries = 0; // the limit alone makes the grid finer
   options.minimumQuadsPerSingularity = 0.0;
   const Parameterization coarse =
     computeParameterization(s.V, s.F, topo, geometry, U, field.matching, options);

@@ -131,6 +131,14 @@ TEST(vtkQuadCoverSolver, DefaultsClampsAndPrintSelf)
   std::ostringstream curved;
   s->Print(curved);
   EXPECT_NE(curved.str().find("DefectAdaptiveCurvature: 0"), std::string::npos);
+  // ParameterizationOptions::maximumFinerGridRetries
+  EXPECT_EQ(s->GetMaximumFinerGridRetries(), 2);
+  s->SetMaximumFinerGridRetries(9);
+  EXPECT_EQ(s->GetMaximumFinerGridRetries(), 4);
+  s->SetMaximumFinerGridRetries(0);
+  std::ostringstream retries;
+  s->Print(retries);
+  EXPECT_NE(retries.str().find("MaximumFinerGridRetries: 0"), std::string::npos);
   // ParameterizationOptions::minimumQuadsPerSingularity
   EXPECT_EQ(s->GetMinimumQuadsPerSingularity(), 4.0);
   s->SetMinimumQuadsPerSingularity(-1.0);
