@@ -350,6 +350,12 @@ void vtkQuadCoverSolver::Execute(vtkQuadCoverSurface& in, vtkInformationVector* 
       " singular points, more than the quads asked can hold (MinimumQuadsPerSingularity); the "
       "grid was made finer, and there are more quads than asked");
   }
+  if (map.finerGridRetries > 0)
+  {
+    this->Warn("on a grid as fine as asked the quads would not keep the surface's topology; the "
+               "map was made again on a finer grid (FinerGridRetries " +
+      std::to_string(map.finerGridRetries) + "), and there are more quads than asked");
+  }
   if (map.wrongWindings > 0)
   {
     this->Warn(std::to_string(map.wrongWindings) +

@@ -445,6 +445,8 @@ class CommandLine(unittest.TestCase):
             self.assertEqual(code, 0, err)
             with open(stats) as f:
                 s = json.load(f)
+            # the user hears why there are more quads than asked
+            self.assertEqual("made again on a finer grid" in err, retries != "0", err)
             figures[retries] = (s["param"]["finer_grid_retries"],
                                 s["quads"]["euler_characteristic"], s["quads"]["boundary_loops"],
                                 s["quads"]["non_manifold_edges"])
