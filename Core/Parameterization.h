@@ -234,8 +234,9 @@ struct Parameterization
   /// made again without, because it kept more defects (flipped triangles and wrong windings) with
   /// them; addedConePairs is then 0
   int droppedConePairs = 0;
-  /// how many times the map was made again on a uniformly finer grid (each sqrt(2) times finer,
-  /// at most twice) because its quads would not keep the surface's topology; per component, summed
+  /// the uniformly finer grid whose map was kept because the first map's quads would not keep the
+  /// surface's topology (maximumFinerGridRetries): i for a grid sqrt(2)^i times finer, 0 for the
+  /// grid asked (also when no finer grid's quads kept it); per component, summed
   int finerGridRetries = 0;
   /// triangles where the grid is finer than edgeLength (maximumThinStripRefinement: thin strips,
   /// walls, short loops around handles and necks; adaptiveCurvature; defectGridRefinement where

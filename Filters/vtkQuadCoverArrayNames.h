@@ -158,9 +158,9 @@ constexpr const char* AddedConePairs = "AddedConePairs";
 /// loops, because the map kept more defects (flipped triangles, wrong windings) with them than
 /// without.
 constexpr const char* DroppedConePairs = "DroppedConePairs";
-/// field, 1 x int: how many times the solver made a component's map again on a uniformly finer
-/// grid (each sqrt(2) times finer, at most twice per component) because its quads would not have
-/// kept the component's topology; summed over the components.
+/// field, 1 x int: per component whose map the solver made again on a uniformly finer grid because
+/// its quads would not have kept the component's topology (MaximumFinerGridRetries), i for the
+/// grid sqrt(2)^i times finer that it kept (0 when it kept none); summed over the components.
 constexpr const char* FinerGridRetries = "FinerGridRetries";
 /// Field data of the solver's output: triangles where the map's grid is finer than EdgeLength,
 /// around strips of the surface and walls between creases narrower than a grid edge and around
