@@ -597,7 +597,10 @@ Parameterization computeParameterization(const Eigen::MatrixX3d& V, const Eigen:
     return mapEachComponent(given, progress);
   }
   Parameterization out = mapComponent(given, progress);
-  if (defectsOf(out) == 0)
+  const bool betweenLoops = topo.numComponents() == 1 && topo.components[0].numBoundaryLoops >= 2;
+  const bool withoutPairs = betweenLoops && out.addedConePairs > 0;
+  const bool finerGrids = options.pureQuads && options.maximumFinerGridRetries > 0;
+  if (defectsOf(out) == 0 || !(withoutPairs || finerGrids))
   {
     return out;
   }
@@ -612,8 +615,7 @@ Parameterization computeParameterization(const Eigen::MatrixX3d& V, const Eigen:
   // keeps fewer defects (the topology first, as mapRank ranks maps). A pair can turn the frames
   // between the loops (Documentation/Algorithms.md). Elsewhere a second map would only cost time
   // (armadillo, which keeps a few defects either way: 3.0 -> 4.5 s).
-  const bool betweenLoops = topo.numComponents() == 1 && topo.components[0].numBoundaryLoops >= 2;
-  if (betweenLoops && out.addedConePairs > 0)
+  if (withoutPairs)
   {
     ParameterizationOptions plainOptions = options;
     plainOptions.conePairGain = 0.0;
@@ -630,8 +632,9 @@ Parameterization computeParameterization(const Eigen::MatrixX3d& V, const Eigen:
   }
   // quads that do not keep the surface's topology: the map made again on uniformly finer grids,
   // the first whose quads keep it kept (the truck's body at 1,000 quads, whose 33 loops the
-  // grid's local refinements could not keep apart)
-  const double edgeLength = out.edgeLength;
+  // grid's local refinements could not keep apart). Finer than the map's grid and than the grid
+  // asked: a trial on a coarser grid may have replaced the first map (MapRegrid.cxx).
+  const double edgeLength = std::min(out.edgeLength, startMap(given).edgeLength);
   for (int i = 1; !outWhole && i <= options.maximumFinerGridRetries; ++i)
   {
     ParameterizationOptions finerOptions = kept;
@@ -641,6 +644,7 @@ Parameterization computeParameterization(const Eigen::MatrixX3d& V, const Eigen:
     if (whole(finer))
     {
       finer.droppedConePairs = out.droppedConePairs;
+      finer.finerForSingularities = out.finerForSingularities; // the grid asked was made finer
       finer.finerGridRetries = i;
       out = std::move(finer);
       outWhole = true;

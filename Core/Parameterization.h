@@ -185,11 +185,13 @@ struct ParameterizationOptions
   /// cell around keeps its shape (armadillo at 1,000 quads: Hausdorff distance 11.2 -> 8.1%,
   /// at 3,000 quads 3.9 -> 1.4%). 0 (or adaptiveCurvature set): not tried.
   double defectAdaptiveCurvature = 1.5;
-  /// A map (per component) whose quads would not keep the surface's Euler characteristic and
-  /// boundary loops after all the local repairs and trials above is made again on a uniformly
-  /// finer grid, sqrt(2) times finer each time, at most this many times; the first whose quads
-  /// keep them is kept (the truck's body at 1,000 quads, whose 33 loops the local refinements
-  /// could not keep apart, at a grid sqrt(2) times finer). 0: never.
+  /// A map (per component) that keeps defects (flipped triangles, wrong windings) after all the
+  /// local repairs and trials above, and whose quads would not keep the surface's Euler
+  /// characteristic and boundary loops, is made again on a uniformly finer grid, sqrt(2) times
+  /// finer each time (than the map's grid and the grid asked), at most this many times; the first
+  /// whose quads keep them is kept (the truck's body at 1,000 quads, whose 33 loops the local
+  /// refinements could not keep apart, at a grid sqrt(2) times finer). With pureQuads only.
+  /// 0: never.
   int maximumFinerGridRetries = 2;
 };
 
@@ -235,8 +237,8 @@ struct Parameterization
   /// them; addedConePairs is then 0
   int droppedConePairs = 0;
   /// the uniformly finer grid whose map was kept because the first map's quads would not keep the
-  /// surface's topology (maximumFinerGridRetries): i for a grid sqrt(2)^i times finer, 0 for the
-  /// grid asked (also when no finer grid's quads kept it); per component, summed
+  /// surface's topology (maximumFinerGridRetries): i for a grid sqrt(2)^i times finer than the
+  /// first map's (and the one asked), 0 when the first map was kept; per component, summed
   int finerGridRetries = 0;
   /// triangles where the grid is finer than edgeLength (maximumThinStripRefinement: thin strips,
   /// walls, short loops around handles and necks; adaptiveCurvature; defectGridRefinement where

@@ -293,9 +293,10 @@ public:
   ///@}
 
   ///@{
-  /** A component whose quads would not keep its Euler characteristic and boundary loops after
-   * all the local repairs is mapped again on a uniformly finer grid, sqrt(2) times finer each
-   * time, at most this many times; the first whose quads keep them is kept (more quads there
+  /** A component whose map keeps defects (flipped triangles, wrong windings) after all the local
+   * repairs, and whose quads would not keep its Euler characteristic and boundary loops, is
+   * mapped again on a uniformly finer grid, sqrt(2) times finer each time (with PureQuads), at
+   * most this many times; the first whose quads keep them is kept (more quads there
    * than asked). In [0, 4] (default 2; 0: never). Counted in FinerGridRetries. */
   vtkSetClampMacro(MaximumFinerGridRetries, int, 0, 4);
   vtkGetMacro(MaximumFinerGridRetries, int);

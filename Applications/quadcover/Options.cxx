@@ -433,8 +433,8 @@ std::vector<Option> StageOptions(Pipeline& p)
       "where the repaired map keeps defects, first the adaptive grid of --adaptive-curvature X "
       "is tried, kept with fewer defects, 0: not"),
     QC_NUMBER("param", solver, MaximumFinerGridRetries,
-      "a component whose quads would lose its topology is mapped again on a grid sqrt(2) times "
-      "finer, at most this many times, 0: never"),
+      "a component whose map keeps defects and whose quads would lose its topology is mapped "
+      "again on a grid sqrt(2) times finer, at most this many times, 0: never"),
     QC_SWITCH("param", solver, SplitSeams,
       "write the surface cut open along the seams, with UV texture coordinates"),
     QC_SWITCH("quads", extractor, RepairInvertedQuads,

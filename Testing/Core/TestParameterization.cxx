@@ -1572,6 +1572,49 @@ TEST(Parameterization, AnAdaptiveGridRepairsTheMapsOfTheSmallTori)
   EXPECT_EQ(both.finerGridTriangles, adaptive.finerGridTriangles);
 }
 
+TEST(Parameterization, AComponentWhoseQuadsComeApartIsMappedAgainOnAFinerGrid)
+{
+  // the same small tori at 10 quads a handle, without the local repairs (other grids, the finer
+  // grid around the defects, the adaptive grid): some maps keep defects and their quads come
+  // apart (55 pieces, chi 56, 8 loops against 50 closed components, chi 50). Mapped again on a
+  // grid sqrt(2) or 2 times finer (maximumFinerGridRetries), they keep the components' pieces and
+  // chi, and the maps stay seamless with their branch points on the grid. (One torus still comes
+  // out as a tube, 2 loops: fewer loops, not none.)
+  const SmoothestComponents components;
+  ParameterizationOptions options = SmoothestComponents::defectOptions();
+  options.minimumComponentQuadCount = 10;
+  options.defectGridRefinement = 1.0;
+  options.defectAdaptiveCurvature = 0.0;
+  options.maximumFinerGridRetries = 0;
+  const Parameterization first = components.map(options);
+  options.maximumFinerGridRetries = ParameterizationOptions().maximumFinerGridRetries;
+  const Parameterization retried = components.map(options);
+  auto quadsOf = [&](const Parameterization& map) {
+    QuadMesh mesh = extractQuads(components.s.V, components.s.F, components.topo, map.cornerUV);
+    patchQuadMesh(components.s.V, components.s.F, components.topo, mesh);
+    splitPinchedVertices(mesh);
+    return measureQuads(mesh.V, mesh.Q);
+  };
+  const QuadQuality before = quadsOf(first), after = quadsOf(retried);
+  const int pieces = components.topo.numComponents();
+  const int chi = components.topo.eulerCharacteristic();
+  std::printf("%d components, chi %d: %d pieces, chi %d, %d loops -> %d pieces, chi %d, %d loops "
+              "(%d retries)\n",
+    pieces, chi, before.components, before.eulerCharacteristic, before.boundaryLoops,
+    after.components, after.eulerCharacteristic, after.boundaryLoops, retried.finerGridRetries);
+  ASSERT_GT(first.flipped + first.wrongWindings, 0) << "the case the test is about";
+  ASSERT_NE(before.components, pieces) << "without the finer grids quads come apart";
+  EXPECT_EQ(first.finerGridRetries, 0);
+  EXPECT_GT(retried.finerGridRetries, 0);
+  EXPECT_EQ(after.quads, after.faces);
+  EXPECT_EQ(after.nonManifoldEdges, 0);
+  EXPECT_EQ(after.components, pieces);
+  EXPECT_EQ(after.eulerCharacteristic, chi);
+  EXPECT_LT(after.boundaryLoops, before.boundaryLoops);
+  EXPECT_EQ(retried.branchPointsOnGrid, retried.branchPoints);
+  EXPECT_LT(retried.maxSeamError, 1e-9) << "still seamless";
+}
+
 TEST(Parameterization, AComponentGetsItsMinimumOfQuadsForEachHandle)
 {
   // A sphere with a small torus beside it: by area the torus would get about 11 of 600 quads;
