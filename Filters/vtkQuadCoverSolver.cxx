@@ -175,8 +175,8 @@ vtkQuadCoverSolver::vtkQuadCoverSolver()
   this->MaximumThinStripRefinement = defaults.maximumThinStripRefinement;
   this->AdaptiveCurvature = defaults.adaptiveCurvature;
   this->DefectGridRefinement = defaults.defectGridRefinement;
-  this->MaximumFinerGridRetries = defaults.maximumFinerGridRetries;
   this->DefectAdaptiveCurvature = defaults.defectAdaptiveCurvature;
+  this->MaximumFinerGridRetries = defaults.maximumFinerGridRetries;
   this->NumberOfThreads = defaults.numberOfThreads;
   this->SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_CELLS, names::FrameU);
   this->SetInputArrayToProcess(1, 0, 0, vtkDataObject::FIELD_ASSOCIATION_CELLS, names::Matching);
@@ -441,8 +441,8 @@ void vtkQuadCoverSolver::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "MaximumThinStripRefinement: " << this->MaximumThinStripRefinement << "\n";
   os << indent << "AdaptiveCurvature: " << this->AdaptiveCurvature << "\n";
   os << indent << "DefectGridRefinement: " << this->DefectGridRefinement << "\n";
-  os << indent << "MaximumFinerGridRetries: " << this->MaximumFinerGridRetries << "\n";
   os << indent << "DefectAdaptiveCurvature: " << this->DefectAdaptiveCurvature << "\n";
+  os << indent << "MaximumFinerGridRetries: " << this->MaximumFinerGridRetries << "\n";
   os << indent << "NumberOfThreads: " << this->NumberOfThreads << "\n";
   os << indent << "SplitSeams: " << (this->SplitSeams ? "On" : "Off") << "\n";
 }

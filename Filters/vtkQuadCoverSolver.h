@@ -357,8 +357,8 @@ protected:
   double MaximumThinStripRefinement;
   double AdaptiveCurvature;
   double DefectGridRefinement;
-  int MaximumFinerGridRetries;
   double DefectAdaptiveCurvature;
+  int MaximumFinerGridRetries;
   int NumberOfThreads;
   bool SplitSeams = false;
 

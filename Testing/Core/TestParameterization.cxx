@@ -154,6 +154,17 @@ void expectIntegerGridMap(const Chain& r, const std::string& name, bool windings
   EXPECT_LT(r.map.maxSeamError, 1e-6);
   EXPECT_EQ(r.map.nonUnitPivots, 0);
 }
+
+/// The quads a map of s gives, cut out and patched as the quad stage does, its pinched vertices
+/// split, measured (quads, pieces, chi, boundary loops, non-manifold edges).
+QuadQuality patchedQuadsOf(
+  const Surface& s, const MeshTopology& topo, const Eigen::MatrixXd& cornerUV)
+{
+  QuadMesh mesh = extractQuads(s.V, s.F, topo, cornerUV);
+  patchQuadMesh(s.V, s.F, topo, mesh);
+  splitPinchedVertices(mesh);
+  return measureQuads(mesh.V, mesh.Q);
+}
 }
 
 TEST(Parameterization, TorusCurvatureLinesGiveTheAnalyticIntegerGrid)
@@ -527,10 +538,7 @@ TEST(Parameterization, TheTwoSidesOfASharpTipGoOnLinesApart)
     SCOPED_TRACE(q);
     const Chain r = runChain(s, q);
     EXPECT_EQ(flippedTriangles(r.map), 0);
-    QuadMesh mesh = extractQuads(r.s.V, r.s.F, r.topo, r.map.cornerUV);
-    patchQuadMesh(r.s.V, r.s.F, r.topo, mesh);
-    splitPinchedVertices(mesh);
-    const QuadQuality quads = measureQuads(mesh.V, mesh.Q);
+    const QuadQuality quads = patchedQuadsOf(r.s, r.topo, r.map.cornerUV);
     std::printf("%g quads asked: %d quads, %d pieces, chi %d, %d loops\n", q, quads.faces,
       quads.components, quads.eulerCharacteristic, quads.boundaryLoops);
     EXPECT_GE(quads.faces, q / 4);
@@ -595,12 +603,7 @@ struct JoinedLoopTrial
 
 JoinedLoopTrial joinedLoopTrial(const Surface& s, double quads)
 {
-  auto quadsOf = [](const Chain& r) {
-    QuadMesh mesh = extractQuads(r.s.V, r.s.F, r.topo, r.map.cornerUV);
-    patchQuadMesh(r.s.V, r.s.F, r.topo, mesh);
-    splitPinchedVertices(mesh);
-    return measureQuads(mesh.V, mesh.Q);
-  };
+  auto quadsOf = [](const Chain& r) { return patchedQuadsOf(r.s, r.topo, r.map.cornerUV); };
   ParameterizationOptions uniform;
   uniform.defectGridRefinement = 1.0;
   JoinedLoopTrial t{ runChain(s, quads, uniform), runChain(s, quads), {}, {} };
@@ -1589,13 +1592,8 @@ TEST(Parameterization, AComponentWhoseQuadsComeApartIsMappedAgainOnAFinerGrid)
   const Parameterization first = components.map(options);
   options.maximumFinerGridRetries = ParameterizationOptions().maximumFinerGridRetries;
   const Parameterization retried = components.map(options);
-  auto quadsOf = [&](const Parameterization& map) {
-    QuadMesh mesh = extractQuads(components.s.V, components.s.F, components.topo, map.cornerUV);
-    patchQuadMesh(components.s.V, components.s.F, components.topo, mesh);
-    splitPinchedVertices(mesh);
-    return measureQuads(mesh.V, mesh.Q);
-  };
-  const QuadQuality before = quadsOf(first), after = quadsOf(retried);
+  const QuadQuality before = patchedQuadsOf(components.s, components.topo, first.cornerUV);
+  const QuadQuality after = patchedQuadsOf(components.s, components.topo, retried.cornerUV);
   const int pieces = components.topo.numComponents();
   const int chi = components.topo.eulerCharacteristic();
   std::printf("%d components, chi %d: %d pieces, chi %d, %d loops -> %d pieces, chi %d, %d loops "
